@@ -1,0 +1,47 @@
+#pragma once
+// Images on the CPU side: loading through OpenImageIO (any format it reads),
+// saving PNG (8-bit) and EXR (float). Texels are always float RGBA in memory;
+// the GPU upload chooses the storage format.
+
+#include "core/Result.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+enum class ColourSpace {
+    Linear,  // data: normals, roughness, LEAN moments
+    Srgb,    // colour: albedo; decoded to linear on the GPU (sRGB texture format)
+};
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    ColourSpace colourSpace = ColourSpace::Linear;
+    std::vector<glm::vec4> texels;  // row-major, row 0 is the image's top row
+
+    bool empty() const { return texels.empty(); }
+    glm::vec4& at(int x, int y) { return texels[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
+    const glm::vec4& at(int x, int y) const {
+        return texels[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)];
+    }
+};
+
+// Largest width or height any loaded image may have; larger ones are refused
+// with an error rather than risking an enormous allocation.
+constexpr int kMaxImageDimension = 16384;
+
+// Loads any format OpenImageIO reads. Grey and RGB images are expanded to RGBA
+// (alpha 1). Non-finite texels (NaN, Inf) are replaced by 0 and counted in
+// *sanitisedTexels when it is given. Errors name the file and the problem.
+Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels = nullptr);
+
+// Writes to a temporary file beside `path` and renames it, so a failed write
+// never leaves a partial file. `.png` stores 8-bit values as given (the caller
+// has already tone-mapped and encoded); `.exr` stores 32-bit floats.
+Status saveImage(const std::string& path, const Image& image);
+
+}  // namespace dermis
