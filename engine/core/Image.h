@@ -39,6 +39,12 @@ constexpr int kMaxImageDimension = 16384;
 // *sanitisedTexels when it is given. Errors name the file and the problem.
 Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels = nullptr);
 
+// The same, for an encoded image held in memory (an image embedded in a glTF
+// file). `name` is used in errors and as a hint to the format when the bytes
+// do not identify it.
+Result<Image> loadImageFromMemory(const void* data, size_t size, const std::string& name, ColourSpace colourSpace,
+                                  int* sanitisedTexels = nullptr);
+
 // Writes to a temporary file beside `path` and renames it, so a failed write
 // never leaves a partial file. `.png` stores 8-bit values as given (the caller
 // has already tone-mapped and encoded); `.exr` stores 32-bit floats.

@@ -1,0 +1,231 @@
+#include "core/Image.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+namespace dermis {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kMaxErrorLength = 300;
+
+static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "texels are written to OpenImageIO as packed floats");
+
+// OpenImageIO messages can span several lines; an Error is one line.
+std::string condense(const std::string& message, const char* fallback) {
+    std::string line;
+    bool pendingSpace = false;
+    for (char c : message) {
+        if (c == '\n' || c == '\r') {
+            if (!line.empty() && line.back() != ';') line += ';';
+            pendingSpace = !line.empty();
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            pendingSpace = !line.empty();
+        } else {
+            if (pendingSpace) line += ' ';
+            pendingSpace = false;
+            line += c;
+        }
+    }
+    while (!line.empty() && line.back() == ';') line.pop_back();
+    if (line.empty()) return fallback;
+    if (line.size() > kMaxErrorLength) line = line.substr(0, kMaxErrorLength) + "...";
+    return line;
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+std::string lowerExtension(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+// Embedded images often have no file name; their first bytes say what they are.
+std::string extensionFromMagic(const unsigned char* bytes, size_t size) {
+    auto startsWith = [&](const char* magic, size_t length, size_t offset = 0) {
+        return size >= offset + length && std::memcmp(bytes + offset, magic, length) == 0;
+    };
+    if (startsWith("\x89PNG", 4)) return ".png";
+    if (startsWith("\xFF\xD8\xFF", 3)) return ".jpg";
+    if (startsWith("RIFF", 4) && startsWith("WEBP", 4, 8)) return ".webp";
+    if (startsWith("GIF8", 4)) return ".gif";
+    if (startsWith("BM", 2)) return ".bmp";
+    if (startsWith("\x76\x2F\x31\x01", 4)) return ".exr";
+    if (startsWith("II*\0", 4) || startsWith("MM\0*", 4)) return ".tif";
+    if (startsWith("#?", 2)) return ".hdr";
+    return {};
+}
+
+OIIO::ImageSpec readConfig() {
+    OIIO::ImageSpec config;
+    // Keep colour channels as stored: PNG readers otherwise premultiply alpha.
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
+
+Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSpace colourSpace, int* sanitisedTexels) {
+    const OIIO::ImageSpec spec = input.spec();
+    if (spec.deep) return makeError(where, "deep images are not supported");
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageDimension || spec.height > kMaxImageDimension)
+        return makeError(where, "image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                    " is outside 1.." + std::to_string(kMaxImageDimension));
+    if (spec.depth > 1) return makeError(where, "volume images are not supported");
+    if (spec.nchannels <= 0) return makeError(where, "image has no channels");
+
+    const int channels = std::min(spec.nchannels, 4);
+    const size_t texelCount = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height);
+    std::vector<float> raw(texelCount * static_cast<size_t>(channels));
+    // Integer formats are rescaled to [0,1]; no colour conversion happens here.
+    if (!input.read_image(0, 0, 0, channels, OIIO::TypeFloat, raw.data()))
+        return makeError(where, condense(input.geterror(), "could not read the image data"));
+    if (input.has_error()) return makeError(where, condense(input.geterror(), "could not read the image data"));
+
+    const bool greyAlpha = channels == 2 && (spec.alpha_channel == 1 || spec.nchannels == 2);
+    Image image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.colourSpace = colourSpace;
+    image.texels.resize(texelCount);
+    int sanitised = 0;
+    for (size_t i = 0; i < texelCount; ++i) {
+        const float* s = &raw[i * static_cast<size_t>(channels)];
+        glm::vec4 texel;
+        if (channels == 1) texel = glm::vec4(s[0], s[0], s[0], 1.0f);
+        else if (greyAlpha) texel = glm::vec4(s[0], s[0], s[0], s[1]);
+        else if (channels == 2) texel = glm::vec4(s[0], s[1], 0.0f, 1.0f);
+        else if (channels == 3) texel = glm::vec4(s[0], s[1], s[2], 1.0f);
+        else texel = glm::vec4(s[0], s[1], s[2], s[3]);
+        bool replaced = false;
+        for (int c = 0; c < 4; ++c) {
+            if (!std::isfinite(texel[c])) {
+                texel[c] = 0.0f;
+                replaced = true;
+            }
+        }
+        sanitised += replaced ? 1 : 0;
+        image.texels[i] = texel;
+    }
+    if (sanitisedTexels) *sanitisedTexels = sanitised;
+    return image;
+}
+
+Status writeFile(const std::string& path, const std::string& extension, const Image& image) {
+    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+    if (!output) return makeError(path, condense(OIIO::geterror(), "no image writer for this format"));
+
+    const bool png = extension == ".png";
+    OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+    std::vector<uint8_t> bytes;
+    const void* data = image.texels.data();
+    if (png) {
+        // The writer would otherwise divide colour by alpha.
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+        bytes.resize(image.texels.size() * 4);
+        for (size_t i = 0; i < image.texels.size(); ++i) {
+            for (int c = 0; c < 4; ++c) {
+                float value = image.texels[i][c];
+                value = std::isfinite(value) ? std::clamp(value, 0.0f, 1.0f) : 0.0f;
+                bytes[i * 4 + static_cast<size_t>(c)] = static_cast<uint8_t>(std::lround(value * 255.0f));
+            }
+        }
+        data = bytes.data();
+    } else {
+        spec.attribute("compression", "zip");
+    }
+
+    if (!output->open(path, spec)) return makeError(path, condense(output->geterror(), "could not open for writing"));
+    bool written = output->write_image(spec.format, data);
+    bool closed = output->close();
+    if (!written || !closed || output->has_error())
+        return makeError(path, condense(output->geterror(), "could not write the image"));
+    return success();
+}
+
+}  // namespace
+
+Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels) {
+    std::error_code error;
+    if (!fs::exists(path, error)) return makeError(path, "file not found");
+    if (fs::is_directory(path, error)) return makeError(path, "is a directory, not an image");
+
+    const OIIO::ImageSpec config = readConfig();
+    std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);
+    if (!input) return makeError(path, condense(OIIO::geterror(), "not an image OpenImageIO can read"));
+    return decode(*input, path, colourSpace, sanitisedTexels);
+}
+
+Result<Image> loadImageFromMemory(const void* data, size_t size, const std::string& name, ColourSpace colourSpace,
+                                  int* sanitisedTexels) {
+    if (!data || size == 0) return makeError(name, "image data is empty");
+    std::string extension = extensionFromMagic(static_cast<const unsigned char*>(data), size);
+    if (extension.empty()) extension = lowerExtension(name);
+    if (extension.empty()) return makeError(name, "unrecognised image format");
+
+    OIIO::Filesystem::IOMemReader proxy(data, size);
+    // OpenImageIO 2.4 ignores open()'s proxy argument when a config is given;
+    // the config must carry the proxy itself.
+    OIIO::ImageSpec config = readConfig();
+    void* proxyPointer = &proxy;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
+    const std::string placeholder = "memory" + extension;
+    std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(placeholder, &config, &proxy);
+    Result<Image> image = input ? decode(*input, name, colourSpace, sanitisedTexels)
+                                : makeError(name, condense(OIIO::geterror(), "not an image OpenImageIO can read"));
+    if (!image) return makeError(name, replaceAll(image.error().what, placeholder, name));
+    return image;
+}
+
+Status saveImage(const std::string& path, const Image& image) {
+    const std::string extension = lowerExtension(path);
+    if (extension != ".png" && extension != ".exr")
+        return makeError(path, "unsupported image extension '" + extension + "' (use .png or .exr)");
+    if (image.width <= 0 || image.height <= 0 ||
+        image.texels.size() != static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
+        return makeError(path, "image is empty or its texel count does not match " + std::to_string(image.width) +
+                                   "x" + std::to_string(image.height));
+
+    const fs::path target(path);
+    std::error_code error;
+    if (target.has_parent_path()) {
+        fs::create_directories(target.parent_path(), error);
+        if (error) return makeError(path, "could not create directory: " + error.message());
+    }
+
+    // The temporary keeps the extension, which is how OpenImageIO picks the writer.
+    static std::atomic<unsigned> counter{0};
+    const std::string tempName = "." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                 std::to_string(counter++) + extension;
+    const fs::path temp = target.has_parent_path() ? target.parent_path() / tempName : fs::path(tempName);
+
+    Status written = writeFile(temp.string(), extension, image);
+    if (!written) {
+        fs::remove(temp, error);
+        return makeError(path, written.error().what);
+    }
+    fs::rename(temp, target, error);
+    if (error) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        return makeError(path, "could not move the written file into place: " + error.message());
+    }
+    return success();
+}
+
+}  // namespace dermis
