@@ -1,13 +1,46 @@
-// dermis: the command-line front end. Each subcommand lives in its own file
-// (Command*.cpp) and registers itself in the table below.
+// dermis: the command-line front end. Each subcommand lives in its own
+// Command*.cpp and is listed in commands().
+#include "Commands.h"
+
 #include <cstdio>
-#include <cstring>
+#include <string>
+#include <vector>
+
+namespace dermis::cli {
+
+const std::vector<Command>& commands() {
+    static const std::vector<Command> kCommands = {
+        {"render", "render a scene headlessly to PNG/EXR and report per-pass GPU timings", runRender},
+    };
+    return kCommands;
+}
+
+}  // namespace dermis::cli
+
+namespace {
+
+void printUsage(std::FILE* out) {
+    std::fprintf(out,
+                 "Dermis: real-time skin rendering (screen-space and texture-space subsurface scattering).\n\n"
+                 "usage: dermis <command> [options]   (dermis <command> --help for its options)\n\ncommands:\n");
+    for (const auto& command : dermis::cli::commands()) std::fprintf(out, "  %-10s %s\n", command.name, command.summary);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || std::strcmp(argv[1], "--help") == 0) {
-        std::printf("usage: dermis <command> [options]\n");
-        return argc < 2 ? 2 : 0;
+    if (argc < 2) {
+        printUsage(stderr);
+        return 2;
     }
-    std::fprintf(stderr, "error: unknown command '%s'\n", argv[1]);
+    const std::string name = argv[1];
+    if (name == "--help" || name == "-h" || name == "help") {
+        printUsage(stdout);
+        return 0;
+    }
+    for (const auto& command : dermis::cli::commands()) {
+        if (name == command.name) return command.run(std::vector<std::string>(argv + 2, argv + argc));
+    }
+    std::fprintf(stderr, "error: unknown command '%s' (run 'dermis --help' for the list)\n", name.c_str());
     return 2;
 }

@@ -1,0 +1,127 @@
+#include "gl/ShaderProgram.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace dermis::gl {
+namespace {
+
+constexpr int kMaxIncludeDepth = 16;
+
+Result<std::string> readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return makeError(path, "cannot open shader file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+Status expandIncludes(const std::string& file, const std::string& path, std::set<std::string>& included, int depth,
+                      std::string& out) {
+    if (depth > kMaxIncludeDepth) return makeError(file, "#include nested too deeply");
+    auto text = readFile(path);
+    if (!text.ok()) return text.error();
+    std::istringstream lines(*text);
+    std::string line;
+    int lineNumber = 0;
+    while (std::getline(lines, line)) {
+        ++lineNumber;
+        const size_t hash = line.find_first_not_of(" \t");
+        if (hash != std::string::npos && line.compare(hash, 8, "#include") == 0) {
+            const size_t open = line.find('"');
+            const size_t close = line.rfind('"');
+            if (open == std::string::npos || close <= open) {
+                return makeError(file + ":" + std::to_string(lineNumber), "malformed #include");
+            }
+            const std::string name = line.substr(open + 1, close - open - 1);
+            if (included.insert(name).second) {
+                const Status status =
+                    expandIncludes(name, shaderDirectory() + "/include/" + name, included, depth + 1, out);
+                if (!status.ok()) return status;
+            }
+            continue;
+        }
+        out += line;
+        out += '\n';
+    }
+    return success();
+}
+
+Result<GLuint> compileStage(GLenum stage, const std::string& file, const std::string& source) {
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint length = 0;
+        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+        glGetShaderInfoLog(shader, length, nullptr, log.data());
+        glDeleteShader(shader);
+        while (!log.empty() && (log.back() == '\n' || log.back() == '\0')) log.pop_back();
+        return makeError(file, "compile error: " + log);
+    }
+    return shader;
+}
+
+}  // namespace
+
+std::string shaderDirectory() {
+    if (const char* dir = std::getenv("DERMIS_SHADER_DIR")) return dir;
+    return DERMIS_SOURCE_SHADER_DIR;
+}
+
+Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines) {
+    std::string out = "#version 450 core\n";
+    for (const ShaderDefine& define : defines) out += "#define " + define.name + " " + define.value + "\n";
+    // Restart line numbering so compile errors point at the file's own lines
+    // (approximately: included files shift them).
+    out += "#line 1\n";
+    std::set<std::string> included;
+    const Status status = expandIncludes(file, shaderDirectory() + "/" + file, included, 0, out);
+    if (!status.ok()) return status.error();
+    return out;
+}
+
+Result<Program> buildProgram(const ProgramSource& source) {
+    std::vector<GLuint> stages;
+    auto cleanup = [&] {
+        for (GLuint s : stages) glDeleteShader(s);
+    };
+    const std::pair<GLenum, const std::string*> files[] = {{GL_VERTEX_SHADER, &source.vertexFile},
+                                                           {GL_FRAGMENT_SHADER, &source.fragmentFile}};
+    for (const auto& [stage, file] : files) {
+        if (file->empty()) continue;
+        auto text = loadShaderSource(*file, source.defines);
+        if (!text.ok()) {
+            cleanup();
+            return text.error();
+        }
+        auto shader = compileStage(stage, *file, *text);
+        if (!shader.ok()) {
+            cleanup();
+            return shader.error();
+        }
+        stages.push_back(*shader);
+    }
+    Program program(glCreateProgram());
+    for (GLuint s : stages) glAttachShader(program.get(), s);
+    glLinkProgram(program.get());
+    cleanup();
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint length = 0;
+        glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+        glGetProgramInfoLog(program.get(), length, nullptr, log.data());
+        return makeError(source.vertexFile + " + " + source.fragmentFile, "link error: " + log);
+    }
+    return program;
+}
+
+}  // namespace dermis::gl

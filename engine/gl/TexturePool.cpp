@@ -1,0 +1,75 @@
+#include "gl/TexturePool.h"
+
+#include <algorithm>
+
+namespace dermis::gl {
+
+GLenum internalFormat(graph::TextureFormat format) {
+    using graph::TextureFormat;
+    switch (format) {
+        case TextureFormat::Rgba8Srgb: return GL_SRGB8_ALPHA8;
+        case TextureFormat::Rgba8: return GL_RGBA8;
+        case TextureFormat::Rgba16F: return GL_RGBA16F;
+        case TextureFormat::Rg16F: return GL_RG16F;
+        case TextureFormat::R16F: return GL_R16F;
+        case TextureFormat::R32F: return GL_R32F;
+        case TextureFormat::Rgba32F: return GL_RGBA32F;
+        case TextureFormat::R8: return GL_R8;
+        case TextureFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
+        case TextureFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+    }
+    return GL_RGBA8;
+}
+
+Texture createTexture2D(const graph::TextureDesc& desc, int levels) {
+    Texture texture = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.get(), levels, internalFormat(desc.format), static_cast<GLsizei>(desc.width),
+                       static_cast<GLsizei>(desc.height));
+    const bool depth = graph::isDepthFormat(desc.format);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, depth ? GL_NEAREST : GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, depth ? GL_NEAREST : GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+GLuint TexturePool::acquire(const graph::TextureDesc& desc) {
+    for (Entry& entry : mEntries) {
+        if (!entry.inUse && entry.desc == desc) {
+            entry.inUse = true;
+            entry.lastUsedFrame = mFrame;
+            return entry.texture.get();
+        }
+    }
+    Entry entry;
+    entry.texture = createTexture2D(desc);
+    entry.desc = desc;
+    entry.inUse = true;
+    entry.lastUsedFrame = mFrame;
+    mEntries.push_back(std::move(entry));
+    return mEntries.back().texture.get();
+}
+
+void TexturePool::release(GLuint texture, const graph::TextureDesc& desc) {
+    for (Entry& entry : mEntries) {
+        if (entry.texture.get() == texture && entry.desc == desc) {
+            entry.inUse = false;
+            entry.lastUsedFrame = mFrame;
+            return;
+        }
+    }
+}
+
+std::vector<GLuint> TexturePool::endFrame() {
+    ++mFrame;
+    std::vector<GLuint> destroyed;
+    for (const Entry& e : mEntries) {
+        if (!e.inUse && mFrame - e.lastUsedFrame > kFramesToKeep) destroyed.push_back(e.texture.get());
+    }
+    mEntries.erase(std::remove_if(mEntries.begin(), mEntries.end(),
+                                  [&](const Entry& e) { return !e.inUse && mFrame - e.lastUsedFrame > kFramesToKeep; }),
+                   mEntries.end());
+    return destroyed;
+}
+
+}  // namespace dermis::gl

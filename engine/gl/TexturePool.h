@@ -1,0 +1,41 @@
+#pragma once
+// Transient render targets, recycled across passes and frames by description.
+// A texture unused for kFramesToKeep frames is destroyed (e.g. after a resize).
+
+#include "gl/GlObjects.h"
+#include "graph/TextureDesc.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace dermis::gl {
+
+GLenum internalFormat(graph::TextureFormat format);
+
+// Immutable single-level 2-D storage, clamp-to-edge, linear filtering for
+// colour and nearest for depth.
+Texture createTexture2D(const graph::TextureDesc& desc, int levels = 1);
+
+class TexturePool {
+public:
+    static constexpr uint64_t kFramesToKeep = 8;
+
+    GLuint acquire(const graph::TextureDesc& desc);
+    void release(GLuint texture, const graph::TextureDesc& desc);
+    // Ages free textures and destroys stale ones; returns the names it deleted
+    // so framebuffers that refer to them can be dropped.
+    std::vector<GLuint> endFrame();
+    size_t textureCount() const { return mEntries.size(); }
+
+private:
+    struct Entry {
+        Texture texture;
+        graph::TextureDesc desc;
+        bool inUse = false;
+        uint64_t lastUsedFrame = 0;
+    };
+    std::vector<Entry> mEntries;
+    uint64_t mFrame = 0;
+};
+
+}  // namespace dermis::gl

@@ -1,0 +1,63 @@
+#include "passes/CompositePass.h"
+
+namespace dermis {
+namespace {
+struct CompositeData {
+    graph::TextureHandle depth, albedo, irradiance, specular, out;
+};
+struct TonemapData {
+    graph::TextureHandle hdr, out;
+};
+}  // namespace
+
+graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                      const Lighting& lighting) {
+    const auto w = static_cast<uint32_t>(frame.width);
+    const auto h = static_cast<uint32_t>(frame.height);
+    return graph
+        .addPass<CompositeData>(
+            "composite",
+            [&](graph::PassBuilder& builder, CompositeData& d) {
+                d.depth = builder.read(gbuffer.depthStencil);
+                d.albedo = builder.read(gbuffer.albedo);
+                d.irradiance = builder.read(lighting.irradiance);
+                d.specular = builder.read(lighting.specular);
+                d.out = builder.create("hdr colour", {w, h, graph::TextureFormat::Rgba16F});
+            },
+            [&frame](const graph::PassResources& resources, const CompositeData& d) {
+                gl::Attachments attachments;
+                attachments.colour[0] = resources.texture(d.out);
+                frame.framebuffers->bind(attachments);
+                frame.setViewport(frame.width, frame.height);
+                glUseProgram(frame.programs->composite.get());
+                glBindTextureUnit(0, resources.texture(d.depth));
+                glBindTextureUnit(1, resources.texture(d.albedo));
+                glBindTextureUnit(2, resources.texture(d.irradiance));
+                glBindTextureUnit(3, resources.texture(d.specular));
+                frame.drawFullscreenTriangle();
+            })
+        .out;
+}
+
+graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle hdr,
+                                    graph::TextureHandle output) {
+    return graph
+        .addPass<TonemapData>(
+            "tonemap",
+            [&](graph::PassBuilder& builder, TonemapData& d) {
+                d.hdr = builder.read(hdr);
+                d.out = builder.write(output);
+            },
+            [&frame](const graph::PassResources& resources, const TonemapData& d) {
+                gl::Attachments attachments;
+                attachments.colour[0] = resources.texture(d.out);
+                frame.framebuffers->bind(attachments);
+                frame.setViewport(frame.width, frame.height);
+                glUseProgram(frame.programs->tonemap.get());
+                glBindTextureUnit(0, resources.texture(d.hdr));
+                frame.drawFullscreenTriangle();
+            })
+        .out;
+}
+
+}  // namespace dermis

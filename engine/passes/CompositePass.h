@@ -1,0 +1,19 @@
+#pragma once
+// Pass 6: composite (irradiance x albedo^(1-mix) + specular, background),
+// then tone mapping into the 8-bit output.
+
+#include "graph/RenderGraph.h"
+#include "passes/GBufferPass.h"
+#include "passes/LightingPass.h"
+#include "render/FrameContext.h"
+
+namespace dermis {
+
+graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                      const Lighting& lighting);
+
+// Writes tone-mapped sRGB into `output` (an imported RGBA8 texture).
+graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle hdr,
+                                    graph::TextureHandle output);
+
+}  // namespace dermis

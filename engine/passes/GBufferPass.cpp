@@ -1,0 +1,48 @@
+#include "passes/GBufferPass.h"
+
+namespace dermis {
+
+GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
+    const auto w = static_cast<uint32_t>(frame.width);
+    const auto h = static_cast<uint32_t>(frame.height);
+    return graph.addPass<GBuffer>(
+        "gbuffer",
+        [&](graph::PassBuilder& builder, GBuffer& g) {
+            g.depthStencil = builder.create("depth", {w, h, graph::TextureFormat::Depth24Stencil8});
+            g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
+            g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
+        },
+        [&frame](const graph::PassResources& resources, const GBuffer& g) {
+            gl::Attachments attachments;
+            attachments.colour[0] = resources.texture(g.albedo);
+            attachments.colour[1] = resources.texture(g.normalMaterial);
+            attachments.depth = resources.texture(g.depthStencil);
+            attachments.depthHasStencil = true;
+            frame.framebuffers->bind(attachments);
+            frame.setViewport(frame.width, frame.height);
+            const float zero[4] = {0, 0, 0, 0};
+            glClearBufferfv(GL_COLOR, 0, zero);
+            glClearBufferfv(GL_COLOR, 1, zero);
+            glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LESS);
+            glDepthMask(GL_TRUE);
+            glEnable(GL_STENCIL_TEST);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            glStencilMask(0xFF);
+            glDisable(GL_CULL_FACE);
+            glUseProgram(frame.programs->gbuffer.get());
+            for (const GpuCharacter& character : frame.gpuScene->characters()) {
+                frame.uploadObject(frame.objectBlock(character));
+                glStencilFunc(GL_ALWAYS, character.profileId, 0xFF);
+                glBindTextureUnit(0, character.albedoMap.get());
+                glBindTextureUnit(1, character.normalMap.get());
+                glBindVertexArray(character.mesh.vertexArray.get());
+                glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+            }
+            glDisable(GL_STENCIL_TEST);
+            glDisable(GL_DEPTH_TEST);
+        });
+}
+
+}  // namespace dermis

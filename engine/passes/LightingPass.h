@@ -1,0 +1,21 @@
+#pragma once
+// Pass 4: deferred lighting into diffuse irradiance (pre-scatter albedo^mix)
+// and specular, kept apart so specular is added after any SSS blur.
+
+#include "graph/RenderGraph.h"
+#include "passes/GBufferPass.h"
+#include "render/FrameContext.h"
+
+#include <vector>
+
+namespace dermis {
+
+struct Lighting {
+    graph::TextureHandle irradiance;  // RGBA16F
+    graph::TextureHandle specular;    // RGBA16F
+};
+
+Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                         const std::vector<graph::TextureHandle>& shadowMaps);
+
+}  // namespace dermis

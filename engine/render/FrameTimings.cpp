@@ -1,0 +1,146 @@
+#include "render/FrameTimings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace dermis {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    const size_t middle = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle), values.end());
+    if (values.size() % 2 == 1) return values[middle];
+    const double upper = values[middle];
+    const double lower = *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle));
+    return 0.5 * (lower + upper);
+}
+
+std::string describeCull(const graph::PassReport& report) {
+    switch (report.reason) {
+        case graph::CullReason::None: return "";
+        case graph::CullReason::Predicate: return "predicate: " + report.detail;
+        case graph::CullReason::MissingInput: return "input '" + report.detail + "' not produced";
+        case graph::CullReason::Unused: return "nothing reads its output";
+    }
+    return "";
+}
+
+void FrameTimings::addPassReports(const std::vector<graph::PassReport>& reports) {
+    for (const graph::PassReport& report : reports) {
+        if (mLastReport.find(report.name) == mLastReport.end()) mOrder.push_back(report.name);
+        mLastReport[report.name] = report;
+    }
+}
+
+void FrameTimings::addTimings(const std::vector<gl::PassTiming>& timings) {
+    for (const gl::PassTiming& t : timings) {
+        mGpu[t.pass].push_back(t.gpuMs);
+        mCpu[t.pass].push_back(t.cpuMs);
+        mFrameGpu[t.frame] += t.gpuMs;
+        mFrameCpu[t.frame] += t.cpuMs;
+    }
+}
+
+std::vector<PassSummary> FrameTimings::summary() const {
+    std::vector<PassSummary> out;
+    for (const std::string& name : mOrder) {
+        const graph::PassReport& report = mLastReport.at(name);
+        PassSummary s;
+        s.name = name;
+        s.executed = report.executed;
+        s.culledBecause = describeCull(report);
+        if (auto it = mGpu.find(name); it != mGpu.end()) {
+            s.gpuMs = median(it->second);
+            s.samples = it->second.size();
+        }
+        if (auto it = mCpu.find(name); it != mCpu.end()) s.cpuMs = median(it->second);
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+double FrameTimings::frameGpuMs() const {
+    std::vector<double> values;
+    for (const auto& [frame, ms] : mFrameGpu) values.push_back(ms);
+    return median(values);
+}
+
+double FrameTimings::frameCpuMs() const {
+    std::vector<double> values;
+    for (const auto& [frame, ms] : mFrameCpu) values.push_back(ms);
+    return median(values);
+}
+
+std::string FrameTimings::toJson(const RunInfo& info) const {
+    nlohmann::ordered_json j;
+    j["renderer"] = info.renderer;
+    j["backend"] = info.backend;
+    j["gl_version"] = info.glVersion;
+    j["scene"] = info.scene;
+    j["width"] = info.width;
+    j["height"] = info.height;
+    j["frames"] = info.frames;
+    j["passes"] = nlohmann::ordered_json::array();
+    for (const PassSummary& s : summary()) {
+        nlohmann::ordered_json p;
+        p["name"] = s.name;
+        p["executed"] = s.executed;
+        p["culled_because"] = s.culledBecause;
+        p["gpu_ms"] = s.gpuMs;
+        p["cpu_ms"] = s.cpuMs;
+        p["samples"] = s.samples;
+        j["passes"].push_back(p);
+    }
+    j["frame"] = {{"gpu_ms", frameGpuMs()}, {"cpu_ms", frameCpuMs()}, {"wall_ms", info.wallMsPerFrame}};
+    return j.dump(2) + "\n";
+}
+
+std::string FrameTimings::toTable(const RunInfo& info) const {
+    std::string out;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s (%s), %dx%d, median of %d frames\n", info.renderer.c_str(),
+                  info.backend.c_str(), info.width, info.height, info.frames);
+    out += line;
+    std::snprintf(line, sizeof line, "%-28s %10s %10s  %s\n", "pass", "gpu ms", "cpu ms", "");
+    out += line;
+    for (const PassSummary& s : summary()) {
+        if (s.executed) {
+            std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f\n", s.name.c_str(), s.gpuMs, s.cpuMs);
+        } else {
+            std::snprintf(line, sizeof line, "%-28s %10s %10s  culled: %s\n", s.name.c_str(), "-", "-",
+                          s.culledBecause.c_str());
+        }
+        out += line;
+    }
+    std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f\n", "frame (sum of passes)", frameGpuMs(), frameCpuMs());
+    out += line;
+    std::snprintf(line, sizeof line, "%-28s %10.3f\n", "frame wall clock", info.wallMsPerFrame);
+    out += line;
+    return out;
+}
+
+Status FrameTimings::writeJson(const std::string& path, const RunInfo& info) const {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path target(path);
+    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+    const std::string temporary = path + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        if (!out) return makeError(path, "cannot write timings file");
+        out << toJson(info);
+        if (!out) return makeError(path, "write failed");
+    }
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        return makeError(path, "cannot write timings file");
+    }
+    return success();
+}
+
+}  // namespace dermis

@@ -1,0 +1,69 @@
+#pragma once
+// Aggregates per-pass timings over many frames: which passes ran, and the
+// median GPU and CPU milliseconds of each. Writes the timings JSON and the
+// table `dermis render` prints.
+//
+// JSON layout:
+// { "renderer": "...", "backend": "...", "gl_version": "...", "width": W, "height": H,
+//   "frames": N, "scene": "...",
+//   "passes": [ {"name": "...", "executed": true, "culled_because": "", "gpu_ms": 1.2, "cpu_ms": 0.1}, ... ],
+//   "frame": {"gpu_ms": ..., "cpu_ms": ..., "wall_ms": ...} }
+// gpu_ms and cpu_ms are medians over the frames in which the pass ran (0 if
+// it never ran); the frame figures are medians of per-frame sums.
+
+#include "core/Result.h"
+#include "gl/GpuProfiler.h"
+#include "graph/RenderGraph.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+struct PassSummary {
+    std::string name;
+    bool executed = false;
+    std::string culledBecause;  // empty when executed
+    double gpuMs = 0.0;
+    double cpuMs = 0.0;
+    size_t samples = 0;
+};
+
+struct RunInfo {
+    std::string renderer;
+    std::string backend;
+    std::string glVersion;
+    std::string scene;
+    int width = 0;
+    int height = 0;
+    int frames = 0;
+    double wallMsPerFrame = 0.0;
+};
+
+double median(std::vector<double> values);
+std::string describeCull(const graph::PassReport& report);
+
+class FrameTimings {
+public:
+    void addPassReports(const std::vector<graph::PassReport>& reports);  // once per frame, in pass order
+    void addTimings(const std::vector<gl::PassTiming>& timings);
+
+    std::vector<PassSummary> summary() const;
+    double frameGpuMs() const;  // median over frames of the sum over passes
+    double frameCpuMs() const;
+
+    std::string toJson(const RunInfo& info) const;
+    std::string toTable(const RunInfo& info) const;
+    Status writeJson(const std::string& path, const RunInfo& info) const;
+
+private:
+    std::vector<std::string> mOrder;  // pass names in declaration order, as first seen
+    std::map<std::string, graph::PassReport> mLastReport;
+    std::map<std::string, std::vector<double>> mGpu;
+    std::map<std::string, std::vector<double>> mCpu;
+    std::map<uint64_t, double> mFrameGpu;
+    std::map<uint64_t, double> mFrameCpu;
+};
+
+}  // namespace dermis

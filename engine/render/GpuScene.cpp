@@ -1,0 +1,114 @@
+#include "render/GpuScene.h"
+
+#include "core/Log.h"
+#include "scene/ModelLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace dermis {
+namespace {
+
+GpuMesh uploadMesh(const MeshData& mesh) {
+    GpuMesh gpu;
+    gpu.vertexBuffer = gl::createBuffer();
+    glNamedBufferStorage(gpu.vertexBuffer.get(), static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
+                         mesh.vertices.data(), 0);
+    gpu.indexBuffer = gl::createBuffer();
+    glNamedBufferStorage(gpu.indexBuffer.get(), static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
+                         mesh.indices.data(), 0);
+    gpu.vertexArray = gl::createVertexArray();
+    const GLuint vao = gpu.vertexArray.get();
+    glVertexArrayVertexBuffer(vao, 0, gpu.vertexBuffer.get(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, gpu.indexBuffer.get());
+    struct Attribute {
+        GLuint location;
+        GLint components;
+        size_t offset;
+    };
+    const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
+                                    {1, 3, offsetof(Vertex, normal)},
+                                    {2, 4, offsetof(Vertex, tangent)},
+                                    {3, 2, offsetof(Vertex, uv)}};
+    for (const Attribute& a : attributes) {
+        glEnableVertexArrayAttrib(vao, a.location);
+        glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+        glVertexArrayAttribBinding(vao, a.location, 0);
+    }
+    gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+    gpu.objectBounds = mesh.bounds();
+    return gpu;
+}
+
+Bounds transformBounds(const Bounds& b, const glm::mat4& m) {
+    Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                          (corner & 4) ? b.max.z : b.min.z);
+        const glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        out.min = glm::min(out.min, w);
+        out.max = glm::max(out.max, w);
+    }
+    return out;
+}
+
+}  // namespace
+
+gl::Texture uploadImage(const Image& image) {
+    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
+    glTextureStorage2D(texture.get(), levels, format, image.width, image.height);
+    // Images are stored top row first; GL's first row is the bottom one, and
+    // glTF UVs have v = 0 at the top, so uploading top-first makes
+    // texture(uv) match glTF's convention directly.
+    glTextureSubImage2D(texture.get(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.texels.data());
+    glGenerateTextureMipmap(texture.get());
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
+Result<GpuScene> GpuScene::create(const Scene& scene) {
+    GpuScene gpuScene;
+    for (const Character& character : scene.characters) {
+        log::info("loading character '" + character.name + "'");
+        auto model = loadCharacterModel(character);
+        if (!model.ok()) return model.error();
+        if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+        GpuCharacter gpu;
+        gpu.name = character.name;
+        gpu.mesh = uploadMesh(model->mesh);
+        if (!model->albedoMap.empty()) gpu.albedoMap = uploadImage(model->albedoMap);
+        if (!model->normalMap.empty()) gpu.normalMap = uploadImage(model->normalMap);
+        gpu.profileId = character.material.profile == "none" ? 0 : 1;
+        gpu.source = &character;
+        gpuScene.mCharacters.push_back(std::move(gpu));
+    }
+    gpuScene.updateTransforms(scene);
+    return gpuScene;
+}
+
+void GpuScene::updateTransforms(const Scene& scene) {
+    for (size_t i = 0; i < mCharacters.size() && i < scene.characters.size(); ++i) {
+        const Character& character = scene.characters[i];
+        mCharacters[i].source = &character;
+        mCharacters[i].worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
+        mCharacters[i].worldBounds = transformBounds(mCharacters[i].mesh.objectBounds, mCharacters[i].worldFromObject);
+    }
+}
+
+Bounds GpuScene::worldBounds() const {
+    if (mCharacters.empty()) return Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
+    Bounds out = mCharacters.front().worldBounds;
+    for (const GpuCharacter& c : mCharacters) {
+        out.min = glm::min(out.min, c.worldBounds.min);
+        out.max = glm::max(out.max, c.worldBounds.max);
+    }
+    return out;
+}
+
+}  // namespace dermis

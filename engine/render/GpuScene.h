@@ -1,0 +1,56 @@
+#pragma once
+// Everything of a scene that lives on the GPU: one mesh and its maps per
+// character, plus world transforms and bounds. Built once from a Scene;
+// transforms can be updated per frame.
+
+#include "core/Image.h"
+#include "core/Result.h"
+#include "gl/GlObjects.h"
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace dermis {
+
+struct GpuMesh {
+    gl::VertexArray vertexArray;
+    gl::Buffer vertexBuffer;
+    gl::Buffer indexBuffer;
+    GLsizei indexCount = 0;
+    Bounds objectBounds;
+};
+
+struct GpuCharacter {
+    std::string name;
+    GpuMesh mesh;
+    gl::Texture albedoMap;  // empty when the material has none
+    gl::Texture normalMap;
+    glm::mat4 worldFromObject{1.0f};
+    Bounds worldBounds;
+    int profileId = 0;  // 0 = no SSS (opaque), else 1 + index into the profile table
+    const Character* source = nullptr;
+};
+
+class GpuScene {
+public:
+    // Loads every character's model (procedural or glTF) and uploads it.
+    static Result<GpuScene> create(const Scene& scene);
+
+    std::vector<GpuCharacter>& characters() { return mCharacters; }
+    const std::vector<GpuCharacter>& characters() const { return mCharacters; }
+    Bounds worldBounds() const;  // of all characters; a unit box at the origin when there are none
+
+    // Recomputes world transforms and bounds from the scene's transforms.
+    void updateTransforms(const Scene& scene);
+
+private:
+    std::vector<GpuCharacter> mCharacters;
+};
+
+// Uploads with a full mip chain; sRGB images get an sRGB internal format.
+gl::Texture uploadImage(const Image& image);
+
+}  // namespace dermis

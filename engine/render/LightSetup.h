@@ -1,0 +1,34 @@
+#pragma once
+// Scene lights -> the LightsBlock, including each shadow-casting light's
+// projection fitted around the scene's bounds.
+//
+// Shadow maps store linear depth along the light's axis (metres), measured
+// from the light's position. Directional lights get an orthographic box whose
+// "position" sits behind the bounds; spot lights a perspective frustum of
+// their outer cone. Point lights are lit but cast no shadow (a cube-map
+// shadow is future work; the loader warns).
+
+#include "render/UniformBlocks.h"
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace dermis {
+
+struct ShadowSettings {
+    int mapSize = 1024;
+    float biasConstantM = 0.0005f;
+    float biasSlopeTexels = 2.0f;
+    int filter = 0;  // 0 = 4x4 grid, 1 = Poisson
+};
+
+struct LightSetup {
+    gpu::LightsBlock block{};
+    int lightCount = 0;
+    std::vector<int> shadowedLights;  // light index per shadow slot
+};
+
+LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBounds, const ShadowSettings& shadows);
+
+}  // namespace dermis

@@ -1,0 +1,33 @@
+#include "render/Programs.h"
+
+#include "render/BeckmannTable.h"
+
+#include <string>
+
+namespace dermis {
+
+Result<Programs> Programs::build() {
+    const std::vector<gl::ShaderDefine> defines = {{"DERMIS_BECKMANN_SIZE", std::to_string(kBeckmannTableSize)}};
+    struct Entry {
+        gl::Program Programs::*member;
+        const char* vertex;
+        const char* fragment;
+    };
+    const Entry entries[] = {
+        {&Programs::shadow, "shadow.vert", "shadow.frag"},
+        {&Programs::gbuffer, "gbuffer.vert", "gbuffer.frag"},
+        {&Programs::lighting, "fullscreen.vert", "lighting.frag"},
+        {&Programs::composite, "fullscreen.vert", "composite.frag"},
+        {&Programs::tonemap, "fullscreen.vert", "tonemap.frag"},
+        {&Programs::aov, "fullscreen.vert", "aov.frag"},
+    };
+    Programs programs;
+    for (const Entry& e : entries) {
+        auto program = gl::buildProgram({e.vertex, e.fragment, defines});
+        if (!program.ok()) return program.error();
+        programs.*(e.member) = std::move(*program);
+    }
+    return programs;
+}
+
+}  // namespace dermis

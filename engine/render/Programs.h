@@ -1,0 +1,21 @@
+#pragma once
+// Every GLSL program the renderer uses, compiled together. reload() rebuilds
+// them all and keeps the old ones when any fails (the viewer's hot reload).
+
+#include "core/Result.h"
+#include "gl/ShaderProgram.h"
+
+namespace dermis {
+
+struct Programs {
+    gl::Program shadow;
+    gl::Program gbuffer;
+    gl::Program lighting;
+    gl::Program composite;
+    gl::Program tonemap;
+    gl::Program aov;
+
+    static Result<Programs> build();
+};
+
+}  // namespace dermis

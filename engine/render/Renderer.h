@@ -1,0 +1,76 @@
+#pragma once
+// The renderer: owns the GPU copy of a scene and, every frame, declares the
+// render graph, lets it cull, and runs it. A GL context must be current.
+//
+//   Renderer renderer = *Renderer::create(scene);
+//   renderer.renderFrame({640, 360, Aov::Final});
+//   Image image = *renderer.readOutput();
+
+#include "core/Image.h"
+#include "core/Result.h"
+#include "gl/GlGraphBackend.h"
+#include "gl/GpuProfiler.h"
+#include "render/Aov.h"
+#include "render/FrameContext.h"
+#include "render/FrameTimings.h"
+#include "render/GpuScene.h"
+#include "render/Programs.h"
+#include "render/ShadowCache.h"
+#include "scene/Scene.h"
+
+#include <memory>
+
+namespace dermis {
+
+struct FrameRequest {
+    int width = 640;
+    int height = 360;
+    Aov aov = Aov::Final;
+};
+
+// Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).
+constexpr int kMaxFrameDimension = 16384;
+
+class Renderer {
+public:
+    // Loads and uploads the scene's content and compiles the shaders. The
+    // scene must outlive the renderer.
+    static Result<std::unique_ptr<Renderer>> create(const Scene& scene);
+
+    Status renderFrame(const FrameRequest& request);
+    // The last frame's output: tone-mapped sRGB (values in [0,1]) for
+    // Aov::Final, linear floats otherwise. Rows top first.
+    Result<Image> readOutput();
+    // Waits for outstanding GPU timers and folds them into timings().
+    void finishTimings();
+
+    const FrameTimings& timings() const { return mTimings; }
+    void resetTimings() { mTimings = FrameTimings{}; }
+    uint64_t frameCount() const { return mFrame; }
+    GpuScene& gpuScene() { return mGpuScene; }
+
+private:
+    Renderer(const Scene& scene, GpuScene gpuScene, Programs programs);
+    void uploadFrameUniforms(const FrameRequest& request);
+    void ensureOutput(const FrameRequest& request);
+
+    const Scene& mScene;
+    GpuScene mGpuScene;
+    Programs mPrograms;
+    gl::GpuProfiler mProfiler;
+    gl::GlGraphBackend mBackend;
+    ShadowCache mShadowCache;
+    FrameTimings mTimings;
+    FrameContext mFrameContext;
+    gl::Buffer mFrameUniforms;
+    gl::Buffer mLightUniforms;
+    gl::Buffer mObjectUniforms;
+    gl::VertexArray mEmptyVertexArray;
+    gl::Texture mBeckmann;
+    gl::Texture mOutput;
+    graph::TextureDesc mOutputDesc{};
+    Aov mOutputAov = Aov::Final;
+    uint64_t mFrame = 0;
+};
+
+}  // namespace dermis

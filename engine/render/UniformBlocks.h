@@ -1,0 +1,20 @@
+#pragma once
+// C++ view of shaders/include/UniformBlocks.glsl (the single definition).
+
+#include <glm/glm.hpp>
+
+namespace dermis::gpu {
+
+using mat4 = glm::mat4;
+using vec4 = glm::vec4;
+using ivec4 = glm::ivec4;
+
+#include "include/UniformBlocks.glsl"
+
+static_assert(sizeof(FrameBlock) == 5 * 64 + 6 * 16, "FrameBlock must match std140");
+static_assert(sizeof(GpuLight) == 64 + 6 * 16, "GpuLight must match std140");
+static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
+static_assert(sizeof(ObjectBlock) == 2 * 64 + 3 * 16, "ObjectBlock must match std140");
+static_assert(sizeof(FrameBlock) % 16 == 0 && sizeof(ObjectBlock) % 16 == 0, "std140 blocks are vec4-aligned");
+
+}  // namespace dermis::gpu

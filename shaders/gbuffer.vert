@@ -1,0 +1,20 @@
+#include "Common.glsl"
+#include "UniformBlocks.glsl"
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 aTangent;
+layout(location = 3) in vec2 aUv;
+
+out vec3 vViewNormal;
+out vec4 vViewTangent;  // xyz tangent, w bitangent sign
+out vec2 vUv;
+
+void main() {
+    vec4 worldPosition = uObject.worldFromObject * vec4(aPosition, 1.0);
+    mat3 viewFromWorld3 = mat3(uFrame.viewFromWorld);
+    vViewNormal = viewFromWorld3 * (mat3(uObject.normalWorldFromObject) * aNormal);
+    vViewTangent = vec4(viewFromWorld3 * (mat3(uObject.worldFromObject) * aTangent.xyz), aTangent.w);
+    vUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
+    gl_Position = uFrame.clipFromWorld * worldPosition;
+}

@@ -1,0 +1,44 @@
+// Small helpers every shader may use. All of them are finite for every input
+// (DESIGN.md, "Numerical stability").
+#ifndef DERMIS_COMMON_GLSL
+#define DERMIS_COMMON_GLSL
+
+const float kPi = 3.14159265358979;
+const float kTiny = 1e-8;
+const float kHalfMax = 65504.0;  // largest finite fp16
+
+// normalize() that returns `fallback` instead of NaN for a zero vector.
+vec3 safeNormalize(vec3 v, vec3 fallback) {
+    float lengthSquared = dot(v, v);
+    return lengthSquared > kTiny ? v * inversesqrt(lengthSquared) : fallback;
+}
+
+// Keeps colours storable in fp16 targets and free of NaN/Inf.
+vec3 sanitizeColour(vec3 c) {
+    c = mix(c, vec3(0.0), isnan(c));
+    return clamp(c, vec3(0.0), vec3(kHalfMax));
+}
+
+// Octahedral unit-vector encoding (Cigolle et al. 2014): two components.
+vec2 octWrap(vec2 v) { return (1.0 - abs(v.yx)) * vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
+vec2 encodeNormal(vec3 n) {
+    n /= max(abs(n.x) + abs(n.y) + abs(n.z), kTiny);
+    return n.z >= 0.0 ? n.xy : octWrap(n.xy);
+}
+vec3 decodeNormal(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = clamp(-n.z, 0.0, 1.0);
+    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
+    return safeNormalize(n, vec3(0.0, 0.0, 1.0));
+}
+
+// View-space position of a pixel from its depth-buffer value in [0,1].
+vec3 viewPositionFromDepth(vec2 uv, float depth, mat4 viewFromClip) {
+    vec4 clip = vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    vec4 view = viewFromClip * clip;
+    return view.xyz / (abs(view.w) > kTiny ? view.w : kTiny);
+}
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+#endif

@@ -1,0 +1,32 @@
+#pragma once
+// A small strict option parser: `--name value` and `--name=value` options,
+// `--flag` switches, and positional arguments. Unknown options are errors.
+
+#include "core/Result.h"
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dermis::cli {
+
+struct ParsedArgs {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> options;  // without the leading "--"
+    std::set<std::string> flags;
+
+    bool has(const std::string& name) const { return options.count(name) > 0; }
+    std::string get(const std::string& name, const std::string& fallback) const;
+};
+
+// `valued` lists options that take a value, `switches` those that do not.
+Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valued,
+                             const std::set<std::string>& switches);
+
+Result<int> parsePositiveInt(const std::string& option, const std::string& text);
+// "WxH" -> {W, H}; both in 1..maxDimension.
+Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension);
+
+}  // namespace dermis::cli

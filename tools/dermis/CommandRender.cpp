@@ -1,0 +1,104 @@
+// dermis render: headless render of a scene file.
+#include "Args.h"
+#include "Commands.h"
+#include "Session.h"
+
+#include "core/Image.h"
+#include "core/Log.h"
+#include "render/Aov.h"
+#include "render/Renderer.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace dermis::cli {
+namespace {
+
+const char* const kHelp =
+    "usage: dermis render SCENE [options]\n"
+    "\n"
+    "Renders SCENE (a JSON scene file, see content/scenes/README.md) without a window\n"
+    "and prints a table of per-pass GPU and CPU milliseconds (medians over the frames).\n"
+    "\n"
+    "options:\n"
+    "  --size WxH          frame size in pixels (default 640x360)\n"
+    "  --frames N          frames to render; timings are medians over them (default 10)\n"
+    "  --out FILE          output image: .png is tone-mapped 8-bit sRGB, .exr is linear\n"
+    "                      float (default out/<scene name>.png)\n"
+    "  --aov NAME          write one linear component before tone mapping instead of the\n"
+    "                      final image: %s\n"
+    "                      (default final)\n"
+    "  --timings FILE      also write the timings as JSON\n"
+    "  --backend NAME      egl (GPU through EGL devices, else Mesa surfaceless) or osmesa\n"
+    "                      (default: egl, falling back to osmesa)\n"
+    "  --gl-debug          GL debug context; driver errors are printed and fail the run\n"
+    "  --quiet             no progress messages and no table\n"
+    "  --help              this text\n"
+    "\n"
+    "Exit status: 0 on success, 1 when the scene, its content or the GL context fails,\n"
+    "2 for bad command-line usage. On failure no output file is written.\n";
+
+}  // namespace
+
+int runRender(const std::vector<std::string>& rawArgs) {
+    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend"},
+                          {"gl-debug", "quiet", "help"});
+    if (!args.ok()) return usageError(args.error());
+    if (args->flags.count("help")) {
+        std::printf(kHelp, aovNameList().c_str());
+        return 0;
+    }
+    if (args->positional.size() != 1) return usageError(makeError("render", "expected exactly one SCENE file"));
+    log::setQuiet(args->flags.count("quiet") > 0);
+
+    const std::string scenePath = args->positional[0];
+    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return usageError(size.error());
+    auto frames = parsePositiveInt("--frames", args->get("frames", "10"));
+    if (!frames.ok()) return usageError(frames.error());
+    auto aov = parseAov(args->get("aov", "final"));
+    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + aovNameList()));
+    const std::string defaultOut = "out/" + std::filesystem::path(scenePath).stem().string() + ".png";
+    const std::string outPath = args->get("out", defaultOut);
+    const std::string extension = std::filesystem::path(outPath).extension().string();
+    if (extension != ".png" && extension != ".exr") {
+        return usageError(makeError("--out " + outPath, "the file must end in .png or .exr"));
+    }
+    auto backend = parseBackend(args->get("backend", "auto"));
+    if (!backend.ok()) return usageError(backend.error());
+
+    auto session = Session::open(scenePath, *backend, args->flags.count("gl-debug") > 0);
+    if (!session.ok()) return failure(session.error());
+    Renderer& renderer = *session->renderer;
+
+    const FrameRequest request{size->first, size->second, *aov};
+    log::info("rendering " + scenePath + " at " + std::to_string(request.width) + "x" + std::to_string(request.height) +
+              ", " + std::to_string(*frames) + " frames on " + session->context->renderer());
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < *frames; ++i) {
+        const Status status = renderer.renderFrame(request);
+        if (!status.ok()) return failure(status.error());
+    }
+    glFinish();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    renderer.finishTimings();
+    if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
+
+    auto image = renderer.readOutput();
+    if (!image.ok()) return failure(image.error());
+    if (const Status saved = saveImage(outPath, *image); !saved.ok()) return failure(saved.error());
+
+    RunInfo info = session->runInfo(scenePath, request.width, request.height, *frames);
+    info.wallMsPerFrame = wallMs / *frames;
+    if (args->has("timings")) {
+        if (const Status written = renderer.timings().writeJson(args->get("timings", ""), info); !written.ok()) {
+            return failure(written.error());
+        }
+    }
+    if (!log::quiet()) std::printf("%s", renderer.timings().toTable(info).c_str());
+    log::info("wrote " + outPath);
+    return 0;
+}
+
+}  // namespace dermis::cli

@@ -1,0 +1,20 @@
+#pragma once
+// Every `dermis` subcommand: a name, a one-line summary, its --help text and
+// its entry point. Each lives in its own Command*.cpp.
+
+#include <string>
+#include <vector>
+
+namespace dermis::cli {
+
+struct Command {
+    const char* name;
+    const char* summary;
+    int (*run)(const std::vector<std::string>& args);  // args after the command name
+};
+
+int runRender(const std::vector<std::string>& args);
+
+const std::vector<Command>& commands();
+
+}  // namespace dermis::cli

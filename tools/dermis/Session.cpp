@@ -1,0 +1,61 @@
+#include "Session.h"
+
+#include "core/Log.h"
+#include "gl/GlDebug.h"
+#include "scene/SceneLoader.h"
+
+namespace dermis::cli {
+
+Result<gl::Backend> parseBackend(const std::string& name) {
+    if (name == "auto") return gl::Backend::Auto;
+    if (name == "egl") return gl::Backend::Egl;
+    if (name == "osmesa") return gl::Backend::OsMesa;
+    return makeError("--backend " + name, "expected egl or osmesa");
+}
+
+Result<Session> Session::open(const std::string& scenePath, gl::Backend backend, bool glDebug) {
+    Session session;
+    session.glDebug = glDebug;
+    auto scene = loadScene(scenePath);
+    if (!scene.ok()) return scene.error();
+    session.scene = std::make_unique<Scene>(std::move(*scene));
+    auto context = gl::createHeadlessContext({backend, glDebug});
+    if (!context.ok()) return context.error();
+    session.context = std::move(*context);
+    auto renderer = Renderer::create(*session.scene);
+    if (!renderer.ok()) return renderer.error();
+    session.renderer = std::move(*renderer);
+    return session;
+}
+
+Status Session::checkGlErrors() const {
+    gl::drainGlErrors();
+    if (glDebug && gl::debugErrorCount() > 0) {
+        return makeError("OpenGL", std::to_string(gl::debugErrorCount()) + " error(s), last: " + gl::lastDebugError());
+    }
+    return success();
+}
+
+RunInfo Session::runInfo(const std::string& scenePath, int width, int height, int frames) const {
+    RunInfo info;
+    info.renderer = context->renderer();
+    info.backend = context->backendName();
+    info.glVersion = context->version();
+    info.scene = scenePath;
+    info.width = width;
+    info.height = height;
+    info.frames = frames;
+    return info;
+}
+
+int failure(const Error& error) {
+    log::error(error.message());
+    return 1;
+}
+
+int usageError(const Error& error) {
+    log::error(error.message());
+    return 2;
+}
+
+}  // namespace dermis::cli

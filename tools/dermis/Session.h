@@ -1,0 +1,33 @@
+#pragma once
+// What every GL subcommand starts with: a scene file, a headless context and
+// a renderer for it, plus the shared ways to fail.
+
+#include "core/Result.h"
+#include "gl/GlContext.h"
+#include "render/FrameTimings.h"
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+#include <memory>
+#include <string>
+
+namespace dermis::cli {
+
+struct Session {
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<gl::Context> context;
+    std::unique_ptr<Renderer> renderer;
+    bool glDebug = false;
+
+    static Result<Session> open(const std::string& scenePath, gl::Backend backend, bool glDebug);
+    Status checkGlErrors() const;  // with --gl-debug: any driver error is a failure
+    RunInfo runInfo(const std::string& scenePath, int width, int height, int frames) const;
+};
+
+Result<gl::Backend> parseBackend(const std::string& name);
+
+// Print "error: <where>: <what>" and return the exit status.
+int failure(const Error& error);     // 1: the input or the run failed
+int usageError(const Error& error);  // 2: the command line is wrong
+
+}  // namespace dermis::cli
