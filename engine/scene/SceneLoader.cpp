@@ -1,0 +1,249 @@
+#include "scene/SceneLoader.h"
+
+#include "scene/JsonReader.h"
+#include "scene/ScenePaths.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace dermis {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr size_t kMaxLights = 1024;
+constexpr size_t kMaxCharacters = 1024;
+// A direction within this of unit length is kept as written, so that a
+// direction the loader normalised reads back bit-identical (normalising twice
+// can move the last bit).
+constexpr double kUnitLengthTolerance = 1e-6;
+constexpr double kParallelTolerance = 1e-6;
+
+const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
+const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
+
+double length(const glm::vec3& v) {
+    const double x = v.x, y = v.y, z = v.z;
+    return std::sqrt(x * x + y * y + z * z);
+}
+
+glm::dvec3 normalised(const glm::vec3& v) {
+    return glm::dvec3(v) / length(v);
+}
+
+void readCamera(JsonObject& root, Camera& camera) {
+    const json* value = root.member("camera");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(root.context(), *value, root.pointer("camera"),
+                      {"position_m", "target_m", "up", "vertical_fov_deg", "near_m", "far_m"});
+    object.vec3("position_m", camera.positionM);
+    object.vec3("target_m", camera.targetM);
+    object.vec3("up", camera.up);
+    object.number("vertical_fov_deg", camera.verticalFovDeg, Range::open(0.0, 180.0));
+    object.number("near_m", camera.nearM, Range::above(0.0));
+    object.number("far_m", camera.farM, Range::above(0.0));
+
+    JsonContext& context = root.context();
+    if (context.failed()) {
+        return;
+    }
+    context.check(camera.nearM < camera.farM, object.pointer("near_m"),
+                  "must be less than far_m (" + formatNumberForMessage(camera.farM) + "), got " +
+                      formatNumberForMessage(camera.nearM));
+    context.check(camera.positionM != camera.targetM, object.pointer("target_m"),
+                  "must differ from position_m (the camera needs a view direction)");
+    if (!context.check(length(camera.up) > 0.0, object.pointer("up"), "must not be the zero vector") ||
+        context.failed()) {
+        return;
+    }
+    const glm::dvec3 view = normalised(camera.targetM - camera.positionM);
+    context.check(glm::length(glm::cross(view, normalised(camera.up))) > kParallelTolerance, object.pointer("up"),
+                  "must not be parallel to the view direction (target_m - position_m)");
+}
+
+void readLight(JsonContext& context, const json& value, const std::string& pointer, Light& light) {
+    JsonObject object(
+        context, value, pointer,
+        {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow"});
+    int type = static_cast<int>(light.type);
+    object.choice("type", "light type", kLightTypes, type);
+    light.type = static_cast<LightType>(type);
+    object.vec3("position_m", light.positionM);
+    object.vec3("direction", light.direction);
+    object.vec3("colour", light.colour, Range::atLeast(0.0));
+    object.number("intensity", light.intensity, Range::atLeast(0.0));
+    object.number("spot_inner_deg", light.spotInnerDeg, Range::rightOpen(0.0, 90.0));
+    object.number("spot_outer_deg", light.spotOuterDeg, Range::rightOpen(0.0, 90.0));
+    object.boolean("shadow", light.castsShadow);
+    if (context.failed()) {
+        return;
+    }
+    context.check(light.spotInnerDeg <= light.spotOuterDeg, object.pointer("spot_inner_deg"),
+                  "must be <= spot_outer_deg (" + formatNumberForMessage(light.spotOuterDeg) + "), got " +
+                      formatNumberForMessage(light.spotInnerDeg));
+    const double directionLength = length(light.direction);
+    if (context.check(directionLength > 0.0, object.pointer("direction"), "must not be the zero vector") &&
+        std::fabs(directionLength - 1.0) > kUnitLengthTolerance) {
+        light.direction = glm::vec3(normalised(light.direction));
+    }
+}
+
+void readTransform(JsonObject& parent, Transform& transform) {
+    const json* value = parent.member("transform");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("transform"),
+                      {"translation_m", "rotation_deg", "scale"});
+    object.vec3("translation_m", transform.translationM);
+    object.vec3("rotation_deg", transform.rotationDeg);
+    object.number("scale", transform.scale, Range::above(0.0));
+}
+
+void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh) {
+    const json* value = parent.member("mesh");
+    JsonContext& context = parent.context();
+    if (context.failed()) {
+        return;
+    }
+    if (value == nullptr) {
+        context.fail(parent.pointer(), "missing required key \"mesh\"");
+        return;
+    }
+    JsonObject object(context, *value, parent.pointer("mesh"), {"procedural", "gltf"});
+    if (context.failed()) {
+        return;
+    }
+    const bool procedural = object.has("procedural");
+    const bool gltf = object.has("gltf");
+    if (!context.check(procedural != gltf, object.pointer(),
+                       procedural
+                           ? "give exactly one of \"procedural\" and \"gltf\", not both"
+                           : "missing mesh source: give \"procedural\" (a built-in mesh name) or \"gltf\" (a file)")) {
+        return;
+    }
+    object.string("procedural", mesh.procedural, false);
+    object.string("gltf", mesh.gltfPath, false);
+    mesh.gltfPath = resolveScenePath(sceneFile, mesh.gltfPath);
+}
+
+void readMaterial(JsonObject& parent, const std::string& sceneFile, Material& material) {
+    const json* value = parent.member("material");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("material"),
+                      {"albedo_map", "normal_map", "flip_v", "procedural", "albedo", "roughness", "rho_s", "profile"});
+    object.string("albedo_map", material.albedoMap);
+    object.string("normal_map", material.normalMap);
+    material.albedoMap = resolveScenePath(sceneFile, material.albedoMap);
+    material.normalMap = resolveScenePath(sceneFile, material.normalMap);
+    object.boolean("flip_v", material.flipV);
+    object.boolean("procedural", material.procedural);
+    object.vec3("albedo", material.albedo, Range::closed(0.0, 1.0));
+    object.number("roughness", material.roughness, Range::leftOpen(0.0, 1.0));
+    object.number("rho_s", material.rhoS, Range::closed(0.0, 1.0));
+    object.string("profile", material.profile, false);
+}
+
+void readCharacter(JsonContext& context, const json& value, const std::string& pointer, const std::string& sceneFile,
+                   Character& character) {
+    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material"});
+    object.string("name", character.name);
+    readTransform(object, character.transform);
+    readMesh(object, sceneFile, character.mesh);
+    object.number("metres_per_unit", character.metresPerUnit, Range::above(0.0));
+    readMaterial(object, sceneFile, character.material);
+}
+
+void readBackground(JsonObject& root, Background& background) {
+    const json* value = root.member("background");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(root.context(), *value, root.pointer("background"), {"colour"});
+    object.vec3("colour", background.colour, Range::atLeast(0.0));
+}
+
+void readSettings(JsonObject& root, RenderSettings& settings) {
+    const json* value = root.member("settings");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(
+        root.context(), *value, root.pointer("settings"),
+        {"exposure", "ambient", "shadow_map_size", "shadow_bias_constant", "shadow_bias_slope", "shadow_filter"});
+    object.number("exposure", settings.exposure, Range::above(0.0));
+    object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
+    object.integer("shadow_map_size", settings.shadowMapSize, Range::closed(64.0, 8192.0));
+    object.number("shadow_bias_constant", settings.shadowBiasConstant, Range::atLeast(0.0));
+    object.number("shadow_bias_slope", settings.shadowBiasSlope, Range::atLeast(0.0));
+    int filter = 0;
+    object.choice("shadow_filter", "shadow filter", kShadowFilters, filter);
+    if (object.has("shadow_filter")) {
+        settings.shadowFilter = kShadowFilters[static_cast<size_t>(filter)];
+    }
+}
+
+}  // namespace
+
+Result<Scene> parseScene(const std::string& jsonText, const std::string& pathForMessages) {
+    Result<json> document = parseJsonText(jsonText, pathForMessages);
+    if (!document) {
+        return document.error();
+    }
+    Scene scene;
+    scene.path = pathForMessages;
+    JsonContext context(pathForMessages);
+    JsonObject root(context, *document, "", {"camera", "lights", "characters", "background", "settings"});
+    readCamera(root, scene.camera);
+
+    if (const json* lights = root.array("lights", kMaxLights, "lights")) {
+        scene.lights.resize(lights->size());
+        for (size_t i = 0; i < lights->size() && !context.failed(); ++i) {
+            readLight(context, (*lights)[i], root.pointer("lights") + "/" + std::to_string(i), scene.lights[i]);
+        }
+    }
+    if (const json* characters = root.array("characters", kMaxCharacters, "characters")) {
+        scene.characters.resize(characters->size());
+        for (size_t i = 0; i < characters->size() && !context.failed(); ++i) {
+            readCharacter(context, (*characters)[i], root.pointer("characters") + "/" + std::to_string(i),
+                          pathForMessages, scene.characters[i]);
+        }
+    }
+    readBackground(root, scene.background);
+    readSettings(root, scene.settings);
+
+    if (context.failed()) {
+        return context.error();
+    }
+    return scene;
+}
+
+Result<Scene> loadScene(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        return makeError(path, "cannot open scene file: it is a directory");
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        return makeError(path, "cannot open scene file");
+    }
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > kMaxJsonTextBytes) {
+        return makeError(path, "scene file is " + std::to_string(size) + " bytes; the limit is " +
+                                   std::to_string(kMaxJsonTextBytes) + " bytes");
+    }
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    if (file.bad()) {
+        return makeError(path, "cannot read scene file");
+    }
+    return parseScene(text, path);
+}
+
+}  // namespace dermis

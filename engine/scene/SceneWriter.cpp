@@ -1,0 +1,170 @@
+// sceneToJson (declared in SceneLoader.h): the writing half of the format.
+
+#include "scene/SceneLoader.h"
+
+#include "scene/ScenePaths.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+
+namespace dermis {
+
+namespace {
+
+// Keys in the order the format documentation lists them.
+using Json = nlohmann::ordered_json;
+
+// A float as the shortest decimal that reads back to the same float, so that
+// the file says 0.05 rather than 0.05000000074505806.
+Json number(float value) {
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof(buffer) - 1, value).ptr;
+    *end = '\0';
+    const double shortest = std::strtod(buffer, nullptr);
+    // The reader converts the parsed double to float; in the rare case where
+    // that double rounding differs, write the float's exact value instead.
+    return static_cast<float>(shortest) == value ? Json(shortest) : Json(static_cast<double>(value));
+}
+
+Json vec3(const glm::vec3& v) {
+    return Json::array({number(v.x), number(v.y), number(v.z)});
+}
+
+const char* lightTypeName(LightType type) {
+    switch (type) {
+        case LightType::Directional: return "directional";
+        case LightType::Spot: return "spot";
+        case LightType::Point: return "point";
+    }
+    return "directional";
+}
+
+Json cameraJson(const Camera& camera) {
+    Json j;
+    j["position_m"] = vec3(camera.positionM);
+    j["target_m"] = vec3(camera.targetM);
+    j["up"] = vec3(camera.up);
+    j["vertical_fov_deg"] = number(camera.verticalFovDeg);
+    j["near_m"] = number(camera.nearM);
+    j["far_m"] = number(camera.farM);
+    return j;
+}
+
+Json lightJson(const Light& light) {
+    Json j;
+    j["type"] = lightTypeName(light.type);
+    j["position_m"] = vec3(light.positionM);
+    j["direction"] = vec3(light.direction);
+    j["colour"] = vec3(light.colour);
+    j["intensity"] = number(light.intensity);
+    j["spot_inner_deg"] = number(light.spotInnerDeg);
+    j["spot_outer_deg"] = number(light.spotOuterDeg);
+    j["shadow"] = light.castsShadow;
+    return j;
+}
+
+Json characterJson(const Character& character, const std::string& sceneFile) {
+    Json transform;
+    transform["translation_m"] = vec3(character.transform.translationM);
+    transform["rotation_deg"] = vec3(character.transform.rotationDeg);
+    transform["scale"] = number(character.transform.scale);
+
+    Json mesh = Json::object();
+    if (!character.mesh.gltfPath.empty()) {
+        mesh["gltf"] = relativeScenePath(sceneFile, character.mesh.gltfPath);
+    } else {
+        mesh["procedural"] = character.mesh.procedural;
+    }
+
+    const Material& m = character.material;
+    Json material;
+    material["albedo_map"] = relativeScenePath(sceneFile, m.albedoMap);
+    material["normal_map"] = relativeScenePath(sceneFile, m.normalMap);
+    material["flip_v"] = m.flipV;
+    material["procedural"] = m.procedural;
+    material["albedo"] = vec3(m.albedo);
+    material["roughness"] = number(m.roughness);
+    material["rho_s"] = number(m.rhoS);
+    material["profile"] = m.profile;
+
+    Json j;
+    j["name"] = character.name;
+    j["transform"] = std::move(transform);
+    j["mesh"] = std::move(mesh);
+    j["metres_per_unit"] = number(character.metresPerUnit);
+    j["material"] = std::move(material);
+    return j;
+}
+
+Json settingsJson(const RenderSettings& settings) {
+    Json j;
+    j["exposure"] = number(settings.exposure);
+    j["ambient"] = vec3(settings.ambient);
+    j["shadow_map_size"] = settings.shadowMapSize;
+    j["shadow_bias_constant"] = number(settings.shadowBiasConstant);
+    j["shadow_bias_slope"] = number(settings.shadowBiasSlope);
+    j["shadow_filter"] = settings.shadowFilter;
+    return j;
+}
+
+// nlohmann's pretty printer puts every array element on its own line; vectors
+// read better as [0.1, 0.2, 0.3]. Collapses arrays that hold only numbers,
+// leaving string contents alone.
+std::string collapseNumberArrays(const std::string& pretty) {
+    std::string out;
+    out.reserve(pretty.size());
+    size_t i = 0;
+    while (i < pretty.size()) {
+        if (pretty[i] == '"') {
+            size_t end = i + 1;
+            while (end < pretty.size() && pretty[end] != '"') {
+                end += pretty[end] == '\\' ? 2 : 1;
+            }
+            end = std::min(end + 1, pretty.size());
+            out.append(pretty, i, end - i);
+            i = end;
+            continue;
+        }
+        const size_t close = pretty[i] == '[' ? pretty.find(']', i) : std::string::npos;
+        const bool numbersOnly =
+            close != std::string::npos && pretty.find_first_not_of("0123456789.-+eE, \n", i + 1) >= close;
+        if (!numbersOnly) {
+            out += pretty[i++];
+            continue;
+        }
+        for (size_t k = i; k <= close; ++k) {
+            if (pretty[k] != ' ' && pretty[k] != '\n') {
+                out += pretty[k];
+                if (pretty[k] == ',') {
+                    out += ' ';
+                }
+            }
+        }
+        i = close + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string sceneToJson(const Scene& scene) {
+    Json root;
+    root["camera"] = cameraJson(scene.camera);
+    root["lights"] = Json::array();
+    for (const Light& light : scene.lights) {
+        root["lights"].push_back(lightJson(light));
+    }
+    root["characters"] = Json::array();
+    for (const Character& character : scene.characters) {
+        root["characters"].push_back(characterJson(character, scene.path));
+    }
+    root["background"] = Json{{"colour", vec3(scene.background.colour)}};
+    root["settings"] = settingsJson(scene.settings);
+    // Replace, not throw, on invalid UTF-8 in names or paths.
+    return collapseNumberArrays(root.dump(2, ' ', false, Json::error_handler_t::replace)) + "\n";
+}
+
+}  // namespace dermis

@@ -1,0 +1,589 @@
+// Scene files: parsing, defaults, the sceneToJson round trip, error messages,
+// robustness against truncated and mutated input, and the object-to-world
+// transform.
+
+#include "scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+
+namespace dermis {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kScenePath = "content/scenes/full.json";
+
+// Every key of the format with a non-default value.
+constexpr const char* kFullScene = R"({
+  "camera": {"position_m": [0.1, 0.2, 0.9], "target_m": [0, 0.05, 0], "up": [0, 1, 0.1],
+             "vertical_fov_deg": 25, "near_m": 0.02, "far_m": 12.5},
+  "lights": [
+    {"type": "directional", "direction": [0, 0, -2], "colour": [1, 0.9, 0.8], "intensity": 3, "shadow": false},
+    {"type": "spot", "position_m": [1, 2, 3], "direction": [1, 1, 0], "colour": [0.5, 0.5, 1],
+     "intensity": 12.25, "spot_inner_deg": 10, "spot_outer_deg": 15},
+    {"type": "point", "position_m": [-1, 0.5, 2], "intensity": 0}
+  ],
+  "characters": [
+    {"name": "lee", "transform": {"translation_m": [0.3, -0.1, 0], "rotation_deg": [-90, 45, 5], "scale": 1.5},
+     "mesh": {"gltf": "../meshes/lee.glb"}, "metres_per_unit": 0.01,
+     "material": {"albedo_map": "/abs/albedo.png", "normal_map": "maps/normal.png", "flip_v": true,
+                  "procedural": false, "albedo": [0.7, 0.5, 0.4], "roughness": 0.35, "rho_s": 0.2,
+                  "profile": "marble"}},
+    {"name": "head", "mesh": {"procedural": "head"}, "material": {"procedural": true, "profile": "none"}}
+  ],
+  "background": {"colour": [0.1, 0.2, 0.3]},
+  "settings": {"exposure": 1.5, "ambient": [0.01, 0.02, 0.03], "shadow_map_size": 2048,
+               "shadow_bias_constant": 0.001, "shadow_bias_slope": 1.5, "shadow_filter": "poisson"}
+})";
+
+#define EXPECT_VEC3_EQ(a, b)                \
+    do {                                    \
+        EXPECT_EQ((a).x, (b).x) << #a ".x"; \
+        EXPECT_EQ((a).y, (b).y) << #a ".y"; \
+        EXPECT_EQ((a).z, (b).z) << #a ".z"; \
+    } while (false)
+
+#define EXPECT_VEC3_NEAR(a, b, tolerance)                \
+    do {                                                 \
+        EXPECT_NEAR((a).x, (b).x, tolerance) << #a ".x"; \
+        EXPECT_NEAR((a).y, (b).y, tolerance) << #a ".y"; \
+        EXPECT_NEAR((a).z, (b).z, tolerance) << #a ".z"; \
+    } while (false)
+
+void expectSceneEq(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.path, b.path);
+    EXPECT_VEC3_EQ(a.camera.positionM, b.camera.positionM);
+    EXPECT_VEC3_EQ(a.camera.targetM, b.camera.targetM);
+    EXPECT_VEC3_EQ(a.camera.up, b.camera.up);
+    EXPECT_EQ(a.camera.verticalFovDeg, b.camera.verticalFovDeg);
+    EXPECT_EQ(a.camera.nearM, b.camera.nearM);
+    EXPECT_EQ(a.camera.farM, b.camera.farM);
+    ASSERT_EQ(a.lights.size(), b.lights.size());
+    for (size_t i = 0; i < a.lights.size(); ++i) {
+        SCOPED_TRACE("light " + std::to_string(i));
+        const Light& x = a.lights[i];
+        const Light& y = b.lights[i];
+        EXPECT_EQ(x.type, y.type);
+        EXPECT_VEC3_EQ(x.positionM, y.positionM);
+        EXPECT_VEC3_EQ(x.direction, y.direction);
+        EXPECT_VEC3_EQ(x.colour, y.colour);
+        EXPECT_EQ(x.intensity, y.intensity);
+        EXPECT_EQ(x.spotInnerDeg, y.spotInnerDeg);
+        EXPECT_EQ(x.spotOuterDeg, y.spotOuterDeg);
+        EXPECT_EQ(x.castsShadow, y.castsShadow);
+    }
+    ASSERT_EQ(a.characters.size(), b.characters.size());
+    for (size_t i = 0; i < a.characters.size(); ++i) {
+        SCOPED_TRACE("character " + std::to_string(i));
+        const Character& x = a.characters[i];
+        const Character& y = b.characters[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_VEC3_EQ(x.transform.translationM, y.transform.translationM);
+        EXPECT_VEC3_EQ(x.transform.rotationDeg, y.transform.rotationDeg);
+        EXPECT_EQ(x.transform.scale, y.transform.scale);
+        EXPECT_EQ(x.mesh.procedural, y.mesh.procedural);
+        EXPECT_EQ(x.mesh.gltfPath, y.mesh.gltfPath);
+        EXPECT_EQ(x.metresPerUnit, y.metresPerUnit);
+        EXPECT_EQ(x.material.albedoMap, y.material.albedoMap);
+        EXPECT_EQ(x.material.normalMap, y.material.normalMap);
+        EXPECT_EQ(x.material.flipV, y.material.flipV);
+        EXPECT_EQ(x.material.procedural, y.material.procedural);
+        EXPECT_VEC3_EQ(x.material.albedo, y.material.albedo);
+        EXPECT_EQ(x.material.roughness, y.material.roughness);
+        EXPECT_EQ(x.material.rhoS, y.material.rhoS);
+        EXPECT_EQ(x.material.profile, y.material.profile);
+    }
+    EXPECT_VEC3_EQ(a.background.colour, b.background.colour);
+    EXPECT_EQ(a.settings.exposure, b.settings.exposure);
+    EXPECT_VEC3_EQ(a.settings.ambient, b.settings.ambient);
+    EXPECT_EQ(a.settings.shadowMapSize, b.settings.shadowMapSize);
+    EXPECT_EQ(a.settings.shadowBiasConstant, b.settings.shadowBiasConstant);
+    EXPECT_EQ(a.settings.shadowBiasSlope, b.settings.shadowBiasSlope);
+    EXPECT_EQ(a.settings.shadowFilter, b.settings.shadowFilter);
+}
+
+// The error text for a scene that must fail; "" (and a test failure) if it loads.
+std::string errorOf(const std::string& json) {
+    const Result<Scene> scene = parseScene(json, "x.json");
+    EXPECT_FALSE(scene.ok()) << "accepted: " << json;
+    if (scene.ok()) {
+        return "";
+    }
+    EXPECT_EQ(scene.error().where, "x.json");
+    EXPECT_EQ(scene.error().what.find('\n'), std::string::npos) << scene.error().what;
+    return scene.error().what;
+}
+
+// A character with the given JSON members, inside an otherwise empty scene.
+std::string withCharacter(const std::string& members) {
+    return R"({"characters": [{)" + members + "}]}";
+}
+
+std::string withLight(const std::string& members) {
+    return R"({"lights": [{)" + members + "}]}";
+}
+
+// For inputs that may or may not be valid: never crash, and every outcome is
+// well formed. An accepted scene must also survive the round trip.
+void expectWellFormedOutcome(const std::string& text) {
+    const Result<Scene> scene = parseScene(text, "fuzz.json");
+    if (!scene.ok()) {
+        EXPECT_EQ(scene.error().where, "fuzz.json");
+        EXPECT_FALSE(scene.error().what.empty());
+        EXPECT_EQ(scene.error().what.find('\n'), std::string::npos) << scene.error().what;
+        return;
+    }
+    const Result<Scene> again = parseScene(sceneToJson(*scene), "fuzz.json");
+    ASSERT_TRUE(again.ok()) << again.error().message() << "\nfrom: " << text;
+    expectSceneEq(*scene, *again);
+}
+
+class TempDir {
+public:
+    TempDir() {
+        mPath = fs::temp_directory_path() / ("dermis_scene_test_" + std::to_string(std::random_device{}()));
+        fs::create_directories(mPath / "scenes");
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(mPath, ec);
+    }
+    const fs::path& path() const { return mPath; }
+
+private:
+    fs::path mPath;
+};
+
+TEST(SceneLoader, FullSceneParsesIntoExpectedValues) {
+    const Result<Scene> result = parseScene(kFullScene, kScenePath);
+    ASSERT_TRUE(result.ok()) << result.error().message();
+    const Scene& s = *result;
+    EXPECT_EQ(s.path, kScenePath);
+
+    EXPECT_VEC3_EQ(s.camera.positionM, glm::vec3(0.1f, 0.2f, 0.9f));
+    EXPECT_VEC3_EQ(s.camera.targetM, glm::vec3(0.0f, 0.05f, 0.0f));
+    EXPECT_VEC3_EQ(s.camera.up, glm::vec3(0.0f, 1.0f, 0.1f));  // up is kept as written
+    EXPECT_EQ(s.camera.verticalFovDeg, 25.0f);
+    EXPECT_EQ(s.camera.nearM, 0.02f);
+    EXPECT_EQ(s.camera.farM, 12.5f);
+
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    EXPECT_VEC3_EQ(s.lights[0].direction, glm::vec3(0.0f, 0.0f, -1.0f));  // normalised
+    EXPECT_VEC3_EQ(s.lights[0].colour, glm::vec3(1.0f, 0.9f, 0.8f));
+    EXPECT_EQ(s.lights[0].intensity, 3.0f);
+    EXPECT_FALSE(s.lights[0].castsShadow);
+    EXPECT_EQ(s.lights[1].type, LightType::Spot);
+    EXPECT_VEC3_EQ(s.lights[1].positionM, glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_VEC3_NEAR(s.lights[1].direction, glm::vec3(std::sqrt(0.5f), std::sqrt(0.5f), 0.0f), 1e-7);
+    EXPECT_EQ(s.lights[1].intensity, 12.25f);
+    EXPECT_EQ(s.lights[1].spotInnerDeg, 10.0f);
+    EXPECT_EQ(s.lights[1].spotOuterDeg, 15.0f);
+    EXPECT_TRUE(s.lights[1].castsShadow);
+    EXPECT_EQ(s.lights[2].type, LightType::Point);
+    EXPECT_VEC3_EQ(s.lights[2].positionM, glm::vec3(-1.0f, 0.5f, 2.0f));
+    EXPECT_EQ(s.lights[2].intensity, 0.0f);
+
+    ASSERT_EQ(s.characters.size(), 2u);
+    const Character& lee = s.characters[0];
+    EXPECT_EQ(lee.name, "lee");
+    EXPECT_VEC3_EQ(lee.transform.translationM, glm::vec3(0.3f, -0.1f, 0.0f));
+    EXPECT_VEC3_EQ(lee.transform.rotationDeg, glm::vec3(-90.0f, 45.0f, 5.0f));
+    EXPECT_EQ(lee.transform.scale, 1.5f);
+    EXPECT_EQ(lee.mesh.gltfPath, "content/meshes/lee.glb");  // relative to the scene file
+    EXPECT_EQ(lee.mesh.procedural, "");
+    EXPECT_EQ(lee.metresPerUnit, 0.01f);
+    EXPECT_EQ(lee.material.albedoMap, "/abs/albedo.png");  // absolute: unchanged
+    EXPECT_EQ(lee.material.normalMap, "content/scenes/maps/normal.png");
+    EXPECT_TRUE(lee.material.flipV);
+    EXPECT_FALSE(lee.material.procedural);
+    EXPECT_VEC3_EQ(lee.material.albedo, glm::vec3(0.7f, 0.5f, 0.4f));
+    EXPECT_EQ(lee.material.roughness, 0.35f);
+    EXPECT_EQ(lee.material.rhoS, 0.2f);
+    EXPECT_EQ(lee.material.profile, "marble");
+
+    const Character& head = s.characters[1];
+    EXPECT_EQ(head.name, "head");
+    EXPECT_EQ(head.mesh.procedural, "head");
+    EXPECT_EQ(head.mesh.gltfPath, "");
+    EXPECT_TRUE(head.material.procedural);
+    EXPECT_EQ(head.material.profile, "none");
+    EXPECT_EQ(head.material.albedoMap, "");  // empty stays empty, not the scene directory
+
+    EXPECT_VEC3_EQ(s.background.colour, glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(s.settings.exposure, 1.5f);
+    EXPECT_VEC3_EQ(s.settings.ambient, glm::vec3(0.01f, 0.02f, 0.03f));
+    EXPECT_EQ(s.settings.shadowMapSize, 2048);
+    EXPECT_EQ(s.settings.shadowBiasConstant, 0.001f);
+    EXPECT_EQ(s.settings.shadowBiasSlope, 1.5f);
+    EXPECT_EQ(s.settings.shadowFilter, "poisson");
+}
+
+TEST(SceneLoader, AbsentKeysTakeTheStructDefaults) {
+    const Result<Scene> empty = parseScene("{}", "empty.json");
+    ASSERT_TRUE(empty.ok()) << empty.error().message();
+    Scene expected;
+    expected.path = "empty.json";
+    expectSceneEq(*empty, expected);
+
+    const Result<Scene> minimal = parseScene(
+        R"({"lights": [{}], "characters": [{"mesh": {"procedural": "sphere"}}], "camera": {}, "background": {},
+            "settings": {}})",
+        "minimal.json");
+    ASSERT_TRUE(minimal.ok()) << minimal.error().message();
+    expected.path = "minimal.json";
+    expected.lights.emplace_back();
+    expected.characters.emplace_back();
+    expected.characters[0].mesh.procedural = "sphere";
+    expectSceneEq(*minimal, expected);
+}
+
+TEST(SceneLoader, SceneWithoutCharactersIsValid) {
+    const Result<Scene> scene = parseScene(R"({"characters": [], "lights": []})", "bare.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_TRUE(scene->characters.empty());
+    EXPECT_TRUE(scene->lights.empty());
+}
+
+TEST(SceneLoader, IntegralSettingsAcceptIntegralNumbersOnly) {
+    const Result<Scene> scene = parseScene(R"({"settings": {"shadow_map_size": 512.0}})", "x.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->settings.shadowMapSize, 512);
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 512.5}})"),
+              "/settings/shadow_map_size: expected an integer, got 512.5");
+}
+
+TEST(SceneLoader, LoadsFromDiskAndResolvesPathsFromTheFilesDirectory) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scenes" / "one.json";
+    std::ofstream(file) << withCharacter(R"("mesh": {"gltf": "../meshes/m.glb"}, "material": {"albedo_map": "a.png"})");
+    const Result<Scene> scene = loadScene(file.string());
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->path, file.string());
+    EXPECT_EQ(fs::path(scene->characters[0].mesh.gltfPath), dir.path() / "meshes" / "m.glb");
+    EXPECT_EQ(fs::path(scene->characters[0].material.albedoMap), dir.path() / "scenes" / "a.png");
+}
+
+// The example in the format manual must stay a valid scene.
+TEST(SceneLoader, ManualExampleParses) {
+    const std::string manual = std::string(DERMIS_SOURCE_CONTENT_DIR) + "/scenes/README.md";
+    std::ifstream file(manual);
+    ASSERT_TRUE(file) << manual;
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    const size_t begin = text.find("```json\n");
+    ASSERT_NE(begin, std::string::npos);
+    const size_t end = text.find("```", begin + 8);
+    ASSERT_NE(end, std::string::npos);
+    const Result<Scene> scene = parseScene(text.substr(begin + 8, end - begin - 8), "content/scenes/example.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->lights.size(), 2u);
+    ASSERT_EQ(scene->characters.size(), 2u);
+    EXPECT_EQ(scene->characters[1].mesh.gltfPath, "content/meshes/lee.glb");
+    EXPECT_EQ(scene->characters[1].metresPerUnit, 0.01f);
+}
+
+TEST(SceneWriter, RoundTripReproducesEveryField) {
+    const Result<Scene> original = parseScene(kFullScene, kScenePath);
+    ASSERT_TRUE(original.ok()) << original.error().message();
+    const std::string text = sceneToJson(*original);
+    const Result<Scene> again = parseScene(text, kScenePath);
+    ASSERT_TRUE(again.ok()) << again.error().message() << "\n" << text;
+    expectSceneEq(*original, *again);
+    EXPECT_EQ(sceneToJson(*again), text);  // stable: writing again changes nothing
+    // Paths are written relative to the scene file, as they were read.
+    EXPECT_NE(text.find("\"../meshes/lee.glb\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"maps/normal.png\""), std::string::npos) << text;
+}
+
+TEST(SceneWriter, RoundTripKeepsAwkwardFloatsAndDefaults) {
+    Scene scene;
+    scene.path = "deep/dir/awkward.json";
+    scene.camera.positionM = glm::vec3(1.0f / 3.0f, 1e-7f, -123456.789f);
+    scene.camera.nearM = 0.1f;
+    scene.camera.farM = 3.4e38f;
+    Light light;
+    light.type = LightType::Spot;
+    light.direction = glm::normalize(glm::vec3(0.3f, -0.7f, 0.2f));
+    light.colour = glm::vec3(16777217.0f, 0.1f, 1e-30f);
+    light.spotInnerDeg = 30.0f;
+    light.spotOuterDeg = 30.0f;
+    scene.lights = {light, Light{}};
+    Character character;
+    character.name = "na\"me/with\\odd\tchars \xc3\xa9 [1,  2]\\";
+    character.mesh.gltfPath = "deep/meshes/x.gltf";
+    character.material.normalMap = "/absolute/n.png";
+    character.metresPerUnit = 0.0254f;
+    character.transform.rotationDeg = glm::vec3(-179.99f, 0.001f, 720.0f);
+    scene.characters = {character};
+    scene.settings.shadowMapSize = 64;
+
+    const std::string text = sceneToJson(scene);
+    const Result<Scene> again = parseScene(text, scene.path);
+    ASSERT_TRUE(again.ok()) << again.error().message() << "\n" << text;
+    expectSceneEq(scene, *again);
+    EXPECT_NE(text.find("\"../meshes/x.gltf\""), std::string::npos) << text;
+
+    const Scene defaults;
+    const Result<Scene> defaultsAgain = parseScene(sceneToJson(defaults), "");
+    ASSERT_TRUE(defaultsAgain.ok()) << defaultsAgain.error().message();
+    expectSceneEq(defaults, *defaultsAgain);
+}
+
+TEST(SceneWriter, WritesShortestDecimalsWithTwoSpaceIndent) {
+    const std::string text = sceneToJson(Scene{});
+    EXPECT_NE(text.find("\n  \"camera\": {\n    \"position_m\": ["), std::string::npos) << text;
+    EXPECT_NE(text.find("\"near_m\": 0.05,"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"position_m\": [0.0, 0.0, 1.0],"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.0500000"), std::string::npos) << text;
+}
+
+TEST(SceneLoader, MissingFileNamesTheFile) {
+    const std::string path = "/nonexistent/dermis/missing_scene.json";
+    const Result<Scene> scene = loadScene(path);
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().where, path);
+    EXPECT_EQ(scene.error().what, "cannot open scene file");
+    EXPECT_NE(scene.error().message().find("missing_scene.json"), std::string::npos);
+}
+
+TEST(SceneLoader, MalformedJsonReportsFileLineAndColumn) {
+    TempDir dir;
+    const fs::path file = dir.path() / "broken.json";
+    std::ofstream(file) << "{\n  \"camera\": {\n    \"near_m\": 0.1,\n  }\n}\n";
+    const Result<Scene> scene = loadScene(file.string());
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().where, file.string());
+    EXPECT_NE(scene.error().what.find("line 4, column 3"), std::string::npos) << scene.error().what;
+    EXPECT_EQ(scene.error().what.find("json.exception"), std::string::npos) << scene.error().what;
+    EXPECT_EQ(scene.error().what.find('\n'), std::string::npos);
+
+    EXPECT_EQ(errorOf("{\n  \"camera\": {},\n  \"lights\": [],\n}"),
+              "parse error at line 4, column 1: syntax error while parsing object key - unexpected '}'; "
+              "expected string literal");
+    EXPECT_NE(errorOf("").find("line 1"), std::string::npos);
+    EXPECT_NE(errorOf("{} trailing").find("line 1"), std::string::npos);
+    EXPECT_NE(errorOf("{\"a\": 1 // comment\n}").find("line 1"), std::string::npos);
+}
+
+TEST(SceneLoader, UnknownKeyIsNamedWithTheKnownOnes) {
+    EXPECT_EQ(errorOf(R"({"background": {"colr": [1, 1, 1]}})"),
+              "/background/colr: unknown key \"colr\" (known: colour)");
+    EXPECT_EQ(errorOf(R"({"camra": {}})"),
+              "/camra: unknown key \"camra\" (known: camera, lights, characters, background and settings)");
+    EXPECT_EQ(
+        errorOf(R"({"lights": [{}, {"colour": [1, 1, 1], "power": 2}]})").rfind("/lights/1/power: unknown key", 0), 0u);
+    // Keys with pointer syntax in them are escaped.
+    EXPECT_EQ(errorOf(R"({"a/b~c": 1})").rfind("/a~1b~0c: unknown key \"a/b~c\"", 0), 0u);
+}
+
+TEST(SceneLoader, WrongTypesAreNamed) {
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": "0.1"}})"), "/camera/near_m: expected a number, got a string");
+    EXPECT_EQ(errorOf(R"({"camera": []})"), "/camera: expected an object, got an array");
+    EXPECT_EQ(errorOf(R"({"lights": {}})"), "/lights: expected an array, got an object");
+    EXPECT_EQ(errorOf(R"({"lights": [3]})"), "/lights/0: expected an object, got a number");
+    EXPECT_EQ(errorOf(withLight(R"("shadow": 1)")), "/lights/0/shadow: expected true or false, got a number");
+    EXPECT_EQ(errorOf(withCharacter(R"("name": null, "mesh": {"procedural": "head"})")),
+              "/characters/0/name: expected a string, got null");
+    EXPECT_EQ(errorOf("[]"), "expected an object, got an array");
+}
+
+TEST(SceneLoader, VectorsAreThreeFiniteNumbers) {
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 1]}})"), "/camera/up: expected an array of 3 numbers, got 2 elements");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 1, 0, 0]}})"),
+              "/camera/up: expected an array of 3 numbers, got 4 elements");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, "1", 0]}})"), "/camera/up/1: expected a number, got a string");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": 1}})"), "/camera/up: expected an array of 3 numbers, got a number");
+    EXPECT_EQ(errorOf(R"({"background": {"colour": [0, -0.5, 0]}})"), "/background/colour/1: must be >= 0, got -0.5");
+}
+
+TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
+    const std::string what = errorOf(withLight(R"("type": "laser")"));
+    EXPECT_NE(what.find("/lights/0/type"), std::string::npos);
+    EXPECT_NE(what.find("laser"), std::string::npos);
+    EXPECT_EQ(what, "/lights/0/type: unknown light type \"laser\" (expected directional, spot or point)");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_filter": "pcf"}})"),
+              "/settings/shadow_filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
+}
+
+TEST(SceneLoader, MeshNeedsExactlyOneSource) {
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head", "gltf": "a.glb"})")),
+              "/characters/0/mesh: give exactly one of \"procedural\" and \"gltf\", not both");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {})")).rfind("/characters/0/mesh: missing mesh source", 0), 0u);
+    EXPECT_EQ(errorOf(withCharacter(R"("name": "x")")), "/characters/0: missing required key \"mesh\"");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"gltf": ""})")), "/characters/0/mesh/gltf: must not be empty");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": ""})")),
+              "/characters/0/mesh/procedural: must not be empty");
+}
+
+TEST(SceneLoader, OutOfRangeValuesAreRejected) {
+    EXPECT_EQ(errorOf(withLight(R"("intensity": -1)")), "/lights/0/intensity: must be >= 0, got -1");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 2, "far_m": 2}})"),
+              "/camera/near_m: must be less than far_m (2), got 2");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0.5, "far_m": 0.1}})"),
+              "/camera/near_m: must be less than far_m (0.1), got 0.5");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0}})"), "/camera/near_m: must be > 0, got 0");
+    EXPECT_EQ(errorOf(R"({"camera": {"vertical_fov_deg": 180}})"),
+              "/camera/vertical_fov_deg: must be in (0, 180), got 180");
+    EXPECT_EQ(errorOf(R"({"camera": {"position_m": [1, 2, 3], "target_m": [1, 2, 3]}})")
+                  .rfind("/camera/target_m: must differ from position_m", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"camera": {"position_m": [0, 2, 0], "target_m": [0, 0, 0]}})")
+                  .rfind("/camera/up: must not be parallel", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 0, 0]}})"), "/camera/up: must not be the zero vector");
+    EXPECT_EQ(errorOf(withLight(R"("direction": [0, 0, 0])")), "/lights/0/direction: must not be the zero vector");
+    EXPECT_EQ(errorOf(withLight(R"("spot_inner_deg": 40, "spot_outer_deg": 35)")),
+              "/lights/0/spot_inner_deg: must be <= spot_outer_deg (35), got 40");
+    EXPECT_EQ(errorOf(withLight(R"("spot_outer_deg": 90)")), "/lights/0/spot_outer_deg: must be in [0, 90), got 90");
+    EXPECT_EQ(errorOf(withLight(R"("colour": [1, 1, -1])")), "/lights/0/colour/2: must be >= 0, got -1");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "metres_per_unit": 0)")),
+              "/characters/0/metres_per_unit: must be > 0, got 0");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "transform": {"scale": -1})")),
+              "/characters/0/transform/scale: must be > 0, got -1");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"roughness": 0})")),
+              "/characters/0/material/roughness: must be in (0, 1], got 0");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"rho_s": 1.5})")),
+              "/characters/0/material/rho_s: must be in [0, 1], got 1.5");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"albedo": [0.5, 1.2, 0.5]})")),
+              "/characters/0/material/albedo/1: must be in [0, 1], got 1.2");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": ""})")),
+              "/characters/0/material/profile: must not be empty");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 32}})"),
+              "/settings/shadow_map_size: must be in [64, 8192], got 32");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 10000}})"),
+              "/settings/shadow_map_size: must be in [64, 8192], got 10000");
+    EXPECT_EQ(errorOf(R"({"settings": {"exposure": 0}})"), "/settings/exposure: must be > 0, got 0");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_bias_slope": -0.5}})"),
+              "/settings/shadow_bias_slope: must be >= 0, got -0.5");
+    // A positive value that rounds to 0 as a float is as bad as 0.
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-60}})"), "/camera/near_m: must be > 0, got 1e-60");
+}
+
+TEST(SceneLoader, NumbersMustBeFiniteFloats) {
+    EXPECT_EQ(errorOf(R"({"settings": {"exposure": 1e39}})"),
+              "/settings/exposure: number 1e+39 is out of range for a 32-bit float");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 1e39, 0]}})"),
+              "/camera/up/1: number 1e+39 is out of range for a 32-bit float");
+    EXPECT_EQ(errorOf("{\n\"settings\": {\"exposure\": 1e999}}"), "line 2, column 26: number 1e999 is out of range");
+    EXPECT_NE(errorOf(R"({"settings": {"exposure": NaN}})").find("line 1"), std::string::npos);
+}
+
+TEST(SceneLoader, DuplicateKeysAreErrors) {
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0.1, "near_m": 0.2}})"), "/camera/near_m: duplicate key \"near_m\"");
+    EXPECT_EQ(errorOf(R"({"lights": [{}, {"type": "spot", "type": "point"}]})"),
+              "/lights/1/type: duplicate key \"type\"");
+    EXPECT_EQ(errorOf(R"({"characters": [], "characters": []})"), "/characters: duplicate key \"characters\"");
+}
+
+TEST(SceneLoader, ArraySizesAreCapped) {
+    std::string lights = R"({"lights": [)";
+    for (int i = 0; i < 1024; ++i) {
+        lights += i == 0 ? "{}" : ", {}";
+    }
+    const Result<Scene> atLimit = parseScene(lights + "]}", "x.json");
+    ASSERT_TRUE(atLimit.ok()) << atLimit.error().message();
+    EXPECT_EQ(atLimit->lights.size(), 1024u);
+    EXPECT_EQ(errorOf(lights + ", {}]}"), "/lights: too many lights (1025; at most 1024)");
+}
+
+TEST(SceneLoader, DeepNestingAndHugeInputAreErrorsNotCrashes) {
+    const std::string deep(200000, '[');
+    EXPECT_EQ(errorOf(deep), "JSON nested deeper than 256 levels");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": )" + std::string(300, '[') + std::string(300, ']') + "}}"),
+              "JSON nested deeper than 256 levels");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [[[[[[[[1]]]]]]]]}})"),
+              "/camera/up: expected an array of 3 numbers, got 1 elements");
+    const std::string huge = "{\"characters\": [" + std::string(17u << 20, ' ') + "]}";
+    EXPECT_NE(errorOf(huge).find("the limit is"), std::string::npos);
+}
+
+TEST(SceneLoader, InvalidUtf8AndControlCharactersGiveOneLineMessages) {
+    const std::string what = errorOf("{\"characters\": [{\"name\": \"\xff\xfe\n\"}]}");
+    EXPECT_NE(what.find("line 1"), std::string::npos) << what;
+    for (const char c : what) {
+        EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(static_cast<unsigned char>(c)) << " in " << what;
+    }
+    EXPECT_EQ(errorOf(R"({"x\u000ay": 1})").rfind(R"(/x\u000ay: unknown key "x\u000ay")", 0), 0u);
+}
+
+TEST(SceneLoader, TruncatedFilesNeverCrash) {
+    const std::string full = kFullScene;
+    size_t accepted = 0;
+    for (size_t length = 0; length < full.size(); length += 7) {
+        SCOPED_TRACE("prefix of " + std::to_string(length) + " bytes");
+        expectWellFormedOutcome(full.substr(0, length));
+        accepted += parseScene(full.substr(0, length), "t.json").ok() ? 1 : 0;
+    }
+    EXPECT_EQ(accepted, 0u);  // no proper prefix of an object is a JSON document
+    expectWellFormedOutcome(full);
+}
+
+TEST(SceneLoader, RandomMutationsNeverCrash) {
+    const std::string full = kFullScene;
+    const std::string interesting = "{}[]\",:0123456789.-+eE truefalsnul\\/~\n";
+    std::mt19937 random(20240611u);
+    size_t accepted = 0;
+    for (int mutation = 0; mutation < 200; ++mutation) {
+        std::string text = full;
+        const int edits = 1 + static_cast<int>(random() % 6);
+        for (int e = 0; e < edits && !text.empty(); ++e) {
+            const size_t at = random() % text.size();
+            switch (random() % 5) {
+                case 0: text[at] = interesting[random() % interesting.size()]; break;
+                case 1: text[at] = static_cast<char>(random() & 0xff); break;
+                case 2: text.insert(at, 1, interesting[random() % interesting.size()]); break;
+                case 3: text.erase(at, 1 + random() % 8); break;
+                default: text.insert(at, text.substr(random() % text.size(), random() % 40)); break;
+            }
+        }
+        SCOPED_TRACE("mutation " + std::to_string(mutation));
+        expectWellFormedOutcome(text);
+        accepted += parseScene(text, "m.json").ok() ? 1 : 0;
+    }
+    // Some mutations (inside strings, digits) stay valid: both paths are exercised.
+    EXPECT_GT(accepted, 0u);
+    EXPECT_LT(accepted, 200u);
+}
+
+TEST(SceneTransform, ScalesThenRotatesXThenYThenZThenTranslates) {
+    Transform t;
+    t.translationM = glm::vec3(10.0f, 20.0f, 30.0f);
+    t.rotationDeg = glm::vec3(90.0f, 90.0f, 90.0f);
+    t.scale = 3.0f;
+    // (0,1,0) * 3 * 0.5 = (0,1.5,0); Rx90 -> (0,0,1.5); Ry90 -> (1.5,0,0);
+    // Rz90 -> (0,1.5,0); + translation. Z-first order would give (10,18.5,30).
+    const glm::vec4 p = t.worldFromObject(0.5f) * glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+    EXPECT_VEC3_NEAR(glm::vec3(p), glm::vec3(10.0f, 21.5f, 30.0f), 1e-5);
+    EXPECT_FLOAT_EQ(p.w, 1.0f);
+}
+
+TEST(SceneTransform, EachAxisRotatesRightHanded) {
+    Transform t;
+    t.rotationDeg = glm::vec3(90.0f, 0.0f, 0.0f);
+    EXPECT_VEC3_NEAR(glm::vec3(t.worldFromObject(1.0f) * glm::vec4(0, 1, 0, 1)), glm::vec3(0, 0, 1), 1e-6);
+    t.rotationDeg = glm::vec3(0.0f, 90.0f, 0.0f);
+    EXPECT_VEC3_NEAR(glm::vec3(t.worldFromObject(1.0f) * glm::vec4(0, 0, 1, 1)), glm::vec3(1, 0, 0), 1e-6);
+    t.rotationDeg = glm::vec3(0.0f, 0.0f, 90.0f);
+    EXPECT_VEC3_NEAR(glm::vec3(t.worldFromObject(1.0f) * glm::vec4(1, 0, 0, 1)), glm::vec3(0, 1, 0), 1e-6);
+}
+
+TEST(SceneTransform, TranslationIsNotScaledAndDirectionsIgnoreIt) {
+    Transform t;
+    t.translationM = glm::vec3(1.0f, 2.0f, 3.0f);
+    t.scale = 2.0f;
+    const glm::mat4 m = t.worldFromObject(0.01f);  // centimetre mesh
+    EXPECT_VEC3_NEAR(glm::vec3(m * glm::vec4(100, 0, 0, 1)), glm::vec3(3, 2, 3), 1e-5);
+    EXPECT_VEC3_NEAR(glm::vec3(m * glm::vec4(0, 0, 50, 0)), glm::vec3(0, 0, 1), 1e-6);
+}
+
+}  // namespace
+}  // namespace dermis
