@@ -1,0 +1,531 @@
+#include "scene/GltfLoader.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using namespace dermis;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t chunk = uint32_t(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) chunk |= uint32_t(bytes[i + 1]) << 8;
+        if (i + 2 < bytes.size()) chunk |= bytes[i + 2];
+        out += kAlphabet[(chunk >> 18) & 63];
+        out += kAlphabet[(chunk >> 12) & 63];
+        out += i + 1 < bytes.size() ? kAlphabet[(chunk >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? kAlphabet[chunk & 63] : '=';
+    }
+    return out;
+}
+
+std::vector<unsigned char> readBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeBytes(const fs::path& path, const void* data, size_t size) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+// Builds a small glTF document: one binary buffer, views and accessors added
+// from typed arrays, and whatever meshes/nodes/scenes the test writes into doc.
+struct GltfBuilder {
+    std::vector<unsigned char> bin;
+    json doc = {{"asset", {{"version", "2.0"}}}};
+
+    template <class T>
+    int accessor(const std::vector<T>& values, int componentType, const char* type, size_t count) {
+        while (bin.size() % 4) bin.push_back(0);
+        size_t offset = bin.size();
+        bin.resize(offset + values.size() * sizeof(T));
+        std::memcpy(bin.data() + offset, values.data(), values.size() * sizeof(T));
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+        doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1},
+                                    {"componentType", componentType},
+                                    {"count", count},
+                                    {"type", type}});
+        return static_cast<int>(doc["accessors"].size() - 1);
+    }
+    int vec3(const std::vector<float>& v) { return accessor(v, kFloat, "VEC3", v.size() / 3); }
+    int vec2(const std::vector<float>& v) { return accessor(v, kFloat, "VEC2", v.size() / 2); }
+
+    int imageView(const std::vector<unsigned char>& bytes) {
+        while (bin.size() % 4) bin.push_back(0);
+        size_t offset = bin.size();
+        bin.insert(bin.end(), bytes.begin(), bytes.end());
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}});
+        return static_cast<int>(doc["bufferViews"].size() - 1);
+    }
+
+    void writeGltf(const fs::path& path, const std::string& binName = "") {
+        json out = doc;
+        while (bin.size() % 4) bin.push_back(0);
+        if (binName.empty()) {
+            out["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
+        } else {
+            out["buffers"] = {{{"byteLength", bin.size()}, {"uri", binName}}};
+            writeBytes(path.parent_path() / binName, bin.data(), bin.size());
+        }
+        std::ofstream(path) << out.dump(1);
+    }
+
+    std::vector<unsigned char> glbBytes() {
+        json out = doc;
+        while (bin.size() % 4) bin.push_back(0);
+        out["buffers"] = {{{"byteLength", bin.size()}}};
+        std::string text = out.dump();
+        while (text.size() % 4) text += ' ';
+        std::vector<unsigned char> glb;
+        auto u32 = [&glb](uint32_t v) {
+            for (int i = 0; i < 4; ++i) glb.push_back(static_cast<unsigned char>(v >> (8 * i)));
+        };
+        u32(0x46546C67);
+        u32(2);
+        u32(static_cast<uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
+        u32(static_cast<uint32_t>(text.size()));
+        u32(0x4E4F534A);
+        glb.insert(glb.end(), text.begin(), text.end());
+        u32(static_cast<uint32_t>(bin.size()));
+        u32(0x004E4942);
+        glb.insert(glb.end(), bin.begin(), bin.end());
+        return glb;
+    }
+    void writeGlb(const fs::path& path) {
+        std::vector<unsigned char> glb = glbBytes();
+        writeBytes(path, glb.data(), glb.size());
+    }
+};
+
+// A unit quad in the XY plane facing +Z: u along +X, v = 0 at the top (+Y).
+const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+const std::vector<float> kQuadNormals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+const std::vector<float> kQuadUvs = {0, 1, 1, 1, 1, 0, 0, 0};
+const std::vector<uint32_t> kQuadIndices = {0, 1, 2, 0, 2, 3};
+
+// Adds the quad as mesh 0 (positions and UVs always, normals if asked) with
+// indices of the given component type; returns the builder for more edits.
+GltfBuilder quadBuilder(int indexType, bool withNormals = true) {
+    GltfBuilder b;
+    json attributes = {{"POSITION", b.vec3(kQuadPositions)}, {"TEXCOORD_0", b.vec2(kQuadUvs)}};
+    if (withNormals) attributes["NORMAL"] = b.vec3(kQuadNormals);
+    json primitive = {{"attributes", attributes}};
+    if (indexType == kUnsignedByte)
+        primitive["indices"] = b.accessor(std::vector<uint8_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedByte, "SCALAR", 6);
+    else if (indexType == kUnsignedShort)
+        primitive["indices"] = b.accessor(std::vector<uint16_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedShort, "SCALAR", 6);
+    else if (indexType == kUnsignedInt)
+        primitive["indices"] = b.accessor(kQuadIndices, kUnsignedInt, "SCALAR", 6);
+    b.doc["meshes"] = {{{"name", "quad"}, {"primitives", {primitive}}}};
+    b.doc["nodes"] = {{{"mesh", 0}}};
+    b.doc["scenes"] = {{{"nodes", {0}}}};
+    b.doc["scene"] = 0;
+    return b;
+}
+
+class GltfTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = fs::temp_directory_path() / ("dermis_gltf_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+    }
+    void TearDown() override {
+        std::error_code ignored;
+        fs::remove_all(mDir, ignored);
+    }
+    fs::path path(const std::string& name) const { return mDir / name; }
+
+    // Expects a load error whose message names the file.
+    void expectError(const fs::path& file, const std::string& fragment = "") {
+        Result<Model> model = loadGltf(file.string());
+        ASSERT_FALSE(model) << file;
+        std::string message = model.error().message();
+        EXPECT_NE(message.find(file.filename().string()), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        if (!fragment.empty()) EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    }
+
+    fs::path mDir;
+};
+
+void expectFramesValid(const MeshData& mesh) {
+    for (const Vertex& v : mesh.vertices) {
+        EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+        EXPECT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-4f);
+        EXPECT_LT(std::fabs(glm::dot(v.normal, glm::vec3(v.tangent))), 1e-4f);
+        EXPECT_TRUE(v.tangent.w == 1.0f || v.tangent.w == -1.0f);
+    }
+}
+
+// The normal of each triangle's winding, which must agree with its vertices'.
+void expectWindingMatchesNormals(const MeshData& mesh) {
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        const Vertex& a = mesh.vertices[mesh.indices[i]];
+        const Vertex& b = mesh.vertices[mesh.indices[i + 1]];
+        const Vertex& c = mesh.vertices[mesh.indices[i + 2]];
+        glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
+        EXPECT_GT(glm::dot(face, a.normal), 0.0f) << "triangle " << i / 3;
+    }
+}
+
+}  // namespace
+
+TEST_F(GltfTest, QuadWithEachIndexWidth) {
+    for (int indexType : {kUnsignedByte, kUnsignedShort, kUnsignedInt}) {
+        fs::path file = path("quad" + std::to_string(indexType) + ".gltf");
+        quadBuilder(indexType).writeGltf(file);
+        Result<Model> model = loadGltf(file.string());
+        ASSERT_TRUE(model) << model.error().message();
+        EXPECT_EQ(model->mesh.vertices.size(), 4u);
+        EXPECT_EQ(model->mesh.indices, kQuadIndices);
+        EXPECT_EQ(model->mesh.name, "quad");
+        EXPECT_EQ(model->mesh.vertices[2].uv, glm::vec2(1.0f, 0.0f));
+        EXPECT_TRUE(model->albedoMap.empty());
+        expectFramesValid(model->mesh);
+        // Generated tangents follow +u (+X) with an unmirrored sign.
+        for (const Vertex& v : model->mesh.vertices) EXPECT_EQ(v.tangent, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+    }
+}
+
+TEST_F(GltfTest, NonIndexedPrimitive) {
+    GltfBuilder b;
+    std::vector<float> positions;
+    for (uint32_t index : kQuadIndices)
+        positions.insert(positions.end(), kQuadPositions.begin() + 3 * index, kQuadPositions.begin() + 3 * index + 3);
+    b.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", b.vec3(positions)}}}}}}}};
+    b.doc["nodes"] = {{{"mesh", 0}}};
+    b.writeGltf(path("flat.gltf"));  // no scenes: every root node is loaded
+    Result<Model> model = loadGltf(path("flat.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->mesh.vertices.size(), 6u);
+    EXPECT_EQ(model->mesh.triangleCount(), 2u);
+    EXPECT_EQ(model->mesh.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+    for (const Vertex& v : model->mesh.vertices) EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);  // generated
+    expectFramesValid(model->mesh);
+}
+
+TEST_F(GltfTest, NodeHierarchyTransformsPositions) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    // Parent: translate (10,0,0), scale 2; child: translate (0,1,0) with the mesh.
+    b.doc["nodes"] = {{{"children", {1}}, {"translation", {10, 0, 0}}, {"scale", {2, 2, 2}}},
+                      {{"mesh", 0}, {"translation", {0, 1, 0}}},
+                      {{"mesh", 0}, {"translation", {100, 0, 0}}}};  // not in the scene
+    b.doc["scenes"] = {{{"nodes", {2}}}, {{"nodes", {0}}}};
+    b.doc["scene"] = 1;
+    b.writeGltf(path("tree.gltf"));
+    Result<Model> model = loadGltf(path("tree.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->mesh.triangleCount(), 2u);
+    Bounds bounds = model->mesh.bounds();
+    EXPECT_NEAR(bounds.min.x, 10.0f, 1e-5f);
+    EXPECT_NEAR(bounds.max.x, 12.0f, 1e-5f);
+    EXPECT_NEAR(bounds.min.y, 2.0f, 1e-5f);
+    EXPECT_NEAR(bounds.max.y, 4.0f, 1e-5f);
+    EXPECT_NEAR(bounds.max.z, 0.0f, 1e-5f);
+}
+
+TEST_F(GltfTest, RotationAndMatrixTransformNormalsAndTangents) {
+    GltfBuilder b = quadBuilder(kUnsignedInt);
+    const float s = std::sqrt(0.5f);
+    // Node 0: 90 degrees about +Y, so +Z normals become +X and +X tangents -Z.
+    // Node 1: the same as a column-major matrix, plus translation (0,0,5).
+    b.doc["nodes"] = {{{"mesh", 0}, {"rotation", {0, s, 0, s}}},
+                      {{"mesh", 0}, {"matrix", {0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 5, 1}}}};
+    b.doc["scenes"] = {{{"nodes", {0, 1}}}};
+    b.writeGltf(path("rotated.gltf"));
+    Result<Model> model = loadGltf(path("rotated.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    ASSERT_EQ(model->mesh.vertices.size(), 8u);
+    EXPECT_EQ(model->mesh.triangleCount(), 4u);
+    for (const Vertex& v : model->mesh.vertices) {
+        EXPECT_NEAR(v.normal.x, 1.0f, 1e-5f);
+        EXPECT_NEAR(v.tangent.z, -1.0f, 1e-5f);
+        EXPECT_EQ(v.tangent.w, 1.0f);
+    }
+    EXPECT_NEAR(model->mesh.vertices[4].position.z, 5.0f, 1e-5f);
+    EXPECT_NEAR(model->mesh.vertices[5].position.z, 4.0f, 1e-5f);
+    expectWindingMatchesNormals(model->mesh);
+}
+
+TEST_F(GltfTest, MirroringScaleKeepsWindingAndFrames) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["nodes"] = {{{"mesh", 0}, {"scale", {-1, 1, 1}}}};
+    b.writeGltf(path("mirror.gltf"));
+    Result<Model> model = loadGltf(path("mirror.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    expectWindingMatchesNormals(model->mesh);
+    expectFramesValid(model->mesh);
+    for (const Vertex& v : model->mesh.vertices) {
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
+        EXPECT_NEAR(v.tangent.x, -1.0f, 1e-6f);  // +u now runs along -X: a mirrored frame
+        EXPECT_EQ(v.tangent.w, -1.0f);
+    }
+}
+
+TEST_F(GltfTest, GeneratesMissingNormalsAndTangents) {
+    GltfBuilder b = quadBuilder(kUnsignedByte, false);
+    b.doc["nodes"] = {{{"mesh", 0}, {"scale", {3, 1, 1}}}};
+    b.writeGltf(path("bare.gltf"));
+    Result<Model> model = loadGltf(path("bare.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    expectFramesValid(model->mesh);
+    for (const Vertex& v : model->mesh.vertices) {
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-6f);
+    }
+}
+
+TEST_F(GltfTest, FileTangentsAreKeptAndOrthogonalised) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    // Slightly off the surface, and with w = -1: kept, made orthogonal, sign kept.
+    std::vector<float> tangents = {1, 0, 0.1f, -1, 1, 0, 0.1f, -1, 1, 0, 0.1f, -1, 1, 0, 0.1f, -1};
+    b.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = b.accessor(tangents, kFloat, "VEC4", 4);
+    b.writeGltf(path("tangents.gltf"));
+    Result<Model> model = loadGltf(path("tangents.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    expectFramesValid(model->mesh);
+    for (const Vertex& v : model->mesh.vertices) {
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-6f);
+        EXPECT_EQ(v.tangent.w, -1.0f);
+    }
+}
+
+TEST_F(GltfTest, GlbAndExternalBinLoadTheSameMesh) {
+    quadBuilder(kUnsignedShort).writeGlb(path("quad.glb"));
+    quadBuilder(kUnsignedShort).writeGltf(path("quad.gltf"), "quad data.bin");
+    Result<Model> glb = loadGltf(path("quad.glb").string());
+    Result<Model> gltf = loadGltf(path("quad.gltf").string());
+    ASSERT_TRUE(glb) << glb.error().message();
+    ASSERT_TRUE(gltf) << gltf.error().message();
+    EXPECT_EQ(glb->mesh.indices, kQuadIndices);
+    EXPECT_EQ(gltf->mesh.indices, kQuadIndices);
+    ASSERT_EQ(glb->mesh.vertices.size(), 4u);
+    for (size_t i = 0; i < 4; ++i) EXPECT_EQ(glb->mesh.vertices[i].position, gltf->mesh.vertices[i].position);
+}
+
+TEST_F(GltfTest, StripsFansAndNonTriangles) {
+    GltfBuilder b;
+    int positions = b.vec3(kQuadPositions);
+    int strip = b.accessor(std::vector<uint16_t>{0, 1, 3, 2}, kUnsignedShort, "SCALAR", 4);
+    b.doc["meshes"] = {{{"primitives",
+                         {{{"attributes", {{"POSITION", positions}}}, {"indices", strip}, {"mode", 5}},
+                          {{"attributes", {{"POSITION", positions}}}, {"mode", 6}},
+                          {{"attributes", {{"POSITION", positions}}}, {"mode", 1}}}}}};  // lines: skipped
+    b.doc["nodes"] = {{{"mesh", 0}}};
+    b.writeGltf(path("strips.gltf"));
+    Result<Model> model = loadGltf(path("strips.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->mesh.vertices.size(), 8u);
+    EXPECT_EQ(model->mesh.indices, (std::vector<uint32_t>{0, 1, 3, 1, 2, 3, 5, 6, 4, 6, 7, 4}));
+    expectWindingMatchesNormals(model->mesh);
+}
+
+TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
+    Image pixel;
+    pixel.width = 3;
+    pixel.height = 2;
+    pixel.texels.assign(6, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    ASSERT_TRUE(saveImage(path("albedo.png").string(), pixel));
+    ASSERT_TRUE(saveImage(path("normal map.png").string(), pixel));
+    std::vector<unsigned char> png = readBytes(path("albedo.png"));
+
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    int view = b.imageView(png);
+    b.doc["images"] = {{{"uri", "data:image/png;base64," + base64(png)}},
+                       {{"uri", "normal%20map.png"}},
+                       {{"bufferView", view}, {"mimeType", "image/png"}}};
+    b.doc["textures"] = {{{"source", 0}}, {{"source", 1}}, {{"source", 2}}};
+    b.doc["materials"] = {{{"name", "plain"}},
+                          {{"name", "skin"},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 2}}}}},
+                           {"normalTexture", {{"index", 1}}}}};
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    json second = b.doc["meshes"][0]["primitives"][0];
+    second["material"] = 1;
+    b.doc["meshes"][0]["primitives"].push_back(second);
+    b.writeGltf(path("textured.gltf"));
+
+    Result<Model> model = loadGltf(path("textured.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->mesh.triangleCount(), 4u);
+    for (const Image* map : {&model->albedoMap, &model->normalMap, &model->metallicRoughnessMap}) {
+        EXPECT_EQ(map->width, 3);
+        EXPECT_EQ(map->height, 2);
+        ASSERT_FALSE(map->empty());
+        EXPECT_NEAR(map->texels[0].y, 0.4f, 1.0f / 255.0f);
+    }
+    EXPECT_EQ(model->albedoMap.colourSpace, ColourSpace::Srgb);
+    EXPECT_EQ(model->normalMap.colourSpace, ColourSpace::Linear);
+    EXPECT_EQ(model->metallicRoughnessMap.colourSpace, ColourSpace::Linear);
+
+    fs::remove(path("normal map.png"));
+    expectError(path("textured.gltf"), "normal map.png");
+}
+
+TEST_F(GltfTest, CorruptEmbeddedImageIsAnError) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    int view = b.imageView({0x89, 'P', 'N', 'G', 1, 2, 3, 4});
+    b.doc["images"] = {{{"bufferView", view}, {"mimeType", "image/png"}, {"name", "broken"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    b.writeGlb(path("badimage.glb"));
+    expectError(path("badimage.glb"), "broken");
+}
+
+TEST_F(GltfTest, MissingFilesAndMalformedJson) {
+    expectError(path("absent.gltf"), "not found");
+
+    quadBuilder(kUnsignedShort).writeGltf(path("split.gltf"), "split.bin");
+    fs::remove(path("split.bin"));
+    expectError(path("split.gltf"), "buffer 0 'split.bin' not found");
+
+    std::ofstream(path("broken.gltf")) << R"({"asset": {"version": "2.0"}, "meshes": [ {)";
+    expectError(path("broken.gltf"), "JSON");
+
+    std::ofstream(path("empty.gltf")) << "";
+    expectError(path("empty.gltf"));
+}
+
+TEST_F(GltfTest, TruncatedGlb) {
+    std::vector<unsigned char> glb = quadBuilder(kUnsignedShort).glbBytes();
+    for (size_t size : {glb.size() - 4, glb.size() / 2, size_t(30), size_t(12), size_t(3)}) {
+        fs::path file = path("cut" + std::to_string(size) + ".glb");
+        writeBytes(file, glb.data(), size);
+        expectError(file);
+    }
+    // The header's length agrees with a file whose BIN chunk claims too much.
+    std::vector<unsigned char> lying = glb;
+    size_t jsonLength = lying[12] | lying[13] << 8;
+    lying[20 + jsonLength] += 8;
+    writeBytes(path("lying.glb"), lying.data(), lying.size());
+    expectError(path("lying.glb"), "BIN");
+}
+
+TEST_F(GltfTest, AccessorAndIndexValidation) {
+    {  // count larger than the buffer view holds
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["accessors"][0]["count"] = 5;
+        b.writeGltf(path("overrun.gltf"));
+        expectError(path("overrun.gltf"), "accessor 0");
+    }
+    {  // an enormous count must fail fast, not allocate
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["accessors"][0]["count"] = 4000000000u;
+        b.writeGlb(path("huge.glb"));
+        expectError(path("huge.glb"), "accessor 0");
+    }
+    {  // attribute accessor index out of range
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 42;
+        b.writeGltf(path("noaccessor.gltf"));
+        expectError(path("noaccessor.gltf"), "accessor 42");
+    }
+    {  // index value beyond the vertex count
+        GltfBuilder b;
+        int positions = b.vec3(kQuadPositions);
+        int indices = b.accessor(std::vector<uint32_t>{0, 1, 4}, kUnsignedInt, "SCALAR", 3);
+        b.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}}};
+        b.doc["nodes"] = {{{"mesh", 0}}};
+        b.writeGltf(path("badindex.gltf"));
+        expectError(path("badindex.gltf"), "index 4");
+    }
+    {  // buffer view beyond its buffer
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["bufferViews"][1]["byteOffset"] = 100000;
+        b.writeGltf(path("badview.gltf"));
+        expectError(path("badview.gltf"), "bufferView");
+    }
+    {  // wrong accessor type
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["accessors"][0]["type"] = "VEC2";
+        b.writeGltf(path("badtype.gltf"));
+        expectError(path("badtype.gltf"), "expected VEC3");
+    }
+}
+
+TEST_F(GltfTest, StructuralErrors) {
+    {  // only lines: no triangles at all
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["meshes"][0]["primitives"][0]["mode"] = 1;
+        b.writeGltf(path("lines.gltf"));
+        expectError(path("lines.gltf"), "no triangles");
+    }
+    {  // a node cycle must not hang
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["nodes"] = {{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}};
+        b.writeGltf(path("cycle.gltf"));
+        expectError(path("cycle.gltf"), "node 0");
+    }
+    {  // child index out of range
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["nodes"] = {{{"mesh", 0}, {"children", {7}}}};
+        b.writeGltf(path("child.gltf"));
+        expectError(path("child.gltf"), "node 7");
+    }
+    {  // non-finite transform
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["nodes"] = {{{"mesh", 0}, {"scale", {1e39, 1, 1}}}};
+        b.writeGltf(path("inf.gltf"));
+        expectError(path("inf.gltf"), "node 0");
+    }
+}
+
+TEST(GltfSharedContent, LeePerrySmithHead) {
+    const fs::path dir = fs::path(DERMIS_SHARED_CONTENT_DIR) / "LeePerrySmith";
+    if (!fs::exists(dir / "LeePerrySmith.glb") || !fs::exists(dir / "LeePerrySmith_textured_flipV.glb"))
+        GTEST_SKIP() << "shared content not found in " << dir << " (the LeePerrySmith head scan); skipping";
+
+    Result<Model> plain = loadGltf((dir / "LeePerrySmith.glb").string());
+    ASSERT_TRUE(plain) << plain.error().message();
+    // The README's 9,279 unique vertices is also what the file stores: the
+    // loader keeps glTF vertices as they are.
+    EXPECT_EQ(plain->mesh.vertices.size(), 9279u);
+    EXPECT_EQ(plain->mesh.triangleCount(), 17684u);
+    glm::vec3 size = plain->mesh.bounds().size();
+    EXPECT_NEAR(size.x, 8.6f, 0.1f);
+    EXPECT_NEAR(size.y, 7.9f, 0.1f);
+    EXPECT_NEAR(size.z, 5.2f, 0.1f);
+    EXPECT_TRUE(plain->albedoMap.empty());
+    EXPECT_TRUE(plain->normalMap.empty());
+    expectFramesValid(plain->mesh);
+
+    Result<Model> textured = loadGltf((dir / "LeePerrySmith_textured_flipV.glb").string());
+    ASSERT_TRUE(textured) << textured.error().message();
+    EXPECT_EQ(textured->mesh.vertices.size(), 9279u);
+    EXPECT_EQ(textured->mesh.triangleCount(), 17684u);
+    EXPECT_EQ(textured->albedoMap.width, 1024);
+    EXPECT_EQ(textured->albedoMap.height, 1024);
+    EXPECT_EQ(textured->albedoMap.colourSpace, ColourSpace::Srgb);
+    EXPECT_EQ(textured->normalMap.width, 1024);
+    EXPECT_EQ(textured->normalMap.height, 1024);
+    EXPECT_EQ(textured->normalMap.colourSpace, ColourSpace::Linear);
+    EXPECT_TRUE(textured->metallicRoughnessMap.empty());
+    expectFramesValid(textured->mesh);
+
+    // With the V flip, the scan's UV mapping is unmirrored almost everywhere.
+    size_t positive = 0;
+    for (const Vertex& v : textured->mesh.vertices) positive += v.tangent.w > 0.0f ? 1 : 0;
+    EXPECT_GT(positive, textured->mesh.vertices.size() * 9 / 10);
+}
