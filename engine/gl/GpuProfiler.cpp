@@ -21,6 +21,26 @@ GLuint GpuProfiler::newQuery() {
 }
 
 void GpuProfiler::beginFrame(uint64_t frame) {
+    if (mAllQueries.empty()) {
+        // llvmpipe reports a time since some epoch (~17 minutes) for the first
+        // GL_TIME_ELAPSED query that contains rendering; spend that one on a
+        // 1x1 clear so no pass inherits it.
+        GLint previousFramebuffer = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+        Texture texture = createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(texture.get(), 1, GL_RGBA8, 1, 1);
+        Framebuffer framebuffer = createFramebuffer();
+        glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, texture.get(), 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+        const GLuint warmUp = newQuery();
+        glBeginQuery(GL_TIME_ELAPSED, warmUp);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ignored = 0;
+        glGetQueryObjectui64v(warmUp, GL_QUERY_RESULT, &ignored);
+        mFreeQueries.push_back(warmUp);
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+    }
     mFrame = frame;
     collect(false);
 }

@@ -31,8 +31,14 @@ std::string describeCull(const graph::PassReport& report) {
 
 void FrameTimings::addPassReports(const std::vector<graph::PassReport>& reports) {
     for (const graph::PassReport& report : reports) {
-        if (mLastReport.find(report.name) == mLastReport.end()) mOrder.push_back(report.name);
-        mLastReport[report.name] = report;
+        if (mRecords.find(report.name) == mRecords.end()) mOrder.push_back(report.name);
+        PassRecord& record = mRecords[report.name];
+        ++record.declared;
+        if (report.executed) {
+            ++record.executed;
+        } else {
+            record.lastCull = describeCull(report);
+        }
     }
 }
 
@@ -48,11 +54,13 @@ void FrameTimings::addTimings(const std::vector<gl::PassTiming>& timings) {
 std::vector<PassSummary> FrameTimings::summary() const {
     std::vector<PassSummary> out;
     for (const std::string& name : mOrder) {
-        const graph::PassReport& report = mLastReport.at(name);
+        const PassRecord& record = mRecords.at(name);
         PassSummary s;
         s.name = name;
-        s.executed = report.executed;
-        s.culledBecause = describeCull(report);
+        s.executed = record.executed > 0;
+        s.executedFrames = record.executed;
+        s.frames = record.declared;
+        s.culledBecause = record.lastCull;
         if (auto it = mGpu.find(name); it != mGpu.end()) {
             s.gpuMs = median(it->second);
             s.samples = it->second.size();
@@ -89,6 +97,7 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
         nlohmann::ordered_json p;
         p["name"] = s.name;
         p["executed"] = s.executed;
+        p["executed_frames"] = s.executedFrames;
         p["culled_because"] = s.culledBecause;
         p["gpu_ms"] = s.gpuMs;
         p["cpu_ms"] = s.cpuMs;
@@ -108,7 +117,10 @@ std::string FrameTimings::toTable(const RunInfo& info) const {
     std::snprintf(line, sizeof line, "%-28s %10s %10s  %s\n", "pass", "gpu ms", "cpu ms", "");
     out += line;
     for (const PassSummary& s : summary()) {
-        if (s.executed) {
+        if (s.executed && s.executedFrames < s.frames) {
+            std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f  ran in %zu of %zu frames, then %s\n", s.name.c_str(),
+                          s.gpuMs, s.cpuMs, s.executedFrames, s.frames, s.culledBecause.c_str());
+        } else if (s.executed) {
             std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f\n", s.name.c_str(), s.gpuMs, s.cpuMs);
         } else {
             std::snprintf(line, sizeof line, "%-28s %10s %10s  culled: %s\n", s.name.c_str(), "-", "-",

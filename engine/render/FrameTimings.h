@@ -6,10 +6,14 @@
 // JSON layout:
 // { "renderer": "...", "backend": "...", "gl_version": "...", "width": W, "height": H,
 //   "frames": N, "scene": "...",
-//   "passes": [ {"name": "...", "executed": true, "culled_because": "", "gpu_ms": 1.2, "cpu_ms": 0.1}, ... ],
+//   "passes": [ {"name": "...", "executed": true, "executed_frames": 10, "culled_because": "",
+//                "gpu_ms": 1.2, "cpu_ms": 0.1}, ... ],
 //   "frame": {"gpu_ms": ..., "cpu_ms": ..., "wall_ms": ...} }
-// gpu_ms and cpu_ms are medians over the frames in which the pass ran (0 if
-// it never ran); the frame figures are medians of per-frame sums.
+// `executed` is true when the pass ran in at least one frame; a cached pass
+// (a shadow map) runs in the first frame only. `culled_because` says why it
+// was culled in the last frame it did not run. gpu_ms and cpu_ms are medians
+// over the frames in which the pass ran (0 if it never ran); the frame
+// figures are medians of per-frame sums.
 
 #include "core/Result.h"
 #include "gl/GpuProfiler.h"
@@ -23,8 +27,10 @@ namespace dermis {
 
 struct PassSummary {
     std::string name;
-    bool executed = false;
-    std::string culledBecause;  // empty when executed
+    bool executed = false;      // in at least one frame
+    size_t executedFrames = 0;
+    size_t frames = 0;          // frames in which the pass was declared
+    std::string culledBecause;  // why it was culled when it last was; empty if never
     double gpuMs = 0.0;
     double cpuMs = 0.0;
     size_t samples = 0;
@@ -59,7 +65,12 @@ public:
 
 private:
     std::vector<std::string> mOrder;  // pass names in declaration order, as first seen
-    std::map<std::string, graph::PassReport> mLastReport;
+    struct PassRecord {
+        size_t declared = 0;
+        size_t executed = 0;
+        std::string lastCull;
+    };
+    std::map<std::string, PassRecord> mRecords;
     std::map<std::string, std::vector<double>> mGpu;
     std::map<std::string, std::vector<double>> mCpu;
     std::map<uint64_t, double> mFrameGpu;

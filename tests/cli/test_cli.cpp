@@ -1,0 +1,179 @@
+// `dermis` as a user runs it: good runs write what they promise; bad input
+// gives one clear line naming the file and the problem, a non-zero exit, no
+// crash and no partial output.
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+using dermis::test::ProcessResult;
+using dermis::test::runProcess;
+using dermis::test::TempDir;
+
+namespace {
+
+const std::string kDermis = DERMIS_BINARY;
+
+std::string defaultScene() { return dermis::test::contentDir() + "/scenes/default.json"; }
+
+// The error output is one "error: ..." line (progress lines aside).
+std::string errorLine(const ProcessResult& r) {
+    std::string found;
+    size_t start = 0;
+    while (start < r.err.size()) {
+        size_t end = r.err.find('\n', start);
+        if (end == std::string::npos) end = r.err.size();
+        const std::string line = r.err.substr(start, end - start);
+        if (line.rfind("error: ", 0) == 0) {
+            EXPECT_TRUE(found.empty()) << "more than one error line:\n" << r.err;
+            found = line;
+        }
+        start = end + 1;
+    }
+    return found;
+}
+
+void expectCleanFailure(const ProcessResult& r, const std::string& outFile, const std::vector<std::string>& mentions) {
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_LT(r.exitCode, 128) << "crashed (signal " << r.exitCode - 128 << ")\n" << r.err;
+    const std::string line = errorLine(r);
+    EXPECT_FALSE(line.empty()) << "no error line:\n" << r.err;
+    for (const std::string& m : mentions) EXPECT_NE(line.find(m), std::string::npos) << "'" << m << "' missing from: " << line;
+    EXPECT_FALSE(std::filesystem::exists(outFile)) << "a partial output file was left behind";
+}
+
+}  // namespace
+
+TEST(Cli, RenderWritesPngAndTimingsWithEveryPass) {
+    TempDir dir;
+    const ProcessResult r = runProcess(kDermis + " render " + defaultScene() + " --size 160x90 --frames 2 --out " +
+                                       dir.file("x.png") + " --timings " + dir.file("t.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("x.png")));
+    const auto timings = nlohmann::json::parse(dermis::test::readTextFile(dir.file("t.json")));
+    EXPECT_FALSE(timings["renderer"].get<std::string>().empty());
+    EXPECT_FALSE(timings["backend"].get<std::string>().empty());
+    ASSERT_GE(timings["passes"].size(), 4u);
+    for (const auto& pass : timings["passes"]) {
+        EXPECT_TRUE(pass["name"].is_string());
+        EXPECT_TRUE(pass["executed"].is_boolean());
+        EXPECT_TRUE(pass["gpu_ms"].is_number());
+        EXPECT_TRUE(pass["cpu_ms"].is_number());
+    }
+    EXPECT_TRUE(timings["frame"]["gpu_ms"].is_number());
+    EXPECT_TRUE(timings["frame"]["cpu_ms"].is_number());
+    // The table is printed on stdout.
+    EXPECT_NE(r.out.find("gbuffer"), std::string::npos);
+    EXPECT_NE(r.out.find("frame"), std::string::npos);
+}
+
+TEST(Cli, ExrAovIsWritten) {
+    TempDir dir;
+    const ProcessResult r = runProcess(kDermis + " render " + defaultScene() + " --size 64x36 --frames 1 --aov depth --out " +
+                                       dir.file("d.exr") + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("d.exr")));
+}
+
+TEST(Cli, OsMesaBackendRenders) {
+    TempDir dir;
+    const ProcessResult r = runProcess(kDermis + " render " + defaultScene() +
+                                       " --size 64x36 --frames 1 --backend osmesa --out " + dir.file("o.png") +
+                                       " --timings " + dir.file("t.json") + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto timings = nlohmann::json::parse(dermis::test::readTextFile(dir.file("t.json")));
+    EXPECT_EQ(timings["backend"], "osmesa");
+}
+
+TEST(Cli, HelpDocumentsEveryFlag) {
+    const ProcessResult r = runProcess(kDermis + " render --help");
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* flag : {"--size", "--frames", "--out", "--aov", "--timings", "--backend", "--gl-debug", "--quiet"}) {
+        EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+    }
+    for (const char* aov : {"final", "albedo", "normal", "depth", "diffuse", "specular"}) {
+        EXPECT_NE(r.out.find(aov), std::string::npos) << aov;
+    }
+    const ProcessResult top = runProcess(kDermis + " --help");
+    EXPECT_EQ(top.exitCode, 0);
+    EXPECT_NE(top.out.find("render"), std::string::npos);
+}
+
+TEST(Cli, MissingSceneFails) {
+    TempDir dir;
+    const std::string scene = dir.file("no-such-scene.json");
+    expectCleanFailure(runProcess(kDermis + " render " + scene + " --out " + dir.file("x.png")), dir.file("x.png"),
+                       {"no-such-scene.json"});
+}
+
+TEST(Cli, MalformedJsonFails) {
+    TempDir dir;
+    dermis::test::writeTextFile(dir.file("bad.json"), "{ \"camera\": { \"vertical_fov_deg\": 30, }");
+    expectCleanFailure(runProcess(kDermis + " render " + dir.file("bad.json") + " --out " + dir.file("x.png")),
+                       dir.file("x.png"), {"bad.json"});
+}
+
+TEST(Cli, UnknownFieldValueFails) {
+    TempDir dir;
+    dermis::test::writeTextFile(dir.file("laser.json"), R"({"lights": [{"type": "laser"}]})");
+    expectCleanFailure(runProcess(kDermis + " render " + dir.file("laser.json") + " --out " + dir.file("x.png")),
+                       dir.file("x.png"), {"laser.json", "laser", "/lights/0/type"});
+}
+
+TEST(Cli, GltfWithMissingBufferFails) {
+    TempDir dir;
+    dermis::test::writeTextFile(dir.file("mesh.gltf"), R"({
+      "asset": {"version": "2.0"},
+      "buffers": [{"uri": "missing.bin", "byteLength": 36}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                     "min": [0, 0, 0], "max": [1, 1, 0]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})");
+    dermis::test::writeTextFile(dir.file("scene.json"),
+                                R"({"characters": [{"name": "m", "mesh": {"gltf": "mesh.gltf"}}]})");
+    expectCleanFailure(runProcess(kDermis + " render " + dir.file("scene.json") + " --out " + dir.file("x.png")),
+                       dir.file("x.png"), {"mesh.gltf", "missing.bin"});
+}
+
+TEST(Cli, TruncatedImageFails) {
+    TempDir dir;
+    // A valid PNG written by dermis itself, then cut in half.
+    const ProcessResult ok = runProcess(kDermis + " render " + defaultScene() + " --size 32x32 --frames 1 --quiet --out " +
+                                        dir.file("full.png"));
+    ASSERT_EQ(ok.exitCode, 0) << ok.err;
+    const std::string png = dermis::test::readTextFile(dir.file("full.png"));
+    dermis::test::writeTextFile(dir.file("cut.png"), png.substr(0, png.size() / 2));
+    dermis::test::writeTextFile(dir.file("scene.json"),
+                                R"({"characters": [{"name": "p", "mesh": {"procedural": "plane"},
+                                    "material": {"albedo_map": "cut.png"}}]})");
+    expectCleanFailure(runProcess(kDermis + " render " + dir.file("scene.json") + " --out " + dir.file("x.png")),
+                       dir.file("x.png"), {"cut.png"});
+}
+
+TEST(Cli, ZeroAndHugeSizesFail) {
+    TempDir dir;
+    for (const char* size : {"0x0", "100000x100000", "640", "-5x10", "axb"}) {
+        const ProcessResult r =
+            runProcess(kDermis + " render " + defaultScene() + " --size " + size + " --out " + dir.file("x.png"));
+        expectCleanFailure(r, dir.file("x.png"), {"--size"});
+        EXPECT_EQ(r.exitCode, 2) << size;
+    }
+}
+
+TEST(Cli, UnknownOptionAndCommandFail) {
+    TempDir dir;
+    expectCleanFailure(runProcess(kDermis + " render " + defaultScene() + " --colour red --out " + dir.file("x.png")),
+                       dir.file("x.png"), {"--colour"});
+    const ProcessResult r = runProcess(kDermis + " paint");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("paint"), std::string::npos);
+}
+
+TEST(Cli, UnsupportedOutputExtensionFails) {
+    TempDir dir;
+    expectCleanFailure(runProcess(kDermis + " render " + defaultScene() + " --out " + dir.file("x.bmp")),
+                       dir.file("x.bmp"), {"x.bmp"});
+}

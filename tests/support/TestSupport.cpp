@@ -1,0 +1,53 @@
+#include "TestSupport.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace dermis::test {
+
+TempDir::TempDir() {
+    static std::atomic<int> counter{0};
+    mPath = std::filesystem::temp_directory_path() /
+            ("dermis-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::remove_all(mPath);
+    std::filesystem::create_directories(mPath);
+}
+
+TempDir::~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(mPath, ec);
+}
+
+ProcessResult runProcess(const std::string& command) {
+    TempDir dir;
+    const std::string outFile = dir.file("stdout");
+    const std::string errFile = dir.file("stderr");
+    const int status = std::system((command + " >" + outFile + " 2>" + errFile + " </dev/null").c_str());
+    ProcessResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = readTextFile(outFile);
+    result.err = readTextFile(errFile);
+    return result;
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string contentDir() { return DERMIS_SOURCE_CONTENT_DIR; }
+std::string sharedContentDir() { return DERMIS_SHARED_CONTENT_DIR; }
+
+}  // namespace dermis::test

@@ -1,0 +1,38 @@
+#pragma once
+// Shared helpers for the GL and command-line tests.
+
+#include <filesystem>
+#include <string>
+
+namespace dermis::test {
+
+// A fresh, empty directory under the system temp dir, removed on destruction.
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return mPath; }
+    std::string file(const std::string& name) const { return (mPath / name).string(); }
+
+private:
+    std::filesystem::path mPath;
+};
+
+struct ProcessResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs `command` through /bin/sh with stdout and stderr captured.
+ProcessResult runProcess(const std::string& command);
+
+void writeTextFile(const std::string& path, const std::string& text);
+std::string readTextFile(const std::string& path);
+
+std::string contentDir();  // the project's content/
+std::string sharedContentDir();  // ../shared/content (may not exist)
+
+}  // namespace dermis::test
