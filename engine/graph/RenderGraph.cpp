@@ -38,6 +38,16 @@ TextureHandle PassBuilder::write(TextureHandle texture) {
     return TextureHandle{version};
 }
 
+void PassBuilder::passThrough(TextureHandle output, TextureHandle input) {
+    if (!mGraph.checkHandle(output, "pass through") || !mGraph.checkHandle(input, "pass through")) return;
+    auto& version = mGraph.mVersions[output.version];
+    if (version.writer != mPass || version.previous != RenderGraph::kNone) {
+        mGraph.mErrors.push_back(makeError(mGraph.mPasses[mPass].name, "passThrough() needs a texture this pass creates"));
+        return;
+    }
+    version.passThrough = input.version;
+}
+
 void PassBuilder::sideEffect() { mGraph.mPasses[mPass].sideEffect = true; }
 
 void PassBuilder::skipIf(bool skip, const std::string& reason) {
@@ -55,11 +65,11 @@ const TextureDesc& PassBuilder::desc(TextureHandle texture) const {
 // ---- PassResources ---------------------------------------------------------
 
 BackendTexture PassResources::texture(TextureHandle texture) const {
-    return mGraph.mResources[mGraph.mVersions.at(texture.version).resource].texture;
+    return mGraph.mResources[mGraph.mVersions.at(mGraph.resolve(texture.version)).resource].texture;
 }
 
 const TextureDesc& PassResources::desc(TextureHandle texture) const {
-    return mGraph.mResources[mGraph.mVersions.at(texture.version).resource].desc;
+    return mGraph.mResources[mGraph.mVersions.at(mGraph.resolve(texture.version)).resource].desc;
 }
 
 // ---- RenderGraph -----------------------------------------------------------
@@ -139,6 +149,8 @@ void RenderGraph::applyPredicates() {
                 version.produced = true;
             } else if (version.previous != kNone) {
                 version.aliasOf = version.previous;  // contents stay as they were
+            } else if (version.passThrough != kNone && mVersions[resolve(version.passThrough)].produced) {
+                version.aliasOf = version.passThrough;
             }
         }
     }

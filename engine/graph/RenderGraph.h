@@ -7,8 +7,10 @@
 //
 //  1. Scene predicates. A pass whose setup called skipIf(true, why) is
 //     culled. Its writes to existing textures fall back to the previous
-//     version (so a cached shadow map keeps its contents), and textures it
-//     would have created do not exist: any pass that reads them is culled too.
+//     version (so a cached shadow map keeps its contents). A texture it would
+//     have created falls back to the input it named with passThrough() (a
+//     skipped blur "returns" its input), and otherwise does not exist: any
+//     pass that reads it is culled too, with the same fall-backs.
 //  2. Reference counts. Each texture version counts its readers; outputs
 //     marked with markOutput() count one extra. A pass none of whose written
 //     versions are read, and that has no side effect, is culled, and the
@@ -63,6 +65,9 @@ public:
     TextureHandle create(const std::string& name, const TextureDesc& desc);  // created and written by this pass
     TextureHandle read(TextureHandle texture);
     TextureHandle write(TextureHandle texture);  // returns the new version
+    // If this pass is culled before it runs (its predicate, or a missing
+    // input), readers of `output` (created here) read `input` instead.
+    void passThrough(TextureHandle output, TextureHandle input);
     void sideEffect();                            // never cull by reference count
     void skipIf(bool skip, const std::string& reason);
     const TextureDesc& desc(TextureHandle texture) const;
@@ -161,6 +166,7 @@ private:
         uint32_t writer = kNone;     // pass index; kNone for an import
         uint32_t previous = kNone;   // the version this write replaced
         uint32_t aliasOf = kNone;    // set when its writer was skipped
+        uint32_t passThrough = kNone;  // what a created version falls back to
         bool produced = false;       // an import, or written by a surviving pass
         uint32_t readers = 0;
         bool output = false;

@@ -250,3 +250,57 @@ TEST(RenderGraph, WritingAnOldVersionIsAnError) {
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().message().find("old version"), std::string::npos);
 }
+
+TEST(RenderGraph, SkippedChainPassesItsInputThrough) {
+    // irradiance -> [blur h -> blur v] x 2 -> composite. The first blur is
+    // skipped (too narrow to matter): the second reads the irradiance; with
+    // both skipped, composite reads the irradiance directly.
+    for (int skipped = 0; skipped <= 2; ++skipped) {
+        RenderGraph graph;
+        const One& lit = graph.addPass<One>(
+            "lighting", [](PassBuilder& b, One& d) { d.out = b.create("irradiance", kColour); },
+            [](const PassResources&, const One&) {});
+        TextureHandle current = lit.out;
+        for (int g = 0; g < 2; ++g) {
+            const bool skip = g < skipped;
+            const ReadWrite& h = graph.addPass<ReadWrite>(
+                "h" + std::to_string(g),
+                [&](PassBuilder& b, ReadWrite& d) {
+                    d.in = b.read(current);
+                    d.out = b.create("tmp" + std::to_string(g), kColour);
+                    b.skipIf(skip, "narrower than a pixel");
+                },
+                [](const PassResources&, const ReadWrite&) {});
+            const ReadWrite& v = graph.addPass<ReadWrite>(
+                "v" + std::to_string(g),
+                [&](PassBuilder& b, ReadWrite& d) {
+                    d.in = b.read(h.out);
+                    d.out = b.create("blurred" + std::to_string(g), kColour);
+                    b.passThrough(d.out, current);
+                },
+                [](const PassResources&, const ReadWrite&) {});
+            current = v.out;
+        }
+        BackendTexture seen = 0;
+        const ReadWrite& composite = graph.addPass<ReadWrite>(
+            "composite",
+            [&](PassBuilder& b, ReadWrite& d) {
+                d.in = b.read(current);
+                d.out = b.create("final", kColour);
+            },
+            [&](const PassResources& r, const ReadWrite& d) { seen = r.texture(d.in); });
+        graph.markOutput(composite.out);
+        ASSERT_TRUE(graph.compile().ok());
+        TestBackend backend;
+        graph.execute(backend);
+        EXPECT_TRUE(graph.wasExecuted("composite")) << skipped;
+        EXPECT_EQ(graph.wasExecuted("h0"), skipped < 1);
+        EXPECT_EQ(graph.wasExecuted("v0"), skipped < 1);
+        EXPECT_EQ(graph.wasExecuted("h1"), skipped < 2);
+        EXPECT_EQ(graph.wasExecuted("v1"), skipped < 2);
+        EXPECT_NE(seen, 0u);
+        if (skipped == 2) {
+            EXPECT_EQ(backend.executedPasses, (std::vector<std::string>{"lighting", "composite"}));
+        }
+    }
+}
