@@ -36,7 +36,7 @@ std::string condense(const std::string& message, const char* fallback) {
         } else {
             if (pendingSpace) line += ' ';
             pendingSpace = false;
-            line += c;
+            line += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
         }
     }
     while (!line.empty() && line.back() == ';') line.pop_back();
@@ -163,7 +163,8 @@ Status writeFile(const std::string& path, const std::string& extension, const Im
 Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels) {
     std::error_code error;
     if (!fs::exists(path, error)) return makeError(path, "file not found");
-    if (fs::is_directory(path, error)) return makeError(path, "is a directory, not an image");
+    // Devices and pipes could make a format probe read forever.
+    if (!fs::is_regular_file(path, error)) return makeError(path, "not a regular file");
 
     const OIIO::ImageSpec config = readConfig();
     std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);

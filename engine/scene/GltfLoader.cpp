@@ -39,6 +39,7 @@ constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr uint32_t kGlbJsonChunk = 0x4E4F534A;  // "JSON"
 constexpr size_t kGlbHeaderBytes = 12;
 constexpr size_t kGlbChunkHeaderBytes = 8;
+constexpr size_t kMaxMessageLength = 300;
 
 std::string oneLine(const std::string& text) {
     std::string line;
@@ -46,10 +47,13 @@ std::string oneLine(const std::string& text) {
         if (c == '\n' || c == '\r') {
             if (!line.empty() && line.back() != ';' && line.back() != ' ') line += "; ";
         } else {
-            line += c;
+            // Parser messages can quote raw bytes of a corrupt file.
+            line += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
         }
     }
     while (!line.empty() && (line.back() == ' ' || line.back() == ';')) line.pop_back();
+    // Parser messages quote the input, which may be a megabyte data URI.
+    if (line.size() > kMaxMessageLength) line = line.substr(0, kMaxMessageLength) + "...";
     return line;
 }
 

@@ -168,6 +168,8 @@ TEST_F(ImageTest, GarbageAndMissingFilesAreErrors) {
     Result<Image> missing = loadImage(path("nope.png"), ColourSpace::Linear);
     ASSERT_FALSE(missing);
     EXPECT_EQ(missing.error().where, path("nope.png"));
+
+    EXPECT_FALSE(loadImage(mDir.string(), ColourSpace::Linear));  // a directory
 }
 
 TEST_F(ImageTest, OversizedImageIsRefused) {
