@@ -2,6 +2,7 @@
 // `dermis render --aov`. The AOV id is uFrame.shading.w (render/Aov.h).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
+#include "EnergyConservation.glsl"
 
 #define AOV_ALBEDO 1
 #define AOV_NORMAL 2
@@ -9,31 +10,39 @@
 #define AOV_DIFFUSE 4
 #define AOV_SPECULAR 5
 #define AOV_IRRADIANCE 6
+#define AOV_AO 7
+#define AOV_TRANSMITTANCE 8
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
-layout(binding = 2) uniform sampler2D uNormalMaterial;
-layout(binding = 3) uniform sampler2D uIrradiance;
-layout(binding = 4) uniform sampler2D uSpecular;
+layout(binding = 2) uniform sampler2D uDiffuse;      // SSS-accumulated irradiance (diffuse AOV)
+layout(binding = 3) uniform sampler2D uSpecular;
+layout(binding = 4) uniform sampler2D uNormalMaterial;
+layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO or transmittance: the AOV itself
+layout(binding = 15) uniform sampler2D uEnergy;
 
 in vec2 vUv;
 layout(location = 0) out vec4 oValue;
 
+#include "OutgoingDiffuse.glsl"
+
 void main() {
     int aov = int(uFrame.shading.w);
-    float depth = texture(uDepth, vUv).r;
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(uDepth, pixel, 0).r;
     bool background = depth >= 1.0;
     vec3 value = vec3(0.0);
     if (aov == AOV_DEPTH) {
         // Linear view depth in metres; the far plane for the background.
         value = vec3(background ? uFrame.depthRangeM.y : -viewPositionFromDepth(vUv, depth, uFrame.viewFromClip).z);
+    } else if (aov == AOV_AO) {
+        value = vec3(background ? 1.0 : texture(uComponent, vUv).r);
     } else if (!background) {
-        if (aov == AOV_ALBEDO) value = texture(uAlbedo, vUv).rgb;
-        else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texture(uNormalMaterial, vUv).xy);
-        else if (aov == AOV_IRRADIANCE) value = texture(uIrradiance, vUv).rgb;
-        else if (aov == AOV_DIFFUSE)
-            value = texture(uIrradiance, vUv).rgb * pow(texture(uAlbedo, vUv).rgb, vec3(1.0 - uFrame.shading.y));
-        else if (aov == AOV_SPECULAR) value = texture(uSpecular, vUv).rgb;
+        if (aov == AOV_ALBEDO) value = texelFetch(uAlbedo, pixel, 0).rgb;
+        else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
+        else if (aov == AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
+        else if (aov == AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
+        else value = texture(uComponent, vUv).rgb;  // irradiance, transmittance (1x1 when culled)
     }
     oValue = vec4(value, background ? 0.0 : 1.0);
 }

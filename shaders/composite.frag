@@ -1,22 +1,29 @@
-// Composite (DESIGN.md pass 6): diffuse = irradiance x albedo^(1 - mix),
-// plus specular; background where nothing was drawn. Linear HDR out.
+// Composite (DESIGN.md pass 6): diffuse = SSS-accumulated irradiance x
+// albedo^(1 - mix) x the energy the specular lobe lets out towards the viewer,
+// 1 - rho_s rho_dt(N.V, m) (seed 000 §2.6), plus specular; the background
+// where nothing was drawn. Linear HDR out.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
+#include "EnergyConservation.glsl"
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
-layout(binding = 2) uniform sampler2D uIrradiance;
+layout(binding = 2) uniform sampler2D uDiffuse;
 layout(binding = 3) uniform sampler2D uSpecular;
+layout(binding = 4) uniform sampler2D uNormalMaterial;
+layout(binding = 15) uniform sampler2D uEnergy;
 
 in vec2 vUv;
 layout(location = 0) out vec4 oColour;
 
+#include "OutgoingDiffuse.glsl"
+
 void main() {
-    if (texture(uDepth, vUv).r >= 1.0) {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(uDepth, pixel, 0).r;
+    if (depth >= 1.0) {
         oColour = vec4(uFrame.background.rgb, 1.0);
         return;
     }
-    vec3 albedo = texture(uAlbedo, vUv).rgb;
-    vec3 diffuse = texture(uIrradiance, vUv).rgb * pow(albedo, vec3(1.0 - uFrame.shading.y));
-    oColour = vec4(sanitizeColour(diffuse + texture(uSpecular, vUv).rgb), 1.0);
+    oColour = vec4(sanitizeColour(outgoingDiffuse(pixel, depth) + texelFetch(uSpecular, pixel, 0).rgb), 1.0);
 }

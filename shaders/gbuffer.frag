@@ -1,7 +1,9 @@
 // G-buffer layout (DESIGN.md, "The frame"):
-//   depth/stencil  D24S8; stencil = SSS profile id (0 = opaque), for the blurs
-//   target 0       RGBA8 sRGB: albedo (linear after decode), a = profile id / 255
+//   depth/stencil  D24S8; stencil = SSS profile slot (0 = opaque), for the blurs
+//   target 0       RGBA8 sRGB: albedo (linear after decode), a = object id / 255
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s
+//   target 2       R32F: view depth (m) + profile slot x DERMIS_PROFILE_KEY_STRIDE_M,
+//                  the key depth-aware blurs compare (see UniformBlocks.glsl)
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 
@@ -14,6 +16,9 @@ in vec2 vUv;
 
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
+layout(location = 2) out float oDepthKey;
+
+in vec3 vViewPositionM;
 
 void main() {
     vec3 albedo = uObject.albedoRoughness.rgb;
@@ -31,4 +36,7 @@ void main() {
 
     oAlbedo = vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0);
     oNormalMaterial = vec4(encodeNormal(N), uObject.albedoRoughness.w, uObject.material.x);
+    int objectId = int(uObject.material.y + 0.5);
+    float slot = uCharacters.characters[objectId].params.x;
+    oDepthKey = -vViewPositionM.z + slot * DERMIS_PROFILE_KEY_STRIDE_M;
 }

@@ -9,6 +9,7 @@ layout(location = 3) in vec2 aUv;
 out vec3 vViewNormal;
 out vec4 vViewTangent;  // xyz tangent, w bitangent sign
 out vec2 vUv;
+out vec3 vViewPositionM;
 
 void main() {
     vec4 worldPosition = uObject.worldFromObject * vec4(aPosition, 1.0);
@@ -16,5 +17,6 @@ void main() {
     vViewNormal = viewFromWorld3 * (mat3(uObject.normalWorldFromObject) * aNormal);
     vViewTangent = vec4(viewFromWorld3 * (mat3(uObject.worldFromObject) * aTangent.xyz), aTangent.w);
     vUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
+    vViewPositionM = (uFrame.viewFromWorld * worldPosition).xyz;
     gl_Position = uFrame.clipFromWorld * worldPosition;
 }

@@ -3,24 +3,22 @@
 namespace dermis {
 namespace {
 struct AovData {
-    graph::TextureHandle depth, albedo, normalMaterial, irradiance, specular, out;
+    graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, component, out;
 };
-bool needsLighting(Aov aov) { return aov == Aov::Diffuse || aov == Aov::Specular || aov == Aov::Irradiance; }
 }  // namespace
 
-graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                const Lighting& lighting, graph::TextureHandle output) {
+graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const AovInputs& inputs,
+                                graph::TextureHandle output) {
     return graph
         .addPass<AovData>(
             "aov",
             [&](graph::PassBuilder& builder, AovData& d) {
-                d.depth = builder.read(gbuffer.depthStencil);
-                d.albedo = builder.read(gbuffer.albedo);
-                d.normalMaterial = builder.read(gbuffer.normalMaterial);
-                if (needsLighting(frame.aov)) {
-                    d.irradiance = builder.read(lighting.irradiance);
-                    d.specular = builder.read(lighting.specular);
-                }
+                d.depth = builder.read(inputs.gbuffer.depthStencil);
+                d.albedo = builder.read(inputs.gbuffer.albedo);
+                d.normalMaterial = builder.read(inputs.gbuffer.normalMaterial);
+                if (frame.aov == Aov::Diffuse) d.diffuse = builder.read(inputs.diffuse);
+                if (frame.aov == Aov::Specular) d.specular = builder.read(inputs.specular);
+                if (inputs.component.isValid()) d.component = builder.read(inputs.component);
                 d.out = builder.write(output);
             },
             [&frame](const graph::PassResources& resources, const AovData& d) {
@@ -29,12 +27,14 @@ graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, 
                 frame.framebuffers->bind(attachments);
                 frame.setViewport(frame.width, frame.height);
                 glUseProgram(frame.programs->aov.get());
+                const GLuint albedo = resources.texture(d.albedo);
+                auto orAlbedo = [&](graph::TextureHandle h) { return h.isValid() ? resources.texture(h) : albedo; };
                 glBindTextureUnit(0, resources.texture(d.depth));
-                glBindTextureUnit(1, resources.texture(d.albedo));
-                glBindTextureUnit(2, resources.texture(d.normalMaterial));
-                const bool lit = d.irradiance.isValid();
-                glBindTextureUnit(3, lit ? resources.texture(d.irradiance) : resources.texture(d.albedo));
-                glBindTextureUnit(4, lit ? resources.texture(d.specular) : resources.texture(d.albedo));
+                glBindTextureUnit(1, albedo);
+                glBindTextureUnit(2, orAlbedo(d.diffuse));
+                glBindTextureUnit(3, orAlbedo(d.specular));
+                glBindTextureUnit(4, resources.texture(d.normalMaterial));
+                glBindTextureUnit(5, orAlbedo(d.component));
                 frame.drawFullscreenTriangle();
             })
         .out;

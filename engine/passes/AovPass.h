@@ -5,12 +5,18 @@
 
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
-#include "passes/LightingPass.h"
 #include "render/FrameContext.h"
 
 namespace dermis {
 
-graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                const Lighting& lighting, graph::TextureHandle output);
+struct AovInputs {
+    GBuffer gbuffer;
+    graph::TextureHandle diffuse;    // SSS-accumulated irradiance (diffuse AOV)
+    graph::TextureHandle specular;
+    graph::TextureHandle component;  // irradiance, AO or transmittance: read as the AOV itself
+};
+
+graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const AovInputs& inputs,
+                                graph::TextureHandle output);
 
 }  // namespace dermis

@@ -3,7 +3,7 @@
 namespace dermis {
 namespace {
 struct CompositeData {
-    graph::TextureHandle depth, albedo, irradiance, specular, out;
+    graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, out;
 };
 struct TonemapData {
     graph::TextureHandle hdr, out;
@@ -11,7 +11,7 @@ struct TonemapData {
 }  // namespace
 
 graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                      const Lighting& lighting) {
+                                      graph::TextureHandle diffuse, graph::TextureHandle specular) {
     const auto w = static_cast<uint32_t>(frame.width);
     const auto h = static_cast<uint32_t>(frame.height);
     return graph
@@ -20,8 +20,9 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& f
             [&](graph::PassBuilder& builder, CompositeData& d) {
                 d.depth = builder.read(gbuffer.depthStencil);
                 d.albedo = builder.read(gbuffer.albedo);
-                d.irradiance = builder.read(lighting.irradiance);
-                d.specular = builder.read(lighting.specular);
+                d.normalMaterial = builder.read(gbuffer.normalMaterial);
+                d.diffuse = builder.read(diffuse);
+                d.specular = builder.read(specular);
                 d.out = builder.create("hdr colour", {w, h, graph::TextureFormat::Rgba16F});
             },
             [&frame](const graph::PassResources& resources, const CompositeData& d) {
@@ -32,8 +33,9 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& f
                 glUseProgram(frame.programs->composite.get());
                 glBindTextureUnit(0, resources.texture(d.depth));
                 glBindTextureUnit(1, resources.texture(d.albedo));
-                glBindTextureUnit(2, resources.texture(d.irradiance));
+                glBindTextureUnit(2, resources.texture(d.diffuse));
                 glBindTextureUnit(3, resources.texture(d.specular));
+                glBindTextureUnit(4, resources.texture(d.normalMaterial));
                 frame.drawFullscreenTriangle();
             })
         .out;

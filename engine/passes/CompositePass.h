@@ -1,6 +1,6 @@
 #pragma once
-// Pass 6: composite (irradiance x albedo^(1-mix) + specular, background),
-// then tone mapping into the 8-bit output.
+// Pass 6: composite (SSS-accumulated irradiance x albedo^(1-mix) x outgoing
+// energy + specular, background), then tone mapping into the 8-bit output.
 
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
@@ -10,7 +10,7 @@
 namespace dermis {
 
 graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                      const Lighting& lighting);
+                                      graph::TextureHandle diffuse, graph::TextureHandle specular);
 
 // Writes tone-mapped sRGB into `output` (an imported RGBA8 texture).
 graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle hdr,

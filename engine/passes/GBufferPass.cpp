@@ -11,11 +11,13 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             g.depthStencil = builder.create("depth", {w, h, graph::TextureFormat::Depth24Stencil8});
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
+            g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32F});
         },
         [&frame](const graph::PassResources& resources, const GBuffer& g) {
             gl::Attachments attachments;
             attachments.colour[0] = resources.texture(g.albedo);
             attachments.colour[1] = resources.texture(g.normalMaterial);
+            attachments.colour[2] = resources.texture(g.depthKey);
             attachments.depth = resources.texture(g.depthStencil);
             attachments.depthHasStencil = true;
             frame.framebuffers->bind(attachments);
@@ -23,6 +25,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             const float zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 0, zero);
             glClearBufferfv(GL_COLOR, 1, zero);
+            const float backgroundKey[4] = {float(DERMIS_BACKGROUND_KEY_M), 0, 0, 0};
+            glClearBufferfv(GL_COLOR, 2, backgroundKey);
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
@@ -32,9 +36,11 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             glStencilMask(0xFF);
             glDisable(GL_CULL_FACE);
             glUseProgram(frame.programs->gbuffer.get());
-            for (const GpuCharacter& character : frame.gpuScene->characters()) {
-                frame.uploadObject(frame.objectBlock(character));
-                glStencilFunc(GL_ALWAYS, character.profileId, 0xFF);
+            const auto& characters = frame.gpuScene->characters();
+            for (size_t index = 0; index < characters.size(); ++index) {
+                const GpuCharacter& character = characters[index];
+                frame.uploadObject(frame.objectBlock(index));
+                glStencilFunc(GL_ALWAYS, frame.sss.slotOfCharacter[index], 0xFF);
                 glBindTextureUnit(0, character.albedoMap.get());
                 glBindTextureUnit(1, character.normalMap.get());
                 glBindVertexArray(character.mesh.vertexArray.get());

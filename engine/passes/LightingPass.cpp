@@ -5,12 +5,21 @@ namespace {
 struct LightingData {
     GBuffer gbuffer;
     std::vector<graph::TextureHandle> shadowMaps;
+    graph::TextureHandle ambientOcclusion;
     Lighting out;
 };
 }  // namespace
 
+void bindShadowMaps(const FrameContext& frame, const graph::PassResources& resources,
+                    const std::vector<graph::TextureHandle>& shadowMaps) {
+    for (size_t slot = 0; slot < DERMIS_MAX_SHADOWED_LIGHTS; ++slot) {
+        const GLuint map = slot < shadowMaps.size() ? resources.texture(shadowMaps[slot]) : frame.whiteTexture;
+        glBindTextureUnit(static_cast<GLuint>(4 + slot), map);
+    }
+}
+
 Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                         const std::vector<graph::TextureHandle>& shadowMaps) {
+                         const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion) {
     const auto w = static_cast<uint32_t>(frame.width);
     const auto h = static_cast<uint32_t>(frame.height);
     return graph
@@ -20,6 +29,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 d.gbuffer.depthStencil = builder.read(gbuffer.depthStencil);
                 d.gbuffer.albedo = builder.read(gbuffer.albedo);
                 d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
+                d.ambientOcclusion = builder.read(ambientOcclusion);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 d.out.irradiance = builder.create("irradiance", {w, h, graph::TextureFormat::Rgba16F});
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
@@ -34,13 +44,8 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 glBindTextureUnit(0, resources.texture(d.gbuffer.depthStencil));
                 glBindTextureUnit(1, resources.texture(d.gbuffer.albedo));
                 glBindTextureUnit(2, resources.texture(d.gbuffer.normalMaterial));
-                glBindTextureUnit(3, frame.beckmannTable);
-                for (size_t slot = 0; slot < DERMIS_MAX_SHADOWED_LIGHTS; ++slot) {
-                    // Unused slots get a valid texture too: sampler arrays must be complete.
-                    const GLuint map = slot < d.shadowMaps.size() ? resources.texture(d.shadowMaps[slot])
-                                                                  : frame.beckmannTable;
-                    glBindTextureUnit(static_cast<GLuint>(4 + slot), map);
-                }
+                glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
+                bindShadowMaps(frame, resources, d.shadowMaps);
                 frame.drawFullscreenTriangle();
             })
         .out;

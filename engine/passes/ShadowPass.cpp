@@ -21,7 +21,7 @@ std::string lightLabel(const FrameContext& frame, int lightIndex) {
 
 std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, FrameContext& frame, ShadowCache& cache) {
     std::vector<graph::TextureHandle> maps;
-    const int mapSize = frame.scene->settings.shadowMapSize;
+    const int mapSize = frame.scene->settings.shadow.mapSize;
     std::vector<glm::mat4> casters;
     for (const GpuCharacter& c : frame.gpuScene->characters()) casters.push_back(c.worldFromObject);
 
@@ -56,8 +56,10 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, Fra
                 glDepthMask(GL_TRUE);
                 glDisable(GL_CULL_FACE);  // thin ears need both faces in the map
                 glUseProgram(frame.programs->shadow.get());
-                for (const GpuCharacter& character : frame.gpuScene->characters()) {
-                    gpu::ObjectBlock block = frame.objectBlock(character);
+                const auto& characters = frame.gpuScene->characters();
+                for (size_t index = 0; index < characters.size(); ++index) {
+                    const GpuCharacter& character = characters[index];
+                    gpu::ObjectBlock block = frame.objectBlock(index);
                     block.mapping.y = float(lightIndex);
                     frame.uploadObject(block);
                     glBindVertexArray(character.mesh.vertexArray.get());

@@ -5,7 +5,7 @@
 
 namespace dermis {
 namespace {
-constexpr std::array<std::pair<Aov, std::string_view>, 7> kAovNames{{
+constexpr std::array<std::pair<Aov, std::string_view>, 9> kAovNames{{
     {Aov::Final, "final"},
     {Aov::Albedo, "albedo"},
     {Aov::Normal, "normal"},
@@ -13,6 +13,8 @@ constexpr std::array<std::pair<Aov, std::string_view>, 7> kAovNames{{
     {Aov::Diffuse, "diffuse"},
     {Aov::Specular, "specular"},
     {Aov::Irradiance, "irradiance"},
+    {Aov::Ao, "ao"},
+    {Aov::Transmittance, "transmittance"},
 }};
 }  // namespace
 

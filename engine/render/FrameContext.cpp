@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <cassert>
+
 namespace dermis {
 
 void FrameContext::drawFullscreenTriangle() const {
@@ -13,13 +15,19 @@ void FrameContext::uploadObject(const gpu::ObjectBlock& block) const {
     glNamedBufferSubData(objectUniforms, 0, sizeof block, &block);
 }
 
-gpu::ObjectBlock FrameContext::objectBlock(const GpuCharacter& character) const {
+void FrameContext::uploadPassBlock(const void* data, size_t size) const {
+    assert(size <= kMaxPassBlockBytes);
+    glNamedBufferSubData(passUniforms, 0, static_cast<GLsizeiptr>(size), data);
+}
+
+gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
+    const GpuCharacter& character = gpuScene->characters()[characterIndex];
     const Material& material = character.source->material;
     gpu::ObjectBlock block{};
     block.worldFromObject = character.worldFromObject;
     block.normalWorldFromObject = glm::inverseTranspose(character.worldFromObject);
     block.albedoRoughness = glm::vec4(material.albedo, material.roughness);
-    block.material = glm::vec4(material.rhoS, float(character.profileId), character.albedoMap.isValid() ? 1.0f : 0.0f,
+    block.material = glm::vec4(material.rhoS, float(characterIndex + 1), character.albedoMap.isValid() ? 1.0f : 0.0f,
                                character.normalMap.isValid() ? 1.0f : 0.0f);
     block.mapping = glm::vec4(material.flipV ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     return block;

@@ -1,7 +1,8 @@
 #pragma once
 // What every pass of a frame may use: the scene, its GPU copy, programs,
-// shared uniform buffers and GL helpers. Owned by the Renderer; passes keep a
-// reference in their execute lambdas, so it outlives the graph.
+// shared uniform buffers, the frame's SSS plan and GL helpers. Owned by the
+// Renderer; passes keep a reference in their execute lambdas, so it outlives
+// the graph.
 
 #include "gl/FramebufferCache.h"
 #include "gl/GlObjects.h"
@@ -9,20 +10,30 @@
 #include "render/GpuScene.h"
 #include "render/LightSetup.h"
 #include "render/Programs.h"
+#include "render/SssPlan.h"
 #include "render/UniformBlocks.h"
 #include "scene/Scene.h"
 
 namespace dermis {
+
+// Texture units every fullscreen pass agrees on for shared tables.
+constexpr GLuint kBeckmannUnit = 14;
+constexpr GLuint kEnergyUnit = 15;
 
 struct FrameContext {
     const Scene* scene = nullptr;
     GpuScene* gpuScene = nullptr;
     Programs* programs = nullptr;
     gl::FramebufferCache* framebuffers = nullptr;
-    GLuint objectUniforms = 0;  // ObjectBlock buffer, rewritten per draw
+    GLuint objectUniforms = 0;  // ObjectBlock, rewritten per draw
+    GLuint passUniforms = 0;    // the per-pass block at DERMIS_BINDING_PASS, rewritten per pass
     GLuint emptyVertexArray = 0;
     GLuint beckmannTable = 0;
+    GLuint energyTable = 0;
+    GLuint whiteTexture = 0;    // 1x1 RGBA8 white: a neutral input (AO = 1)
+    GLuint blackTexture = 0;    // 1x1 RGBA8 black: nothing (no transmitted light)
     LightSetup lights;
+    SssPlan sss;
     int width = 0;
     int height = 0;
     Aov aov = Aov::Final;
@@ -30,7 +41,11 @@ struct FrameContext {
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;
     void uploadObject(const gpu::ObjectBlock& block) const;
-    gpu::ObjectBlock objectBlock(const GpuCharacter& character) const;
+    // Copies `size` bytes to the per-pass block; it must be at most 4 KiB.
+    void uploadPassBlock(const void* data, size_t size) const;
+    gpu::ObjectBlock objectBlock(size_t characterIndex) const;
 };
+
+constexpr size_t kMaxPassBlockBytes = 4096;
 
 }  // namespace dermis

@@ -84,7 +84,6 @@ Result<GpuScene> GpuScene::create(const Scene& scene) {
         gpu.mesh = uploadMesh(model->mesh);
         if (!model->albedoMap.empty()) gpu.albedoMap = uploadImage(model->albedoMap);
         if (!model->normalMap.empty()) gpu.normalMap = uploadImage(model->normalMap);
-        gpu.profileId = character.material.profile == "none" ? 0 : 1;
         gpu.source = &character;
         gpuScene.mCharacters.push_back(std::move(gpu));
     }

@@ -30,7 +30,6 @@ struct GpuCharacter {
     gl::Texture normalMap;
     glm::mat4 worldFromObject{1.0f};
     Bounds worldBounds;
-    int profileId = 0;  // 0 = no SSS (opaque), else 1 + index into the profile table
     const Character* source = nullptr;
 };
 

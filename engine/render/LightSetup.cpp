@@ -55,7 +55,7 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBoun
             texelM = 2.0f * std::tan(halfAngleRad) / float(shadows.mapSize);  // per metre of depth
         }
         g.shadowClipFromWorld = clipFromLight * lightFromWorld;
-        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, texelM, float(shadows.filter));
+        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, texelM, shadows.filter == "poisson" ? 1.0f : 0.0f);
         g.shadowDepth = glm::vec4(nearM, farM, type == DERMIS_LIGHT_DIRECTIONAL ? 1.0f : 0.0f, 0.0f);
         g.directionShadow.w = float(setup.shadowedLights.size());
         setup.shadowedLights.push_back(i);

@@ -16,13 +16,6 @@
 
 namespace dermis {
 
-struct ShadowSettings {
-    int mapSize = 1024;
-    float biasConstantM = 0.0005f;
-    float biasSlopeTexels = 2.0f;
-    int filter = 0;  // 0 = 4x4 grid, 1 = Poisson
-};
-
 struct LightSetup {
     gpu::LightsBlock block{};
     int lightCount = 0;

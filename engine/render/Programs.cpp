@@ -20,6 +20,11 @@ Result<Programs> Programs::build() {
         {&Programs::composite, "fullscreen.vert", "composite.frag"},
         {&Programs::tonemap, "fullscreen.vert", "tonemap.frag"},
         {&Programs::aov, "fullscreen.vert", "aov.frag"},
+        {&Programs::ssao, "fullscreen.vert", "ssao.frag"},
+        {&Programs::ssaoBlur, "fullscreen.vert", "ssao_blur.frag"},
+        {&Programs::transmittance, "fullscreen.vert", "transmittance.frag"},
+        {&Programs::sssInit, "fullscreen.vert", "sss_init.frag"},
+        {&Programs::sssBlur, "fullscreen.vert", "sss_blur.frag"},
     };
     Programs programs;
     for (const Entry& e : entries) {

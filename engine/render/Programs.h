@@ -14,6 +14,11 @@ struct Programs {
     gl::Program composite;
     gl::Program tonemap;
     gl::Program aov;
+    gl::Program ssao;           // passes/SsaoPass.cpp
+    gl::Program ssaoBlur;
+    gl::Program transmittance;  // passes/TransmittancePass.cpp
+    gl::Program sssInit;        // passes/SssPasses.cpp
+    gl::Program sssBlur;
 
     static Result<Programs> build();
 };

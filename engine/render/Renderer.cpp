@@ -6,7 +6,10 @@
 #include "passes/GBufferPass.h"
 #include "passes/LightingPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SssPasses.h"
+#include "passes/TransmittancePass.h"
 #include "render/BeckmannTable.h"
+#include "sss/EnergyTable.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -15,20 +18,24 @@
 namespace dermis {
 namespace {
 
-ShadowSettings shadowSettings(const RenderSettings& s) {
-    ShadowSettings out;
-    out.mapSize = s.shadowMapSize;
-    out.biasConstantM = s.shadowBiasConstant;
-    out.biasSlopeTexels = s.shadowBiasSlope;
-    out.filter = s.shadowFilter == "poisson" ? 1 : 0;
-    return out;
+gl::Texture makeTableTexture(const std::vector<float>& table, int size) {
+    const auto side = static_cast<uint32_t>(size);
+    gl::Texture texture = gl::createTexture2D({side, side, graph::TextureFormat::R32F});
+    glTextureSubImage2D(texture.get(), 0, 0, 0, size, size, GL_RED, GL_FLOAT, table.data());
+    return texture;
 }
 
-gl::Texture makeBeckmannTexture() {
-    const std::vector<float> table = makeBeckmannTable(kBeckmannTableSize);
-    gl::Texture texture = gl::createTexture2D({kBeckmannTableSize, kBeckmannTableSize, graph::TextureFormat::R32F});
-    glTextureSubImage2D(texture.get(), 0, 0, 0, kBeckmannTableSize, kBeckmannTableSize, GL_RED, GL_FLOAT, table.data());
+gl::Texture makeSolidTexture(float value) {
+    gl::Texture texture = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8});
+    const float texel[4] = {value, value, value, value};
+    glTextureSubImage2D(texture.get(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel);
     return texture;
+}
+
+gl::Buffer makeUniformBuffer(size_t bytes) {
+    gl::Buffer buffer = gl::createBuffer();
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    return buffer;
 }
 
 }  // namespace
@@ -43,44 +50,119 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
 
 Renderer::Renderer(const Scene& scene, GpuScene gpuScene, Programs programs)
     : mScene(scene), mGpuScene(std::move(gpuScene)), mPrograms(std::move(programs)), mBackend(mProfiler) {
-    mFrameUniforms = gl::createBuffer();
-    glNamedBufferStorage(mFrameUniforms.get(), sizeof(gpu::FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    mLightUniforms = gl::createBuffer();
-    glNamedBufferStorage(mLightUniforms.get(), sizeof(gpu::LightsBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    mObjectUniforms = gl::createBuffer();
-    glNamedBufferStorage(mObjectUniforms.get(), sizeof(gpu::ObjectBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    mFrameUniforms = makeUniformBuffer(sizeof(gpu::FrameBlock));
+    mLightUniforms = makeUniformBuffer(sizeof(gpu::LightsBlock));
+    mObjectUniforms = makeUniformBuffer(sizeof(gpu::ObjectBlock));
+    mCharacterUniforms = makeUniformBuffer(sizeof(gpu::CharactersBlock));
+    mProfileUniforms = makeUniformBuffer(sizeof(gpu::ProfilesBlock));
+    mPassUniforms = makeUniformBuffer(kMaxPassBlockBytes);
     mEmptyVertexArray = gl::createVertexArray();
-    mBeckmann = makeBeckmannTexture();
+    mBeckmann = makeTableTexture(makeBeckmannTable(kBeckmannTableSize), kBeckmannTableSize);
+    mEnergy = makeTableTexture(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
+    mWhite = makeSolidTexture(1.0f);
+    mBlack = makeSolidTexture(0.0f);
 
     mFrameContext.scene = &mScene;
     mFrameContext.gpuScene = &mGpuScene;
     mFrameContext.programs = &mPrograms;
     mFrameContext.framebuffers = &mBackend.framebuffers();
     mFrameContext.objectUniforms = mObjectUniforms.get();
+    mFrameContext.passUniforms = mPassUniforms.get();
     mFrameContext.emptyVertexArray = mEmptyVertexArray.get();
     mFrameContext.beckmannTable = mBeckmann.get();
+    mFrameContext.energyTable = mEnergy.get();
+    mFrameContext.whiteTexture = mWhite.get();
+    mFrameContext.blackTexture = mBlack.get();
+}
+
+Status Renderer::planFrame(const FrameRequest& request) {
+    const Camera& camera = mScene.camera;
+    mView.viewFromWorld = glm::lookAt(camera.positionM, camera.targetM, camera.up);
+    mView.clipFromView = glm::perspective(glm::radians(camera.verticalFovDeg),
+                                          float(request.width) / float(request.height), camera.nearM, camera.farM);
+    mView.nearM = camera.nearM;
+    mView.widthPx = request.width;
+    mView.heightPx = request.height;
+
+    mGpuScene.updateTransforms(mScene);
+    std::vector<Bounds> bounds;
+    for (const GpuCharacter& c : mGpuScene.characters()) bounds.push_back(c.worldBounds);
+    auto plan = planSss(mScene, bounds, mView);
+    if (!plan.ok()) return plan.error();
+
+    mFrameContext.width = request.width;
+    mFrameContext.height = request.height;
+    mFrameContext.aov = request.aov;
+    mFrameContext.sss = std::move(*plan);
+    mFrameContext.lights = setupLights(mScene.lights, mGpuScene.worldBounds(), mScene.settings.shadow);
+    // A shadowed light is a back light when it is behind some visible SSS character.
+    for (int index : mFrameContext.lights.shadowedLights) {
+        const Light& light = mScene.lights[static_cast<size_t>(index)];
+        bool behind = false;
+        for (size_t c = 0; c < bounds.size() && !behind; ++c) {
+            const int slot = mFrameContext.sss.slotOfCharacter[c];
+            behind = slot > 0 && mFrameContext.sss.slots[static_cast<size_t>(slot - 1)].visible &&
+                     isBackLight(light, bounds[c], camera.positionM);
+        }
+        mFrameContext.lights.block.lights[index].shadowDepth.w = behind ? 1.0f : 0.0f;
+    }
+    return success();
 }
 
 void Renderer::uploadFrameUniforms(const FrameRequest& request) {
     const Camera& camera = mScene.camera;
-    const float aspect = float(request.width) / float(request.height);
+    const RenderSettings& settings = mScene.settings;
     gpu::FrameBlock frame{};
-    frame.viewFromWorld = glm::lookAt(camera.positionM, camera.targetM, camera.up);
+    frame.viewFromWorld = mView.viewFromWorld;
     frame.worldFromView = glm::inverse(frame.viewFromWorld);
-    frame.clipFromView = glm::perspective(glm::radians(camera.verticalFovDeg), aspect, camera.nearM, camera.farM);
+    frame.clipFromView = mView.clipFromView;
     frame.viewFromClip = glm::inverse(frame.clipFromView);
     frame.clipFromWorld = frame.clipFromView * frame.viewFromWorld;
     frame.cameraPositionM = glm::vec4(camera.positionM, 1.0f);
     frame.viewport = glm::vec4(request.width, request.height, 1.0f / float(request.width), 1.0f / float(request.height));
     frame.depthRangeM = glm::vec4(camera.nearM, camera.farM, 0.0f, 0.0f);
-    frame.ambient = glm::vec4(mScene.settings.ambient, 0.0f);
+    frame.ambient = glm::vec4(settings.ambient, 0.0f);
     frame.background = glm::vec4(mScene.background.colour, 1.0f);
-    frame.shading = glm::vec4(mScene.settings.exposure, 0.5f, float(mFrameContext.lights.lightCount), float(int(request.aov)));
+    frame.shading = glm::vec4(settings.exposure, settings.sss.mix, float(mFrameContext.lights.lightCount),
+                              float(int(request.aov)));
+    frame.features = glm::vec4(settings.energyConservation ? 1.0f : 0.0f, mView.pixelsPerMetreAtUnitDepth(),
+                               settings.ssao.strength, 0.0f);
     glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
     glNamedBufferSubData(mLightUniforms.get(), 0, sizeof(gpu::LightsBlock), &mFrameContext.lights.block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_FRAME, mFrameUniforms.get());
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_LIGHTS, mLightUniforms.get());
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_OBJECT, mObjectUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_CHARACTERS, mCharacterUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PROFILES, mProfileUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, mPassUniforms.get());
+    glBindTextureUnit(kBeckmannUnit, mBeckmann.get());
+    glBindTextureUnit(kEnergyUnit, mEnergy.get());
+}
+
+void Renderer::uploadSssUniforms() {
+    const SsaoSettings& ssao = mScene.settings.ssao;
+    gpu::CharactersBlock characters{};
+    const size_t count = std::min<size_t>(mScene.characters.size(), DERMIS_MAX_CHARACTERS);
+    for (size_t c = 0; c < count; ++c) {
+        const Character& character = mScene.characters[c];
+        const float radiusM = character.ssao.radiusM > 0.0f ? character.ssao.radiusM : ssao.radiusM;
+        const int samples = character.ssao.samples > 0 ? character.ssao.samples : ssao.samples;
+        characters.characters[c + 1].params =
+            glm::vec4(float(mFrameContext.sss.slotOfCharacter[c]), radiusM, float(samples), 0.0f);
+    }
+    glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
+
+    gpu::ProfilesBlock profiles{};
+    for (const SssSlotPlan& slot : mFrameContext.sss.slots) {
+        gpu::ProfileParams& p = profiles.profiles[slot.slot];
+        const auto& gaussians = slot.profile->gaussians();
+        const size_t n = std::min<size_t>(gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS);
+        for (size_t i = 0; i < n; ++i) p.gaussians[i] = glm::vec4(gaussians[i].weight, gaussians[i].varianceMm2);
+        p.info = glm::vec4(float(n), slot.initWeight);
+    }
+    profiles.transmittance =
+        glm::vec4(mScene.settings.transmittance.shrinkMm, mScene.settings.transmittance.strength, 0.0f, 0.0f);
+    glNamedBufferSubData(mProfileUniforms.get(), 0, sizeof profiles, &profiles);
 }
 
 void Renderer::ensureOutput(const FrameRequest& request) {
@@ -90,6 +172,39 @@ void Renderer::ensureOutput(const FrameRequest& request) {
     if (mOutput.isValid()) mBackend.framebuffers().forget(mOutput.get());
     mOutput = gl::createTexture2D(desc);
     mOutputDesc = desc;
+}
+
+void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& request) {
+    FrameContext& frame = mFrameContext;
+    const graph::TextureDesc solidDesc{1, 1, graph::TextureFormat::Rgba8};
+    const graph::TextureHandle output = graph.importTexture("output", mOutputDesc, mOutput.get());
+    const graph::TextureHandle white = graph.importTexture("white", solidDesc, mWhite.get());
+    const graph::TextureHandle black = graph.importTexture("black", solidDesc, mBlack.get());
+
+    const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, frame, mShadowCache);
+    const GBuffer gbuffer = addGBufferPass(graph, frame);
+    const graph::TextureHandle ambientOcclusion = white;
+    const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion);
+
+    if (request.aov == Aov::Final || request.aov == Aov::Diffuse) {
+        const graph::TextureHandle irradiance =
+            addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
+        const graph::TextureHandle diffuse = addSssPasses(graph, frame, gbuffer, irradiance);
+        if (request.aov == Aov::Final) {
+            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular);
+            graph.markOutput(addTonemapPass(graph, frame, hdr, output));
+            return;
+        }
+        graph.markOutput(addAovPass(graph, frame, {gbuffer, diffuse, {}, {}}, output));
+        return;
+    }
+    AovInputs inputs{gbuffer, {}, lighting.specular, {}};
+    if (request.aov == Aov::Irradiance) inputs.component = lighting.irradiance;
+    if (request.aov == Aov::Ao) inputs.component = ambientOcclusion;
+    if (request.aov == Aov::Transmittance) {
+        inputs.component = addTransmittancePass(graph, frame, gbuffer, shadowMaps, {}, black);
+    }
+    graph.markOutput(addAovPass(graph, frame, inputs, output));
 }
 
 Status Renderer::renderFrame(const FrameRequest& request) {
@@ -106,27 +221,14 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     }
 
     mProfiler.beginFrame(mFrame);
-    mGpuScene.updateTransforms(mScene);
-    mFrameContext.width = request.width;
-    mFrameContext.height = request.height;
-    mFrameContext.aov = request.aov;
-    mFrameContext.lights = setupLights(mScene.lights, mGpuScene.worldBounds(), shadowSettings(mScene.settings));
+    if (const Status planned = planFrame(request); !planned.ok()) return planned;
     uploadFrameUniforms(request);
+    uploadSssUniforms();
     ensureOutput(request);
     mOutputAov = request.aov;
 
     graph::RenderGraph graph;
-    const graph::TextureHandle output = graph.importTexture("output", mOutputDesc, mOutput.get());
-    const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, mFrameContext, mShadowCache);
-    const GBuffer gbuffer = addGBufferPass(graph, mFrameContext);
-    const Lighting lighting = addLightingPass(graph, mFrameContext, gbuffer, shadowMaps);
-    if (request.aov == Aov::Final) {
-        const graph::TextureHandle hdr = addCompositePass(graph, mFrameContext, gbuffer, lighting);
-        graph.markOutput(addTonemapPass(graph, mFrameContext, hdr, output));
-    } else {
-        graph.markOutput(addAovPass(graph, mFrameContext, gbuffer, lighting, output));
-    }
-
+    declareFrame(graph, request);
     const Status compiled = graph.compile();
     if (!compiled.ok()) return compiled;
     graph.execute(mBackend);

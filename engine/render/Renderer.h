@@ -48,10 +48,14 @@ public:
     void resetTimings() { mTimings = FrameTimings{}; }
     uint64_t frameCount() const { return mFrame; }
     GpuScene& gpuScene() { return mGpuScene; }
+    const SssPlan& sssPlan() const { return mFrameContext.sss; }
 
 private:
     Renderer(const Scene& scene, GpuScene gpuScene, Programs programs);
+    Status planFrame(const FrameRequest& request);
     void uploadFrameUniforms(const FrameRequest& request);
+    void uploadSssUniforms();
+    void declareFrame(graph::RenderGraph& graph, const FrameRequest& request);
     void ensureOutput(const FrameRequest& request);
 
     const Scene& mScene;
@@ -65,8 +69,15 @@ private:
     gl::Buffer mFrameUniforms;
     gl::Buffer mLightUniforms;
     gl::Buffer mObjectUniforms;
+    gl::Buffer mCharacterUniforms;
+    gl::Buffer mProfileUniforms;
+    gl::Buffer mPassUniforms;
     gl::VertexArray mEmptyVertexArray;
     gl::Texture mBeckmann;
+    gl::Texture mEnergy;
+    gl::Texture mWhite;
+    gl::Texture mBlack;
+    ViewParams mView;
     gl::Texture mOutput;
     graph::TextureDesc mOutputDesc{};
     Aov mOutputAov = Aov::Final;

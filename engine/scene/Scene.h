@@ -60,26 +60,70 @@ struct Material {
     std::string profile = "skin";        // diffusion profile name, or "none" for an opaque material
 };
 
+// Per-character SSAO overrides (seed 003 §3: radius and sample count per object).
+struct CharacterSsao {
+    float radiusM = 0.0f;  // world-space hemisphere radius; 0 = use settings.ssao.radius_m
+    int samples = 0;       // 8..128; 0 = use settings.ssao.samples
+};
+
 struct Character {
     std::string name;
     Transform transform;
     MeshSource mesh;
     float metresPerUnit = 1.0f;
     Material material;
+    CharacterSsao ssao;
 };
 
 struct Background {
     glm::vec3 colour{0.05f, 0.05f, 0.06f};  // linear RGB radiance behind everything
 };
 
-// Settings of the frame itself; later issues add SSS, SSAO and LEAN knobs here.
+// Screen-space SSS (DESIGN.md pass 5; seed 000 §2.2.4, seed 001 §3.2.2 and §4.3.2).
+struct SssSettings {
+    bool enabled = true;
+    std::string blur = "bilateral";     // "bilateral" (depth-weighted taps) or "control" (Jimenez's lerp to centre)
+    int taps = 9;                        // taps per direction, odd, 3..33
+    float bilateralDepthMm = 1.0f;       // std dev of the Gaussian in tap-to-centre depth difference (mm)
+    float controlDepthScalePerMm = 0.5f;  // control: lerp to centre by min(1, scale * |depth difference| in mm)
+    int gaussians = 6;                   // use at most this many of each profile's Gaussians (the widest are dropped)
+    float widthScale = 1.0f;             // multiplies every profile's widths (1 = physical)
+    float minWidthPx = 0.5f;             // skip a Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel
+    float mix = 0.5f;                    // pre-/post-scatter albedo mix (seed 000 §2.2.4): albedo^mix before the blur
+};
+
+// Back-normal transmittance through thin regions (seed 003 §4.3, Jimenez 2010).
+struct TransmittanceSettings {
+    bool enabled = true;
+    float shrinkMm = 1.0f;   // the surface point moves this far inwards along -N before the shadow-map lookup
+    float strength = 1.0f;   // multiplies the transmitted light
+};
+
+// Screen-space ambient occlusion (seed 003 §3): a normal-oriented hemisphere.
+struct SsaoSettings {
+    bool enabled = true;
+    int samples = 16;       // 8..128 (per-character override: Character::ssao)
+    float radiusM = 0.02f;  // world-space radius (per-character override)
+    float strength = 1.0f;  // AO = 1 - strength * occlusion
+    bool blur = true;       // bilateral blur of the raw AO
+};
+
+struct ShadowSettings {
+    int mapSize = 1024;
+    float biasConstantM = 0.0005f;   // constant depth bias, metres along the light's axis
+    float biasSlopeTexels = 2.0f;    // slope-scaled bias: this many shadow texels times tan(angle to the light)
+    std::string filter = "pcf4x4";   // "pcf4x4" (seed 000) or "poisson" (seed 003)
+};
+
+// Settings of the frame itself.
 struct RenderSettings {
     float exposure = 1.0f;
-    glm::vec3 ambient{0.03f};       // uniform ambient irradiance (linear RGB)
-    int shadowMapSize = 1024;
-    float shadowBiasConstant = 0.0005f;  // in light-space depth units [0,1]
-    float shadowBiasSlope = 2.0f;        // multiplies the depth slope (glPolygonOffset factor)
-    std::string shadowFilter = "pcf4x4";  // "pcf4x4" (seed 000) or "poisson" (seed 003)
+    glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
+    bool energyConservation = true;  // seed 000 §2.6: diffuse x (1 - rho_s rho_dt) in and out
+    ShadowSettings shadow;
+    SssSettings sss;
+    TransmittanceSettings transmittance;
+    SsaoSettings ssao;
 };
 
 struct Scene {

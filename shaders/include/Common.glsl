@@ -3,6 +3,8 @@
 #ifndef DERMIS_COMMON_GLSL
 #define DERMIS_COMMON_GLSL
 
+#include "UniformBlocks.glsl"
+
 const float kPi = 3.14159265358979;
 const float kTiny = 1e-8;
 const float kHalfMax = 65504.0;  // largest finite fp16
@@ -37,6 +39,20 @@ vec3 viewPositionFromDepth(vec2 uv, float depth, mat4 viewFromClip) {
     vec4 clip = vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
     vec4 view = viewFromClip * clip;
     return view.xyz / (abs(view.w) > kTiny ? view.w : kTiny);
+}
+
+// View-space position of a pixel from its linear view depth (metres), for
+// passes that cannot sample the depth buffer because it is attached for the
+// stencil test. Works for any projection with the eye at the origin.
+vec3 viewPositionFromViewDepth(vec2 uv, float viewDepthM, mat4 viewFromClip) {
+    vec3 farPoint = viewPositionFromDepth(uv, 1.0, viewFromClip);
+    return farPoint * (viewDepthM / max(-farPoint.z, kTiny));
+}
+
+// The view depth (m) and profile slot stored in a G-buffer depth key.
+float viewDepthFromKey(float keyM, int slot) { return keyM - float(slot) * DERMIS_PROFILE_KEY_STRIDE_M; }
+int slotFromKey(float keyM) {
+    return keyM < DERMIS_BACKGROUND_KEY_M * 0.5 ? int(floor(keyM / DERMIS_PROFILE_KEY_STRIDE_M)) : 0;
 }
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }

@@ -23,9 +23,24 @@
 #define DERMIS_MAX_LIGHTS 64
 #define DERMIS_MAX_SHADOWED_LIGHTS 4
 
+#define DERMIS_MAX_CHARACTERS 255       // object ids 1..255 in the G-buffer (0 = background)
+#define DERMIS_MAX_PROFILES 8           // profile slots per frame; the stencil holds the slot (0 = no SSS)
+#define DERMIS_MAX_PROFILE_GAUSSIANS 8
+#define DERMIS_MAX_BLUR_TAPS 33
+
 #define DERMIS_BINDING_FRAME 0
 #define DERMIS_BINDING_LIGHTS 1
 #define DERMIS_BINDING_OBJECT 2
+#define DERMIS_BINDING_CHARACTERS 3
+#define DERMIS_BINDING_PROFILES 4
+#define DERMIS_BINDING_PASS 5
+
+// The linear-depth key target (R32F) holds view depth in metres plus
+// DERMIS_PROFILE_KEY_STRIDE_M x profile slot, so a depth-aware blur rejects
+// taps from other profiles (or opaque pixels) with the same depth test that
+// rejects taps across silhouettes. The background holds DERMIS_BACKGROUND_KEY_M.
+#define DERMIS_PROFILE_KEY_STRIDE_M 1000.0
+#define DERMIS_BACKGROUND_KEY_M 1.0e7
 
 #define DERMIS_LIGHT_DIRECTIONAL 0
 #define DERMIS_LIGHT_SPOT 1
@@ -43,6 +58,7 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance
     vec4 shading;           // x: exposure, y: pre-scatter mix ratio, z: light count, w: output AOV id
+    vec4 features;          // x: energy conservation on (1/0), y: pixels per metre at 1 m view depth (vertical), z: SSAO strength
 } DERMIS_BLOCK_END(uFrame)
 
 struct GpuLight {
@@ -52,7 +68,7 @@ struct GpuLight {
     vec4 radiance;             // rgb: colour * intensity
     vec4 spot;                 // x: cos(inner), y: cos(outer)
     vec4 shadowParams;         // x: constant bias (m), y: slope bias (texels), z: texel size (m at 1 m / ortho), w: filter (0 grid, 1 poisson)
-    vec4 shadowDepth;          // x: near (m), y: far (m), z: orthographic (1) or perspective (0)
+    vec4 shadowDepth;          // x: near (m), y: far (m), z: orthographic (1) or perspective (0), w: back light (1/0), for transmittance
 };
 
 DERMIS_BLOCK(LightsBlock, DERMIS_BINDING_LIGHTS) {
@@ -63,8 +79,46 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     mat4 worldFromObject;
     mat4 normalWorldFromObject;  // inverse transpose of worldFromObject
     vec4 albedoRoughness;        // rgb: albedo tint (linear), w: Beckmann roughness m
-    vec4 material;               // x: rho_s, y: profile id (0 = none), z: has albedo map, w: has normal map
+    vec4 material;               // x: rho_s, y: object id (1..255), z: has albedo map, w: has normal map
     vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index (shadow pass)
 } DERMIS_BLOCK_END(uObject)
+
+// Per character, indexed by object id (G-buffer albedo alpha x 255).
+struct CharacterParams {
+    vec4 params;  // x: profile slot (0 = none), y: SSAO radius (m), z: SSAO samples, w: unused
+};
+
+DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {
+    CharacterParams characters[DERMIS_MAX_CHARACTERS + 1];  // [0] is the background
+} DERMIS_BLOCK_END(uCharacters)
+
+// A diffusion profile (engine/sss/DiffusionProfile.h) as the GPU sees it.
+struct ProfileParams {
+    vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight (normalised per channel), a: variance (mm^2)
+    vec4 info;  // x: Gaussian count, yzw: weight the SSS accumulation starts with (the identity plus skipped narrow Gaussians)
+};
+
+DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
+    ProfileParams profiles[DERMIS_MAX_PROFILES + 1];  // [slot]; [0] is unused (no SSS)
+    vec4 transmittance;  // x: shrink (mm), y: strength
+} DERMIS_BLOCK_END(uProfiles)
+
+// Per-pass blocks share DERMIS_BINDING_PASS; a shader defines the macro of
+// the one it uses before including this file.
+#if defined(__cplusplus) || defined(DERMIS_USE_SSS_BLUR_BLOCK)
+DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
+    vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
+    vec4 step;   // xy: blur direction, (1,0) or (0,1); z: standard deviation of this step (mm); w: tap count
+    vec4 edges;  // x: 0 = bilateral, 1 = control (Jimenez); y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+} DERMIS_BLOCK_END(uSssBlur)
+#endif
+
+// SSAO and its blur (passes/SsaoPass.cpp; the manual is shaders/ssao.frag).
+#if defined(__cplusplus) || defined(DERMIS_USE_SSAO_BLOCK)
+DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
+    vec4 kernel;  // x: radius (m) and y: sample count where a character's params.y/z are 0; z: bias (fraction of the radius); w: range-check fade end (radii)
+    vec4 blur;    // x: half width (pixels, 0..4); y: depth tolerance (fraction of view depth)
+} DERMIS_BLOCK_END(uSsao)
+#endif
 
 #endif

@@ -1,0 +1,183 @@
+#include "passes/SssPasses.h"
+
+#include "sss/BlurKernel.h"
+
+#include <string>
+
+namespace dermis {
+namespace {
+
+struct InitData {
+    graph::TextureHandle irradiance, depthKey, accumulated;
+};
+struct BlurData {
+    graph::TextureHandle colour, depthKey, stencil, accumulatedIn, out, accumulatedOut;
+};
+
+gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel, const SssGaussianStep& step,
+                            int slot, bool horizontal) {
+    const SssSettings& settings = frame.scene->settings.sss;
+    gpu::SssBlurBlock block{};
+    for (size_t i = 0; i < kernel.weights.size(); ++i) {
+        block.kernel[i] = glm::vec4(kernel.offsetsSigma[i], kernel.weights[i], 0.0f, 0.0f);
+    }
+    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, std::sqrt(step.stepVarianceMm2),
+                           float(kernel.weights.size()));
+    block.edges = glm::vec4(settings.blur == "control" ? 1.0f : 0.0f, settings.bilateralDepthMm,
+                            settings.controlDepthScalePerMm, float(slot));
+    return block;
+}
+
+}  // namespace
+
+glm::ivec4 sssScissor(const SssPlan& plan) {
+    glm::ivec4 rect(0);
+    for (const SssSlotPlan& slot : plan.slots) {
+        if (!slot.visible) continue;
+        if (rect.z == 0) {
+            rect = slot.scissor;
+            continue;
+        }
+        const glm::ivec2 lo = glm::min(glm::ivec2(rect), glm::ivec2(slot.scissor));
+        const glm::ivec2 hi = glm::max(glm::ivec2(rect) + glm::ivec2(rect.z, rect.w),
+                                       glm::ivec2(slot.scissor) + glm::ivec2(slot.scissor.z, slot.scissor.w));
+        rect = glm::ivec4(lo, hi - lo);
+    }
+    return rect;
+}
+
+ScopedSssState::ScopedSssState(const FrameContext& frame, const glm::ivec4& scissor, int slot) {
+    glEnable(GL_SCISSOR_TEST);
+    if (scissor.z > 0 && scissor.w > 0) {
+        glScissor(scissor.x, scissor.y, scissor.z, scissor.w);
+    } else {
+        glScissor(0, 0, frame.width, frame.height);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0x00);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (slot == kAnySssPixel) {
+        glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    } else {
+        glStencilFunc(GL_EQUAL, slot, 0xFF);
+    }
+}
+
+ScopedSssState::~ScopedSssState() {
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glDepthMask(GL_TRUE);
+}
+
+graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                  graph::TextureHandle irradiance) {
+    const auto w = static_cast<uint32_t>(frame.width);
+    const auto h = static_cast<uint32_t>(frame.height);
+    const graph::TextureDesc colourDesc{w, h, graph::TextureFormat::Rgba16F};
+    const bool anyVisible = frame.sss.anyVisible();
+
+    graph::TextureHandle accumulated =
+        graph
+            .addPass<InitData>(
+                "sss init",
+                [&](graph::PassBuilder& builder, InitData& d) {
+                    d.irradiance = builder.read(irradiance);
+                    d.depthKey = builder.read(gbuffer.depthKey);
+                    d.accumulated = builder.create("sss accumulated", colourDesc);
+                    builder.passThrough(d.accumulated, irradiance);
+                    builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
+                    builder.skipIf(!anyVisible, "no SSS pixel on screen");
+                },
+                [&frame](const graph::PassResources& resources, const InitData& d) {
+                    gl::Attachments attachments;
+                    attachments.colour[0] = resources.texture(d.accumulated);
+                    frame.framebuffers->bind(attachments);
+                    frame.setViewport(frame.width, frame.height);
+                    glUseProgram(frame.programs->sssInit.get());
+                    glBindTextureUnit(0, resources.texture(d.irradiance));
+                    glBindTextureUnit(1, resources.texture(d.depthKey));
+                    frame.drawFullscreenTriangle();
+                })
+            .accumulated;
+
+    auto kernel = makeGaussianKernel(frame.scene->settings.sss.taps);
+    if (!kernel.ok()) return accumulated;  // the scene loader validates taps; nothing to blur with
+    const BlurKernel taps = *kernel;  // copied into each pass: it outlives this function
+
+    for (const SssSlotPlan& slot : frame.sss.slots) {
+        graph::TextureHandle current = irradiance;
+        const std::string prefix = "sss " + slot.profile->name() + " g";
+        for (const SssGaussianStep& step : slot.steps) {
+            const std::string name = prefix + std::to_string(step.gaussian);
+            const std::string why = !slot.visible ? "no pixel of this profile on screen"
+                                                  : "narrower than " + std::to_string(frame.scene->settings.sss.minWidthPx) +
+                                                        " px at the nearest SSS pixel";
+            const BlurData& horizontal = graph.addPass<BlurData>(
+                name + " h",
+                [&](graph::PassBuilder& builder, BlurData& d) {
+                    d.colour = builder.read(current);
+                    d.depthKey = builder.read(gbuffer.depthKey);
+                    d.stencil = builder.read(gbuffer.depthStencil);
+                    d.out = builder.create(name + " h", colourDesc);
+                    builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
+                    builder.skipIf(step.skipped, why);
+                },
+                [&frame, taps, step, slotIndex = slot.slot, scissor = slot.scissor](
+                    const graph::PassResources& resources, const BlurData& d) {
+                    gl::Attachments attachments;
+                    attachments.colour[0] = resources.texture(d.out);
+                    attachments.depth = resources.texture(d.stencil);
+                    attachments.depthHasStencil = true;
+                    frame.framebuffers->bind(attachments);
+                    frame.setViewport(frame.width, frame.height);
+                    const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, true);
+                    frame.uploadPassBlock(&block, sizeof block);
+                    glUseProgram(frame.programs->sssBlur.get());
+                    glBindTextureUnit(0, resources.texture(d.colour));
+                    glBindTextureUnit(1, resources.texture(d.depthKey));
+                    const ScopedSssState state(frame, scissor, slotIndex);
+                    frame.drawFullscreenTriangle();
+                });
+            const BlurData& vertical = graph.addPass<BlurData>(
+                name + " v",
+                [&](graph::PassBuilder& builder, BlurData& d) {
+                    d.colour = builder.read(horizontal.out);
+                    d.depthKey = builder.read(gbuffer.depthKey);
+                    d.stencil = builder.read(gbuffer.depthStencil);
+                    d.accumulatedIn = builder.read(accumulated);
+                    d.out = builder.create(name + " v", colourDesc);
+                    d.accumulatedOut = builder.write(accumulated);
+                    builder.passThrough(d.out, current);
+                },
+                [&frame, taps, step, slotIndex = slot.slot, scissor = slot.scissor](
+                    const graph::PassResources& resources, const BlurData& d) {
+                    gl::Attachments attachments;
+                    attachments.colour[0] = resources.texture(d.out);
+                    attachments.colour[1] = resources.texture(d.accumulatedOut);
+                    attachments.depth = resources.texture(d.stencil);
+                    attachments.depthHasStencil = true;
+                    frame.framebuffers->bind(attachments);
+                    frame.setViewport(frame.width, frame.height);
+                    const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, false);
+                    frame.uploadPassBlock(&block, sizeof block);
+                    glUseProgram(frame.programs->sssBlur.get());
+                    glBindTextureUnit(0, resources.texture(d.colour));
+                    glBindTextureUnit(1, resources.texture(d.depthKey));
+                    const ScopedSssState state(frame, scissor, slotIndex);
+                    glEnablei(GL_BLEND, 1);
+                    glBlendFunci(1, GL_CONSTANT_COLOR, GL_ONE);
+                    glBlendColor(step.weight.r, step.weight.g, step.weight.b, 0.0f);
+                    frame.drawFullscreenTriangle();
+                    glDisablei(GL_BLEND, 1);
+                });
+            current = vertical.out;
+            accumulated = vertical.accumulatedOut;
+        }
+    }
+    return accumulated;
+}
+
+}  // namespace dermis

@@ -1,0 +1,38 @@
+#pragma once
+// Pass 5: the screen-space SSS chain (shaders/include/SssBlur.glsl is the
+// method's manual; render/SssPlan.h decides what runs).
+//
+//   sss init            accumulation = identity weight x irradiance (SSS pixels), irradiance elsewhere
+//   sss <profile> gN h  horizontal step of Gaussian N      \ per profile slot, per Gaussian;
+//   sss <profile> gN v  vertical step, += w_N x result      / each skipped by predicate when too narrow
+//
+// Every blur runs under the stencil test (its slot) and the slot's scissor.
+// With no SSS pixel on screen every pass is skipped and readers of the
+// result get the irradiance itself (passThrough).
+
+#include "graph/RenderGraph.h"
+#include "passes/GBufferPass.h"
+#include "render/FrameContext.h"
+
+namespace dermis {
+
+// Returns the accumulated diffuse irradiance (what the composite reads).
+graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                  graph::TextureHandle irradiance);
+
+constexpr int kAnySssPixel = -1;
+
+// The union of the visible slots' scissors (whole frame if none).
+glm::ivec4 sssScissor(const SssPlan& plan);
+
+// Scissor plus a read-only stencil test for the duration of a draw:
+// stencil == slot, or != 0 for kAnySssPixel. Depth test and writes off.
+class ScopedSssState {
+public:
+    ScopedSssState(const FrameContext& frame, const glm::ivec4& scissor, int slot);
+    ~ScopedSssState();
+    ScopedSssState(const ScopedSssState&) = delete;
+    ScopedSssState& operator=(const ScopedSssState&) = delete;
+};
+
+}  // namespace dermis

@@ -1,0 +1,150 @@
+#include "render/SssPlan.h"
+
+#include "render/UniformBlocks.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dermis {
+namespace {
+
+struct ScreenFootprint {
+    bool visible = false;
+    float nearestViewDepthM = 0.0f;
+    glm::ivec4 scissor{0};
+};
+
+// Conservative: the box's corners in clip space. Invisible only when all
+// corners are outside one frustum plane.
+ScreenFootprint footprint(const Bounds& bounds, const ViewParams& view) {
+    ScreenFootprint out;
+    const glm::mat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    bool behindNear = false;
+    float nearest = INFINITY;
+    glm::vec2 ndcMin(INFINITY);
+    glm::vec2 ndcMax(-INFINITY);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                          (corner & 4) ? bounds.max.z : bounds.min.z);
+        const glm::vec4 clip = clipFromWorld * glm::vec4(p, 1.0f);
+        for (int axis = 0; axis < 3; ++axis) {
+            if (clip[axis] < -clip.w) ++outside[2 * axis];
+            if (clip[axis] > clip.w) ++outside[2 * axis + 1];
+        }
+        const float viewDepthM = -(view.viewFromWorld * glm::vec4(p, 1.0f)).z;
+        nearest = std::min(nearest, viewDepthM);
+        if (clip.w <= view.nearM * 0.5f) {
+            behindNear = true;
+        } else {
+            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+            ndcMin = glm::min(ndcMin, ndc);
+            ndcMax = glm::max(ndcMax, ndc);
+        }
+    }
+    for (int plane : outside) {
+        if (plane == 8) return out;
+    }
+    out.visible = true;
+    out.nearestViewDepthM = std::max(nearest, view.nearM);
+    if (behindNear) {
+        out.scissor = glm::ivec4(0, 0, view.widthPx, view.heightPx);
+        return out;
+    }
+    ndcMin = glm::clamp(ndcMin, glm::vec2(-1.0f), glm::vec2(1.0f));
+    ndcMax = glm::clamp(ndcMax, glm::vec2(-1.0f), glm::vec2(1.0f));
+    const int x0 = static_cast<int>(std::floor((ndcMin.x * 0.5f + 0.5f) * float(view.widthPx)));
+    const int y0 = static_cast<int>(std::floor((ndcMin.y * 0.5f + 0.5f) * float(view.heightPx)));
+    const int x1 = static_cast<int>(std::ceil((ndcMax.x * 0.5f + 0.5f) * float(view.widthPx)));
+    const int y1 = static_cast<int>(std::ceil((ndcMax.y * 0.5f + 0.5f) * float(view.heightPx)));
+    out.scissor = glm::ivec4(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+    return out;
+}
+
+glm::ivec4 unionRect(const glm::ivec4& a, const glm::ivec4& b) {
+    if (a.z <= 0 || a.w <= 0) return b;
+    if (b.z <= 0 || b.w <= 0) return a;
+    const int x0 = std::min(a.x, b.x);
+    const int y0 = std::min(a.y, b.y);
+    const int x1 = std::max(a.x + a.z, b.x + b.z);
+    const int y1 = std::max(a.y + a.w, b.y + b.w);
+    return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
+}
+
+void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMetreAtUnitDepth) {
+    const auto& gaussians = plan.profile->gaussians();
+    const int used = std::clamp(settings.gaussians, 1, static_cast<int>(gaussians.size()));
+    std::vector<glm::vec3> weights;
+    for (int i = 0; i < used; ++i) weights.push_back(gaussians[static_cast<size_t>(i)].weight);
+    for (size_t i = static_cast<size_t>(used); i < gaussians.size(); ++i) weights.back() += gaussians[i].weight;
+
+    const float widthScale2 = settings.widthScale * settings.widthScale;
+    const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
+    plan.initWeight = weights[0];
+    plan.steps.clear();
+    for (int i = 1; i < used; ++i) {
+        SssGaussianStep step;
+        step.gaussian = i;
+        const float variance = gaussians[static_cast<size_t>(i)].varianceMm2;
+        const float previous = gaussians[static_cast<size_t>(i - 1)].varianceMm2;
+        step.stepVarianceMm2 = (variance - previous) * widthScale2;
+        step.weight = weights[static_cast<size_t>(i)];
+        step.widthPxAtNearest = std::sqrt(variance * widthScale2) * pixelsPerMm;
+        step.skipped = !plan.visible || step.widthPxAtNearest < settings.minWidthPx;
+        // Only a prefix can be skipped for width (variances increase), so a
+        // skipped Gaussian's weight joins the identity term.
+        if (step.skipped) plan.initWeight += step.weight;
+        plan.steps.push_back(step);
+    }
+}
+
+}  // namespace
+
+bool SssPlan::anyVisible() const {
+    return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) { return s.visible; });
+}
+
+float ViewParams::pixelsPerMetreAtUnitDepth() const { return 0.5f * float(heightPx) * clipFromView[1][1]; }
+
+Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view) {
+    SssPlan plan;
+    plan.slotOfCharacter.assign(scene.characters.size(), 0);
+    for (size_t c = 0; c < scene.characters.size(); ++c) {
+        const Character& character = scene.characters[c];
+        if (character.material.profile == "none") continue;
+        auto profile = findProfile(character.material.profile);
+        if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
+        auto existing = std::find_if(plan.slots.begin(), plan.slots.end(),
+                                     [&](const SssSlotPlan& s) { return s.profile == *profile; });
+        if (existing == plan.slots.end()) {
+            if (plan.slots.size() >= DERMIS_MAX_PROFILES) {
+                return makeError("character '" + character.name + "'",
+                                 "more than " + std::to_string(DERMIS_MAX_PROFILES) + " diffusion profiles in one scene");
+            }
+            SssSlotPlan slot;
+            slot.slot = static_cast<int>(plan.slots.size()) + 1;
+            slot.profile = *profile;
+            plan.slots.push_back(slot);
+            existing = plan.slots.end() - 1;
+        }
+        plan.slotOfCharacter[c] = existing->slot;
+        if (!scene.settings.sss.enabled || c >= characterBounds.size()) continue;
+        const ScreenFootprint fp = footprint(characterBounds[c], view);
+        if (!fp.visible) continue;
+        existing->nearestViewDepthM =
+            existing->visible ? std::min(existing->nearestViewDepthM, fp.nearestViewDepthM) : fp.nearestViewDepthM;
+        existing->scissor = existing->visible ? unionRect(existing->scissor, fp.scissor) : fp.scissor;
+        existing->visible = true;
+    }
+    for (SssSlotPlan& slot : plan.slots) planSteps(slot, scene.settings.sss, view.pixelsPerMetreAtUnitDepth());
+    return plan;
+}
+
+bool isBackLight(const Light& light, const Bounds& characterBounds, const glm::vec3& cameraPositionM) {
+    const glm::vec3 centre = characterBounds.centre();
+    const glm::vec3 toLight = light.type == LightType::Directional ? -light.direction : light.positionM - centre;
+    const glm::vec3 toCamera = cameraPositionM - centre;
+    return glm::dot(toLight, toCamera) < 0.0f;
+}
+
+}  // namespace dermis

@@ -1,0 +1,71 @@
+#pragma once
+// What the screen-space SSS chain will do this frame, decided on the CPU
+// from the scene alone (no GL), so the render graph can skip work by
+// predicate and tests can check the decisions.
+//
+// Profiles in use get slots 1..DERMIS_MAX_PROFILES (the stencil value of
+// their pixels). For each slot the chain blurs incrementally (seed 000
+// §2.2.4): Gaussian 0 is the identity; step i blurs the previous result by
+// variance v_i - v_(i-1) and adds w_i x result into the accumulation.
+// A Gaussian whose standard deviation at the nearest SSS pixel is below
+// SssSettings::minWidthPx is skipped and its weight folded into the
+// identity term, so energy is kept; with settings.gaussians < N the widest
+// Gaussians are dropped and their weights folded into the widest one kept.
+
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+#include "sss/DiffusionProfile.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+struct SssGaussianStep {
+    int gaussian = 0;               // index into the profile's Gaussians
+    float stepVarianceMm2 = 0.0f;   // blur of this step: v_i - v_(i-1), scaled by widthScale^2
+    glm::vec3 weight{0.0f};         // w_i (after folding dropped Gaussians)
+    float widthPxAtNearest = 0.0f;  // std dev of Gaussian i in pixels at the nearest SSS pixel
+    bool skipped = false;
+};
+
+struct SssSlotPlan {
+    int slot = 0;  // 1..DERMIS_MAX_PROFILES
+    const DiffusionProfile* profile = nullptr;
+    glm::vec3 initWeight{0.0f};  // accumulation = initWeight x irradiance before the first step
+    std::vector<SssGaussianStep> steps;
+    bool visible = false;            // some character with this profile may cover a pixel
+    float nearestViewDepthM = 0.0f;  // of its visible characters' bounds, clamped to the near plane
+    glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)
+};
+
+struct SssPlan {
+    std::vector<SssSlotPlan> slots;
+    std::vector<int> slotOfCharacter;  // per scene character; 0 = opaque (no SSS)
+    bool anyVisible() const;
+};
+
+// The camera as the planner needs it.
+struct ViewParams {
+    glm::mat4 viewFromWorld{1.0f};
+    glm::mat4 clipFromView{1.0f};
+    float nearM = 0.05f;
+    int widthPx = 1;
+    int heightPx = 1;
+    // Pixels per metre at 1 m view depth, vertically: heightPx / (2 tan(fov/2)).
+    float pixelsPerMetreAtUnitDepth() const;
+};
+
+// characterBounds are world-space bounds, one per scene character. Errors
+// for an unknown profile name or more profiles than slots.
+Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view);
+
+// Whether a light lies behind the character as the camera sees it: the
+// directions from the character's centre to the light and to the camera are
+// more than 90 degrees apart. Back-normal transmittance is computed for
+// such lights only.
+bool isBackLight(const Light& light, const Bounds& characterBounds, const glm::vec3& cameraPositionM);
+
+}  // namespace dermis

@@ -1,0 +1,112 @@
+// SssBlur.glsl: one separable step of the incremental sum-of-Gaussians
+// screen-space SSS blur. This header is its own manual.
+//
+// WHAT IT DOES
+//   d'Eon & Luebke approximate a diffusion profile by a sum of Gaussians,
+//   R(r) = sum_i w_i G(v_i, r) (seed 000 §2.1.4). Because G(a) * G(b) =
+//   G(a + b), Gaussian i can be made by blurring the result of Gaussian i-1
+//   by the difference of variances (seed 000 §2.2.4). Each step is separable:
+//   a horizontal then a vertical 1-D pass. The vertical pass also adds
+//   w_i x result into an accumulation target by blending (Jimenez's running
+//   sum, seed 001 §3.2.2), so no per-Gaussian textures are kept.
+//
+// INTEGRATION (engine/passes/SssPasses.cpp does this)
+//   1. Per frame, per profile slot, per Gaussian step i, draw a fullscreen
+//      triangle twice with this shader: direction (1,0) into a temporary,
+//      then direction (0,1) into the next chain texture (location 0) and the
+//      accumulation (location 1) with glBlendFunci(1, GL_CONSTANT_COLOR,
+//      GL_ONE) and glBlendColor(w_i).
+//   2. Bind the G-buffer's depth-stencil as the depth-stencil attachment and
+//      set glStencilFunc(GL_EQUAL, slot, 0xFF): only that profile's pixels run.
+//      A scissor around its characters trims the rest.
+//   3. Fill SssBlurBlock (UniformBlocks.glsl) per draw: the kernel (offsets in
+//      standard deviations and weights, computed on the CPU by
+//      engine/sss/BlurKernel.cpp), the direction, this step's standard
+//      deviation in mm, the edge mode and the profile slot.
+//   4. Bind the colour input to unit 0 and the depth key (G-buffer target 2)
+//      to unit 1.
+//
+// WIDTH (seed 000 §2.2.4; DESIGN.md pass 5)
+//   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
+//   depth z metres, where P = uFrame.features.y is the number of pixels per
+//   metre at 1 m (height / (2 tan(fov/2))). World space is in metres, so each
+//   character's metres_per_unit is already in z. The centre pixel's depth
+//   sets the width, as in Jimenez's SeparableSSS.
+//
+// EDGES
+//   Taps read the depth key: view depth (mm after scaling) plus a large
+//   per-profile offset, so one test rejects taps across silhouettes, on the
+//   background, on opaque objects and on other profiles.
+//   - bilateral (seed 001 §4.3.2, the default): each tap's kernel weight is
+//     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
+//     SSS_BILATERAL default below or the block's value, and the sum is
+//     renormalised. No light crosses an edge: no halo, no background bleed.
+//   - control (Jimenez, seed 001 §3.2.2): a tap's colour is lerped back to
+//     the centre's by min(1, k * d); weights are not renormalised.
+//   Taps that land on another profile or the background are replaced by the
+//   centre (control) or dropped (bilateral) by selection, not by a multiply,
+//   so a non-finite value outside the mask can never leak in.
+//
+// SAMPLING
+//   Taps fetch the nearest texel (texelFetch): a bilinear fetch at a
+//   silhouette would mix in a texel the depth test never saw. Offsets are
+//   rounded to whole pixels; the discrete kernel keeps its CPU weights.
+//
+// CONFIGURATION (define before including)
+//   SSS_EXTRA_TARGETS  number of additional RGBA targets blurred with the
+//                      same taps (LEAN moments); 0..3, default 0.
+#ifndef DERMIS_SSS_BLUR_GLSL
+#define DERMIS_SSS_BLUR_GLSL
+
+#ifndef SSS_EXTRA_TARGETS
+#define SSS_EXTRA_TARGETS 0
+#endif
+#if SSS_EXTRA_TARGETS < 0 || SSS_EXTRA_TARGETS > 3
+#error "SSS_EXTRA_TARGETS must be 0..3"
+#endif
+
+const float kSssKeyStrideMm = DERMIS_PROFILE_KEY_STRIDE_M * 1000.0;
+
+// The blurred value of `colour` at `pixel` along uSssBlur.step.xy. Returns
+// the centre when the pixel is not on this profile (stencil keeps that from
+// happening; this is the belt to its braces).
+vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
+    ivec2 size = textureSize(colour, 0);
+    vec4 centre = texelFetch(colour, pixel, 0);
+    float centreKeyM = texelFetch(depthKey, pixel, 0).r;
+    float viewDepthM = viewDepthFromKey(centreKeyM, int(uSssBlur.edges.w));
+    if (viewDepthM <= 0.0 || viewDepthM > DERMIS_PROFILE_KEY_STRIDE_M * 0.5) return centre;
+
+    float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
+    vec2 direction = uSssBlur.step.xy;
+    int taps = int(uSssBlur.step.w);
+    bool bilateral = uSssBlur.edges.x < 0.5;
+    float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
+    float controlScale = uSssBlur.edges.z;
+    float sameProfileMm = 0.5 * kSssKeyStrideMm;
+
+    vec4 sum = vec4(0.0);
+    float weightSum = 0.0;
+    for (int i = 0; i < taps; ++i) {
+        vec2 offset = direction * (uSssBlur.kernel[i].x * sigmaPx);
+        ivec2 tapPixel = clamp(pixel + ivec2(round(offset)), ivec2(0), size - 1);
+        float weight = uSssBlur.kernel[i].y;
+        // Keys of different profiles differ by >= kSssKeyStrideMm.
+        float distanceMm = abs(texelFetch(depthKey, tapPixel, 0).r - centreKeyM) * 1000.0;
+        bool sameProfile = distanceMm < sameProfileMm;
+        if (bilateral) {
+            if (!sameProfile) continue;
+            weight *= exp(-distanceMm * distanceMm * inverseTwoSigmaSquared);
+            sum += weight * texelFetch(colour, tapPixel, 0);
+            weightSum += weight;
+        } else {
+            vec4 tap = sameProfile ? texelFetch(colour, tapPixel, 0) : centre;
+            float toCentre = min(controlScale * distanceMm, 1.0);
+            sum += weight * (toCentre >= 1.0 ? centre : mix(tap, centre, toCentre));
+            weightSum += weight;
+        }
+    }
+    return weightSum > 0.0 ? sum / weightSum : centre;
+}
+
+#endif

@@ -1,0 +1,44 @@
+// Back-normal transmittance through thin regions (Jimenez et al. 2010,
+// "Real-Time Realistic Skin Translucency", as seed 003 §4.3 describes it).
+//
+// For a pixel on an SSS surface and a light behind it:
+//   1. Shrink the surface point inwards along its normal by `shrinkMm`, so the
+//      shadow-map lookup is not fooled by the surface itself (seed 003 §4.3).
+//   2. Thickness s = (light-space depth of the shrunk point) - (depth stored
+//      in the shadow map: the surface nearest the light), in mm; >= 0.
+//   3. T(s) = sum_i w_i exp(-s^2 / v_i), with the pixel's profile (DESIGN.md).
+//   4. E = saturate(0.3 + dot(-N, L)): light arrives through the back, with
+//      a little wrap so the term fades in near the terminator.
+// The caller adds radiance x T(s) x E into the diffuse irradiance before the
+// SSS blur, which then softens it like any other light.
+#ifndef DERMIS_TRANSMITTANCE_GLSL
+#define DERMIS_TRANSMITTANCE_GLSL
+
+// Stored depth of the first surface along the light ray through worldPositionM.
+float shadowMapDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM) {
+    vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
+    if (clip.w <= kTiny) return lightLinearDepth(light, worldPositionM);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return lightLinearDepth(light, worldPositionM);
+    return texture(shadowMap, uv).r;
+}
+
+float thicknessMm(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, float shrinkMm) {
+    vec3 shrunkM = worldPositionM - N * (shrinkMm * 1e-3);
+    float occluderM = shadowMapDepthM(shadowMap, light, shrunkM);
+    return max(lightLinearDepth(light, shrunkM) - occluderM, 0.0) * 1000.0;
+}
+
+vec3 profileTransmittance(ProfileParams profile, float sMm) {
+    vec3 t = vec3(0.0);
+    int count = int(profile.info.x);
+    for (int i = 0; i < count; ++i) {
+        float varianceMm2 = max(profile.gaussians[i].a, 1e-6);
+        t += profile.gaussians[i].rgb * exp(-sMm * sMm / varianceMm2);
+    }
+    return t;
+}
+
+float backLightFactor(vec3 N, vec3 L) { return clamp(0.3 + dot(-N, L), 0.0, 1.0); }
+
+#endif

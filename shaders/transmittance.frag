@@ -1,0 +1,48 @@
+// Adds back-normal transmittance (include/Transmittance.glsl) from every
+// shadowed back light into the diffuse irradiance, for SSS pixels only (the
+// stencil test keeps the rest). Output is blended additively. Positions come
+// from the depth key: the depth buffer is attached for the stencil test, so
+// sampling it would be a feedback loop.
+#include "Common.glsl"
+#include "UniformBlocks.glsl"
+#include "Shadows.glsl"
+#include "Lights.glsl"
+#include "Transmittance.glsl"
+
+layout(binding = 1) uniform sampler2D uAlbedo;
+layout(binding = 2) uniform sampler2D uNormalMaterial;
+layout(binding = 3) uniform sampler2D uDepthKey;
+layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
+
+in vec2 vUv;
+layout(location = 0) out vec4 oTransmitted;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float key = texelFetch(uDepthKey, pixel, 0).r;
+    int slot = slotFromKey(key);
+    if (slot <= 0 || slot > DERMIS_MAX_PROFILES) {
+        oTransmitted = vec4(0.0);
+        return;
+    }
+    vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
+    vec3 viewPositionM = viewPositionFromViewDepth(vUv, viewDepthFromKey(key, slot), uFrame.viewFromClip);
+    vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
+    vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy),
+                           vec3(0.0, 1.0, 0.0));
+    float shrinkMm = uProfiles.transmittance.x;
+
+    vec3 transmitted = vec3(0.0);
+    int lightCount = int(uFrame.shading.z);
+    for (int i = 0; i < lightCount; ++i) {
+        GpuLight light = uLights.lights[i];
+        int shadowSlot = int(light.directionShadow.w);
+        if (shadowSlot < 0 || light.shadowDepth.w < 0.5) continue;  // needs a map, and to be behind
+        vec3 L;
+        vec3 radiance = incidentRadiance(light, worldPositionM, L);
+        float sMm = thicknessMm(uShadowMaps[shadowSlot], light, worldPositionM, N, shrinkMm);
+        transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
+    }
+    float mixRatio = uFrame.shading.y;
+    oTransmitted = vec4(sanitizeColour(transmitted * uProfiles.transmittance.y * pow(albedo, vec3(mixRatio))), 0.0);
+}
