@@ -187,11 +187,16 @@ std::string describeLoadError(const std::string& err, const std::string& json) {
 
 const char* typeName(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        default: return "a matrix or unknown type";
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        default:
+            return "a matrix or unknown type";
     }
 }
 
@@ -207,7 +212,8 @@ float decodeComponent(const unsigned char* p, int componentType, bool normalized
             std::memcpy(&value, p, sizeof value);
             return static_cast<float>(value);
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(p[0]) / 255.0f : float(p[0]);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return normalized ? float(p[0]) / 255.0f : float(p[0]);
         case TINYGLTF_COMPONENT_TYPE_BYTE: {
             float value = float(static_cast<int8_t>(p[0]));
             return normalized ? std::max(value / 127.0f, -1.0f) : value;
@@ -227,7 +233,8 @@ float decodeComponent(const unsigned char* p, int componentType, bool normalized
             std::memcpy(&value, p, sizeof value);
             return normalized ? float(double(value) / 4294967295.0) : float(value);
         }
-        default: return 0.0f;
+        default:
+            return 0.0f;
     }
 }
 
@@ -248,7 +255,7 @@ struct AccessorView {
 // A primitive's triangle list before it joins the merged mesh.
 struct Piece {
     MeshData mesh;
-    std::vector<bool> badNormal;   // missing, zero or not finite after transform
+    std::vector<bool> badNormal;  // missing, zero or not finite after transform
     std::vector<bool> badTangent;
 };
 
@@ -286,7 +293,8 @@ private:
         std::vector<bool> isChild(mGltf.nodes.size(), false);
         for (const tinygltf::Node& node : mGltf.nodes)
             for (int child : node.children)
-                if (child >= 0 && static_cast<size_t>(child) < isChild.size()) isChild[static_cast<size_t>(child)] = true;
+                if (child >= 0 && static_cast<size_t>(child) < isChild.size())
+                    isChild[static_cast<size_t>(child)] = true;
         std::vector<int> roots;
         for (size_t i = 0; i < isChild.size(); ++i)
             if (!isChild[i]) roots.push_back(static_cast<int>(i));
@@ -297,25 +305,31 @@ private:
         const std::string where = "node " + std::to_string(index);
         glm::mat4 local(1.0f);
         if (!node.matrix.empty()) {
-            if (node.matrix.size() != 16) return fail(where + ": matrix has " + std::to_string(node.matrix.size()) + " values, not 16");
+            if (node.matrix.size() != 16)
+                return fail(where + ": matrix has " + std::to_string(node.matrix.size()) + " values, not 16");
             for (int i = 0; i < 16; ++i) local[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<size_t>(i)]);
         } else {
-            if (!node.translation.empty() && node.translation.size() != 3) return fail(where + ": translation needs 3 values");
+            if (!node.translation.empty() && node.translation.size() != 3)
+                return fail(where + ": translation needs 3 values");
             if (!node.rotation.empty() && node.rotation.size() != 4) return fail(where + ": rotation needs 4 values");
             if (!node.scale.empty() && node.scale.size() != 3) return fail(where + ": scale needs 3 values");
             glm::vec3 translation(0.0f), scale(1.0f);
             glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
-            for (int i = 0; i < 3 && !node.translation.empty(); ++i) translation[i] = static_cast<float>(node.translation[static_cast<size_t>(i)]);
-            for (int i = 0; i < 3 && !node.scale.empty(); ++i) scale[i] = static_cast<float>(node.scale[static_cast<size_t>(i)]);
+            for (int i = 0; i < 3 && !node.translation.empty(); ++i)
+                translation[i] = static_cast<float>(node.translation[static_cast<size_t>(i)]);
+            for (int i = 0; i < 3 && !node.scale.empty(); ++i)
+                scale[i] = static_cast<float>(node.scale[static_cast<size_t>(i)]);
             if (!node.rotation.empty()) {
                 // glTF stores x, y, z, w; glm::quat's constructor takes w first.
                 rotation = glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
                                      static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
                 float length = glm::length(rotation);
-                if (!(length > 0.0f) || !std::isfinite(length)) return fail(where + ": rotation is not a valid quaternion");
+                if (!(length > 0.0f) || !std::isfinite(length))
+                    return fail(where + ": rotation is not a valid quaternion");
                 rotation = rotation / length;
             }
-            local = glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), scale);
+            local = glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
+                    glm::scale(glm::mat4(1.0f), scale);
         }
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r)
@@ -332,7 +346,8 @@ private:
             auto [index, parent] = stack.back();
             stack.pop_back();
             if (index < 0 || static_cast<size_t>(index) >= mGltf.nodes.size())
-                return fail("node " + std::to_string(index) + " is out of range (" + std::to_string(mGltf.nodes.size()) + " nodes)");
+                return fail("node " + std::to_string(index) + " is out of range (" +
+                            std::to_string(mGltf.nodes.size()) + " nodes)");
             if (visited[static_cast<size_t>(index)])
                 return fail("node " + std::to_string(index) + " is reached twice (a cycle or a shared child)");
             visited[static_cast<size_t>(index)] = true;
@@ -342,10 +357,12 @@ private:
             glm::mat4 world = parent * local.value();
             if (node.mesh >= 0) {
                 if (static_cast<size_t>(node.mesh) >= mGltf.meshes.size())
-                    return fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) + " is out of range");
+                    return fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
+                                " is out of range");
                 if (Status status = addMesh(node.mesh, world); !status) return status;
             }
-            for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.emplace_back(*child, world);
+            for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+                stack.emplace_back(*child, world);
         }
         return success();
     }
@@ -408,8 +425,9 @@ private:
         std::vector<float> values(view->count * static_cast<size_t>(view->components));
         for (size_t i = 0; i < view->count; ++i) {
             for (int c = 0; c < view->components; ++c) {
-                float value = decodeComponent(view->data + i * view->stride + static_cast<size_t>(c) * view->componentSize,
-                                              accessor.componentType, accessor.normalized);
+                float value =
+                    decodeComponent(view->data + i * view->stride + static_cast<size_t>(c) * view->componentSize,
+                                    accessor.componentType, accessor.normalized);
                 if (!std::isfinite(value)) return fail(name + " holds a value that is not finite");
                 values[i * static_cast<size_t>(view->components) + static_cast<size_t>(c)] = value;
             }
@@ -449,11 +467,12 @@ private:
     }
 
     // Triangle lists from lists, strips and fans (glTF 2.0 §3.7.2.1).
-    static Result<std::vector<uint32_t>> toTriangleList(std::vector<uint32_t> indices, int mode, const std::string& where,
-                                                        const std::string& path) {
+    static Result<std::vector<uint32_t>> toTriangleList(std::vector<uint32_t> indices, int mode,
+                                                        const std::string& where, const std::string& path) {
         if (mode == TINYGLTF_MODE_TRIANGLES) {
             if (indices.size() % 3 != 0)
-                return makeError(path, where + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3");
+                return makeError(path,
+                                 where + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3");
             return indices;
         }
         std::vector<uint32_t> list;
@@ -473,7 +492,8 @@ private:
     Status addPrimitive(const std::string& where, const tinygltf::Primitive& primitive, const glm::mat4& world) {
         if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-            log::warn(mPath + ": " + where + " is not made of triangles (mode " + std::to_string(primitive.mode) + "); skipped");
+            log::warn(mPath + ": " + where + " is not made of triangles (mode " + std::to_string(primitive.mode) +
+                      "); skipped");
             return success();
         }
         auto attribute = [&](const char* name) {
@@ -498,17 +518,17 @@ private:
             int type;
             std::optional<std::vector<float>>* out;
         };
-        for (const Optional& optional : {Optional{"NORMAL", TINYGLTF_TYPE_VEC3, &normals},
-                                         Optional{"TEXCOORD_0", TINYGLTF_TYPE_VEC2, &uvs},
-                                         Optional{"TANGENT", TINYGLTF_TYPE_VEC4, &tangents}}) {
+        for (const Optional& optional :
+             {Optional{"NORMAL", TINYGLTF_TYPE_VEC3, &normals}, Optional{"TEXCOORD_0", TINYGLTF_TYPE_VEC2, &uvs},
+              Optional{"TANGENT", TINYGLTF_TYPE_VEC4, &tangents}}) {
             int accessor = attribute(optional.name);
             if (accessor < 0) continue;
             Result<std::vector<float>> values = readFloats(accessor, optional.type, where + " " + optional.name);
             if (!values) return values.error();
             if (mGltf.accessors[static_cast<size_t>(accessor)].count != vertexCount)
                 return fail(where + ": " + optional.name + " has " +
-                            std::to_string(mGltf.accessors[static_cast<size_t>(accessor)].count) + " elements, POSITION has " +
-                            std::to_string(vertexCount));
+                            std::to_string(mGltf.accessors[static_cast<size_t>(accessor)].count) +
+                            " elements, POSITION has " + std::to_string(vertexCount));
             *optional.out = std::move(values.value());
         }
 
@@ -530,7 +550,8 @@ private:
         piece.mesh.indices = std::move(triangles.value());
         // A mirroring transform turns counter-clockwise triangles clockwise.
         if (glm::determinant(glm::mat3(world)) < 0.0f)
-            for (size_t i = 0; i + 2 < piece.mesh.indices.size(); i += 3) std::swap(piece.mesh.indices[i + 1], piece.mesh.indices[i + 2]);
+            for (size_t i = 0; i + 2 < piece.mesh.indices.size(); i += 3)
+                std::swap(piece.mesh.indices[i + 1], piece.mesh.indices[i + 2]);
         repairFrames(piece);
 
         if (primitive.material >= 0) {
@@ -544,8 +565,8 @@ private:
     }
 
     static Piece buildPiece(const std::vector<float>& positions, const std::optional<std::vector<float>>& normals,
-                            const std::optional<std::vector<float>>& uvs, const std::optional<std::vector<float>>& tangents,
-                            const glm::mat4& world) {
+                            const std::optional<std::vector<float>>& uvs,
+                            const std::optional<std::vector<float>>& tangents, const glm::mat4& world) {
         const glm::mat3 linear(world);
         const float det = glm::determinant(linear);
         // The cofactor matrix is det * inverse-transpose: it maps normals
@@ -563,7 +584,8 @@ private:
         piece.badTangent.assign(count, !tangents.has_value());
         for (size_t i = 0; i < count; ++i) {
             Vertex& v = piece.mesh.vertices[i];
-            v.position = glm::vec3(world * glm::vec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0f));
+            v.position =
+                glm::vec3(world * glm::vec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0f));
             if (uvs) v.uv = glm::vec2((*uvs)[2 * i], (*uvs)[2 * i + 1]);
             if (normals) {
                 glm::vec3 n = normalMatrix * glm::vec3((*normals)[3 * i], (*normals)[3 * i + 1], (*normals)[3 * i + 2]);
@@ -584,7 +606,9 @@ private:
     // own normal or tangent was unusable.
     static void repairFrames(Piece& piece) {
         MeshData& mesh = piece.mesh;
-        auto anyBad = [](const std::vector<bool>& flags) { return std::find(flags.begin(), flags.end(), true) != flags.end(); };
+        auto anyBad = [](const std::vector<bool>& flags) {
+            return std::find(flags.begin(), flags.end(), true) != flags.end();
+        };
         if (anyBad(piece.badNormal)) {
             MeshData generated = mesh;
             generateNormals(generated);
@@ -600,8 +624,10 @@ private:
             Vertex& v = mesh.vertices[i];
             glm::vec3 t(v.tangent);
             t = normalizeOr(t - v.normal * glm::dot(v.normal, t), glm::vec3(0.0f));
-            if (glm::dot(t, t) == 0.0f) piece.badTangent[i] = true;
-            else v.tangent = glm::vec4(t, v.tangent.w);
+            if (glm::dot(t, t) == 0.0f)
+                piece.badTangent[i] = true;
+            else
+                v.tangent = glm::vec4(t, v.tangent.w);
         }
         if (anyBad(piece.badTangent)) {
             MeshData generated = mesh;
@@ -639,8 +665,9 @@ private:
         }
         if (!chosen) return success();
         if (mUsedMaterials.size() > 1)
-            log::warn(mPath + ": " + std::to_string(mUsedMaterials.size()) + " materials in use; maps come from material " +
-                      std::to_string(chosenIndex) + quoted(chosen->name));
+            log::warn(mPath + ": " + std::to_string(mUsedMaterials.size()) +
+                      " materials in use; maps come from material " + std::to_string(chosenIndex) +
+                      quoted(chosen->name));
 
         struct Map {
             const char* role;
@@ -650,13 +677,18 @@ private:
             Image* out;
         };
         const tinygltf::PbrMetallicRoughness& pbr = chosen->pbrMetallicRoughness;
-        for (const Map& map : {Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb, &mModel.albedoMap},
-                               Map{"normalTexture", chosen->normalTexture.index, chosen->normalTexture.texCoord, ColourSpace::Linear, &mModel.normalMap},
-                               Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                   ColourSpace::Linear, &mModel.metallicRoughnessMap}}) {
+        for (const Map& map :
+             {Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb,
+                  &mModel.albedoMap},
+              Map{"normalTexture", chosen->normalTexture.index, chosen->normalTexture.texCoord, ColourSpace::Linear,
+                  &mModel.normalMap},
+              Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                  ColourSpace::Linear, &mModel.metallicRoughnessMap}}) {
             if (map.texture < 0) continue;
             const std::string where = "material " + std::to_string(chosenIndex) + " " + map.role;
-            if (map.texCoord != 0) log::warn(mPath + ": " + where + " uses TEXCOORD_" + std::to_string(map.texCoord) + "; only TEXCOORD_0 is loaded");
+            if (map.texCoord != 0)
+                log::warn(mPath + ": " + where + " uses TEXCOORD_" + std::to_string(map.texCoord) +
+                          "; only TEXCOORD_0 is loaded");
             if (static_cast<size_t>(map.texture) >= mGltf.textures.size())
                 return fail(where + ": texture " + std::to_string(map.texture) + " is out of range");
             int source = mGltf.textures[static_cast<size_t>(map.texture)].source;
@@ -671,7 +703,8 @@ private:
 
     Result<Image> decodeImage(int index, ColourSpace colourSpace) const {
         const tinygltf::Image& image = mGltf.images[static_cast<size_t>(index)];
-        const std::string label = "image " + std::to_string(index) + quoted(image.name.empty() ? image.uri : image.name);
+        const std::string label =
+            "image " + std::to_string(index) + quoted(image.name.empty() ? image.uri : image.name);
         Result<Image> decoded = makeError(label, "has no data");
         if (image.bufferView >= 0) {
             if (static_cast<size_t>(image.bufferView) >= mGltf.bufferViews.size())
@@ -720,10 +753,12 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
         Result<GlbLayout> layout = checkGlb(bytes, path);
         if (!layout) return layout.error();
         json.assign(reinterpret_cast<const char*>(bytes.data()) + layout->jsonOffset, layout->jsonLength);
-        loaded = loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), static_cast<unsigned int>(layout->length), baseDir);
+        loaded = loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
+                                             static_cast<unsigned int>(layout->length), baseDir);
     } else {
         json.assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-        loaded = loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(), static_cast<unsigned int>(json.size()), baseDir);
+        loaded = loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
+                                            baseDir);
     }
     if (!warn.empty()) log::warn(path + ": " + oneLine(warn));
     if (!loaded) return makeError(path, describeLoadError(err, json));

@@ -59,7 +59,8 @@ struct GltfBuilder {
         size_t offset = bin.size();
         bin.resize(offset + values.size() * sizeof(T));
         std::memcpy(bin.data() + offset, values.data(), values.size() * sizeof(T));
-        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+        doc["bufferViews"].push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
         doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1},
                                     {"componentType", componentType},
                                     {"count", count},
@@ -81,7 +82,8 @@ struct GltfBuilder {
         json out = doc;
         while (bin.size() % 4) bin.push_back(0);
         if (binName.empty()) {
-            out["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
+            out["buffers"] = {
+                {{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
         } else {
             out["buffers"] = {{{"byteLength", bin.size()}, {"uri", binName}}};
             writeBytes(path.parent_path() / binName, bin.data(), bin.size());
@@ -130,9 +132,11 @@ GltfBuilder quadBuilder(int indexType, bool withNormals = true) {
     if (withNormals) attributes["NORMAL"] = b.vec3(kQuadNormals);
     json primitive = {{"attributes", attributes}};
     if (indexType == kUnsignedByte)
-        primitive["indices"] = b.accessor(std::vector<uint8_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedByte, "SCALAR", 6);
+        primitive["indices"] =
+            b.accessor(std::vector<uint8_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedByte, "SCALAR", 6);
     else if (indexType == kUnsignedShort)
-        primitive["indices"] = b.accessor(std::vector<uint16_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedShort, "SCALAR", 6);
+        primitive["indices"] =
+            b.accessor(std::vector<uint16_t>(kQuadIndices.begin(), kQuadIndices.end()), kUnsignedShort, "SCALAR", 6);
     else if (indexType == kUnsignedInt)
         primitive["indices"] = b.accessor(kQuadIndices, kUnsignedInt, "SCALAR", 6);
     b.doc["meshes"] = {{{"name", "quad"}, {"primitives", {primitive}}}};
@@ -356,10 +360,11 @@ TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
                        {{"uri", "normal%20map.png"}},
                        {{"bufferView", view}, {"mimeType", "image/png"}}};
     b.doc["textures"] = {{{"source", 0}}, {{"source", 1}}, {{"source", 2}}};
-    b.doc["materials"] = {{{"name", "plain"}},
-                          {{"name", "skin"},
-                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 2}}}}},
-                           {"normalTexture", {{"index", 1}}}}};
+    b.doc["materials"] = {
+        {{"name", "plain"}},
+        {{"name", "skin"},
+         {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 2}}}}},
+         {"normalTexture", {{"index", 1}}}}};
     b.doc["meshes"][0]["primitives"][0]["material"] = 0;
     json second = b.doc["meshes"][0]["primitives"][0];
     second["material"] = 1;
