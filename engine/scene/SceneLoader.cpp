@@ -24,6 +24,9 @@ constexpr double kParallelTolerance = 1e-6;
 
 const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
 const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
+const std::vector<std::string> kSssBlurs = {"bilateral", "control"};
+constexpr int kMinSsaoSamples = 8;
+constexpr int kMaxSsaoSamples = 128;
 
 double length(const glm::vec3& v) {
     const double x = v.x, y = v.y, z = v.z;
@@ -151,14 +154,44 @@ void readMaterial(JsonObject& parent, const std::string& sceneFile, Material& ma
     object.string("profile", material.profile, false);
 }
 
+// An integer that must also satisfy `valid` (odd, or 0 as "unset"): one message
+// for every way of missing, as the range alone would not say it all.
+void constrainedInteger(JsonObject& object, const char* key, int& out, bool (*valid)(int),
+                        const std::string& requirement) {
+    int value = out;
+    object.integer(key, value);
+    if (object.has(key) &&
+        object.context().check(valid(value), object.pointer(key), requirement + ", got " + std::to_string(value))) {
+        out = value;
+    }
+}
+
+bool isSsaoSampleCount(int samples) {
+    return samples >= kMinSsaoSamples && samples <= kMaxSsaoSamples;
+}
+
+void readCharacterSsao(JsonObject& parent, CharacterSsao& ssao) {
+    const json* value = parent.member("ssao");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("ssao"), {"radius_m", "samples"});
+    object.number("radius_m", ssao.radiusM, Range::atLeast(0.0));
+    constrainedInteger(
+        object, "samples", ssao.samples, [](int n) { return n == 0 || isSsaoSampleCount(n); },
+        "must be 0 (use settings.ssao.samples) or in [" + std::to_string(kMinSsaoSamples) + ", " +
+            std::to_string(kMaxSsaoSamples) + "]");
+}
+
 void readCharacter(JsonContext& context, const json& value, const std::string& pointer, const std::string& sceneFile,
                    Character& character) {
-    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material"});
+    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material", "ssao"});
     object.string("name", character.name);
     readTransform(object, character.transform);
     readMesh(object, sceneFile, character.mesh);
     object.number("metres_per_unit", character.metresPerUnit, Range::above(0.0));
     readMaterial(object, sceneFile, character.material);
+    readCharacterSsao(object, character.ssao);
 }
 
 void readBackground(JsonObject& root, Background& background) {
@@ -170,37 +203,98 @@ void readBackground(JsonObject& root, Background& background) {
     object.vec3("colour", background.colour, Range::atLeast(0.0));
 }
 
+// A string from `options`, stored as that string.
+void choiceString(JsonObject& object, const char* key, const char* noun, const std::vector<std::string>& options,
+                  std::string& out) {
+    int index = 0;
+    object.choice(key, noun, options, index);
+    if (object.has(key)) {
+        out = options[static_cast<size_t>(index)];
+    }
+}
+
+void readShadow(JsonObject& parent, ShadowSettings& shadow) {
+    const json* value = parent.member("shadow");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("shadow"),
+                      {"map_size", "bias_constant_m", "bias_slope_texels", "filter"});
+    object.integer("map_size", shadow.mapSize, Range::closed(64.0, 8192.0));
+    object.number("bias_constant_m", shadow.biasConstantM, Range::atLeast(0.0));
+    object.number("bias_slope_texels", shadow.biasSlopeTexels, Range::atLeast(0.0));
+    choiceString(object, "filter", "shadow filter", kShadowFilters, shadow.filter);
+}
+
+void readSss(JsonObject& parent, SssSettings& sss) {
+    const json* value = parent.member("sss");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("sss"),
+                      {"enabled", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm", "gaussians",
+                       "width_scale", "min_width_px", "mix"});
+    object.boolean("enabled", sss.enabled);
+    choiceString(object, "blur", "SSS blur", kSssBlurs, sss.blur);
+    constrainedInteger(
+        object, "taps", sss.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
+        "must be an odd number of taps in [3, 33]");
+    object.number("bilateral_depth_mm", sss.bilateralDepthMm, Range::above(0.0));
+    object.number("control_depth_scale_per_mm", sss.controlDepthScalePerMm, Range::atLeast(0.0));
+    object.integer("gaussians", sss.gaussians, Range::closed(1.0, 8.0));
+    object.number("width_scale", sss.widthScale, Range::atLeast(0.0));
+    object.number("min_width_px", sss.minWidthPx, Range::atLeast(0.0));
+    object.number("mix", sss.mix, Range::closed(0.0, 1.0));
+}
+
+void readTransmittance(JsonObject& parent, TransmittanceSettings& transmittance) {
+    const json* value = parent.member("transmittance");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("transmittance"), {"enabled", "shrink_mm", "strength"});
+    object.boolean("enabled", transmittance.enabled);
+    object.number("shrink_mm", transmittance.shrinkMm, Range::atLeast(0.0));
+    object.number("strength", transmittance.strength, Range::atLeast(0.0));
+}
+
+void readSsao(JsonObject& parent, SsaoSettings& ssao) {
+    const json* value = parent.member("ssao");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("ssao"),
+                      {"enabled", "samples", "radius_m", "strength", "blur"});
+    object.boolean("enabled", ssao.enabled);
+    object.integer("samples", ssao.samples, Range::closed(kMinSsaoSamples, kMaxSsaoSamples));
+    object.number("radius_m", ssao.radiusM, Range::above(0.0));
+    object.number("strength", ssao.strength, Range::closed(0.0, 1.0));
+    object.boolean("blur", ssao.blur);
+}
+
 void readSettings(JsonObject& root, RenderSettings& settings) {
     const json* value = root.member("settings");
     if (value == nullptr) {
         return;
     }
-    JsonObject object(
-        root.context(), *value, root.pointer("settings"),
-        {"exposure", "ambient", "shadow_map_size", "shadow_bias_constant", "shadow_bias_slope", "shadow_filter"});
+    JsonObject object(root.context(), *value, root.pointer("settings"),
+                      {"exposure", "ambient", "energy_conservation", "shadow", "sss", "transmittance", "ssao"});
     object.number("exposure", settings.exposure, Range::above(0.0));
     object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
-    object.integer("shadow_map_size", settings.shadowMapSize, Range::closed(64.0, 8192.0));
-    object.number("shadow_bias_constant", settings.shadowBiasConstant, Range::atLeast(0.0));
-    object.number("shadow_bias_slope", settings.shadowBiasSlope, Range::atLeast(0.0));
-    int filter = 0;
-    object.choice("shadow_filter", "shadow filter", kShadowFilters, filter);
-    if (object.has("shadow_filter")) {
-        settings.shadowFilter = kShadowFilters[static_cast<size_t>(filter)];
-    }
+    object.boolean("energy_conservation", settings.energyConservation);
+    readShadow(object, settings.shadow);
+    readSss(object, settings.sss);
+    readTransmittance(object, settings.transmittance);
+    readSsao(object, settings.ssao);
 }
 
 }  // namespace
 
-Result<Scene> parseScene(const std::string& jsonText, const std::string& pathForMessages) {
-    Result<json> document = parseJsonText(jsonText, pathForMessages);
-    if (!document) {
-        return document.error();
-    }
+Result<Scene> readSceneDocument(const json& document, const std::string& pathForMessages) {
     Scene scene;
     scene.path = pathForMessages;
     JsonContext context(pathForMessages);
-    JsonObject root(context, *document, "", {"camera", "lights", "characters", "background", "settings"});
+    JsonObject root(context, document, "", {"camera", "lights", "characters", "background", "settings"});
     readCamera(root, scene.camera);
 
     if (const json* lights = root.array("lights", kMaxLights, "lights")) {
@@ -225,7 +319,19 @@ Result<Scene> parseScene(const std::string& jsonText, const std::string& pathFor
     return scene;
 }
 
+Result<Scene> parseScene(const std::string& jsonText, const std::string& pathForMessages) {
+    Result<json> document = parseJsonText(jsonText, pathForMessages);
+    if (!document) {
+        return document.error();
+    }
+    return readSceneDocument(*document, pathForMessages);
+}
+
 Result<Scene> loadScene(const std::string& path) {
+    return loadScene(path, {});
+}
+
+Result<Scene> loadScene(const std::string& path, const std::vector<std::string>& overrides) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         return makeError(path, "cannot open scene file: it is a directory");
@@ -243,7 +349,7 @@ Result<Scene> loadScene(const std::string& path) {
     if (file.bad()) {
         return makeError(path, "cannot read scene file");
     }
-    return parseScene(text, path);
+    return parseSceneWithOverrides(text, path, overrides);
 }
 
 }  // namespace dermis

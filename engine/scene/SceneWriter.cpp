@@ -96,17 +96,52 @@ Json characterJson(const Character& character, const std::string& sceneFile) {
     j["mesh"] = std::move(mesh);
     j["metres_per_unit"] = number(character.metresPerUnit);
     j["material"] = std::move(material);
+    j["ssao"] = Json{{"radius_m", number(character.ssao.radiusM)}, {"samples", character.ssao.samples}};
     return j;
 }
 
 Json settingsJson(const RenderSettings& settings) {
+    const ShadowSettings& shadow = settings.shadow;
+    Json shadowJson;
+    shadowJson["map_size"] = shadow.mapSize;
+    shadowJson["bias_constant_m"] = number(shadow.biasConstantM);
+    shadowJson["bias_slope_texels"] = number(shadow.biasSlopeTexels);
+    shadowJson["filter"] = shadow.filter;
+
+    const SssSettings& sss = settings.sss;
+    Json sssJson;
+    sssJson["enabled"] = sss.enabled;
+    sssJson["blur"] = sss.blur;
+    sssJson["taps"] = sss.taps;
+    sssJson["bilateral_depth_mm"] = number(sss.bilateralDepthMm);
+    sssJson["control_depth_scale_per_mm"] = number(sss.controlDepthScalePerMm);
+    sssJson["gaussians"] = sss.gaussians;
+    sssJson["width_scale"] = number(sss.widthScale);
+    sssJson["min_width_px"] = number(sss.minWidthPx);
+    sssJson["mix"] = number(sss.mix);
+
+    const TransmittanceSettings& transmittance = settings.transmittance;
+    Json transmittanceJson;
+    transmittanceJson["enabled"] = transmittance.enabled;
+    transmittanceJson["shrink_mm"] = number(transmittance.shrinkMm);
+    transmittanceJson["strength"] = number(transmittance.strength);
+
+    const SsaoSettings& ssao = settings.ssao;
+    Json ssaoJson;
+    ssaoJson["enabled"] = ssao.enabled;
+    ssaoJson["samples"] = ssao.samples;
+    ssaoJson["radius_m"] = number(ssao.radiusM);
+    ssaoJson["strength"] = number(ssao.strength);
+    ssaoJson["blur"] = ssao.blur;
+
     Json j;
     j["exposure"] = number(settings.exposure);
     j["ambient"] = vec3(settings.ambient);
-    j["shadow_map_size"] = settings.shadowMapSize;
-    j["shadow_bias_constant"] = number(settings.shadowBiasConstant);
-    j["shadow_bias_slope"] = number(settings.shadowBiasSlope);
-    j["shadow_filter"] = settings.shadowFilter;
+    j["energy_conservation"] = settings.energyConservation;
+    j["shadow"] = std::move(shadowJson);
+    j["sss"] = std::move(sssJson);
+    j["transmittance"] = std::move(transmittanceJson);
+    j["ssao"] = std::move(ssaoJson);
     return j;
 }
 

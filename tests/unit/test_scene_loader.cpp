@@ -37,12 +37,18 @@ constexpr const char* kFullScene = R"({
      "mesh": {"gltf": "../meshes/lee.glb"}, "metres_per_unit": 0.01,
      "material": {"albedo_map": "/abs/albedo.png", "normal_map": "maps/normal.png", "flip_v": true,
                   "procedural": false, "albedo": [0.7, 0.5, 0.4], "roughness": 0.35, "rho_s": 0.2,
-                  "profile": "marble"}},
+                  "profile": "marble"},
+     "ssao": {"radius_m": 0.03, "samples": 64}},
     {"name": "head", "mesh": {"procedural": "head"}, "material": {"procedural": true, "profile": "none"}}
   ],
   "background": {"colour": [0.1, 0.2, 0.3]},
-  "settings": {"exposure": 1.5, "ambient": [0.01, 0.02, 0.03], "shadow_map_size": 2048,
-               "shadow_bias_constant": 0.001, "shadow_bias_slope": 1.5, "shadow_filter": "poisson"}
+  "settings": {"exposure": 1.5, "ambient": [0.01, 0.02, 0.03], "energy_conservation": false,
+               "shadow": {"map_size": 2048, "bias_constant_m": 0.001, "bias_slope_texels": 1.5, "filter": "poisson"},
+               "sss": {"enabled": false, "blur": "control", "taps": 13, "bilateral_depth_mm": 2.5,
+                       "control_depth_scale_per_mm": 0.75, "gaussians": 4, "width_scale": 1.25, "min_width_px": 0.25,
+                       "mix": 0.3},
+               "transmittance": {"enabled": false, "shrink_mm": 0.5, "strength": 2},
+               "ssao": {"enabled": false, "samples": 32, "radius_m": 0.05, "strength": 0.8, "blur": false}}
 })";
 
 #define EXPECT_VEC3_EQ(a, b)                \
@@ -101,14 +107,36 @@ void expectSceneEq(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.material.roughness, y.material.roughness);
         EXPECT_EQ(x.material.rhoS, y.material.rhoS);
         EXPECT_EQ(x.material.profile, y.material.profile);
+        EXPECT_EQ(x.ssao.radiusM, y.ssao.radiusM);
+        EXPECT_EQ(x.ssao.samples, y.ssao.samples);
     }
     EXPECT_VEC3_EQ(a.background.colour, b.background.colour);
     EXPECT_EQ(a.settings.exposure, b.settings.exposure);
     EXPECT_VEC3_EQ(a.settings.ambient, b.settings.ambient);
-    EXPECT_EQ(a.settings.shadowMapSize, b.settings.shadowMapSize);
-    EXPECT_EQ(a.settings.shadowBiasConstant, b.settings.shadowBiasConstant);
-    EXPECT_EQ(a.settings.shadowBiasSlope, b.settings.shadowBiasSlope);
-    EXPECT_EQ(a.settings.shadowFilter, b.settings.shadowFilter);
+    EXPECT_EQ(a.settings.energyConservation, b.settings.energyConservation);
+    EXPECT_EQ(a.settings.shadow.mapSize, b.settings.shadow.mapSize);
+    EXPECT_EQ(a.settings.shadow.biasConstantM, b.settings.shadow.biasConstantM);
+    EXPECT_EQ(a.settings.shadow.biasSlopeTexels, b.settings.shadow.biasSlopeTexels);
+    EXPECT_EQ(a.settings.shadow.filter, b.settings.shadow.filter);
+    const SssSettings& x = a.settings.sss;
+    const SssSettings& y = b.settings.sss;
+    EXPECT_EQ(x.enabled, y.enabled);
+    EXPECT_EQ(x.blur, y.blur);
+    EXPECT_EQ(x.taps, y.taps);
+    EXPECT_EQ(x.bilateralDepthMm, y.bilateralDepthMm);
+    EXPECT_EQ(x.controlDepthScalePerMm, y.controlDepthScalePerMm);
+    EXPECT_EQ(x.gaussians, y.gaussians);
+    EXPECT_EQ(x.widthScale, y.widthScale);
+    EXPECT_EQ(x.minWidthPx, y.minWidthPx);
+    EXPECT_EQ(x.mix, y.mix);
+    EXPECT_EQ(a.settings.transmittance.enabled, b.settings.transmittance.enabled);
+    EXPECT_EQ(a.settings.transmittance.shrinkMm, b.settings.transmittance.shrinkMm);
+    EXPECT_EQ(a.settings.transmittance.strength, b.settings.transmittance.strength);
+    EXPECT_EQ(a.settings.ssao.enabled, b.settings.ssao.enabled);
+    EXPECT_EQ(a.settings.ssao.samples, b.settings.ssao.samples);
+    EXPECT_EQ(a.settings.ssao.radiusM, b.settings.ssao.radiusM);
+    EXPECT_EQ(a.settings.ssao.strength, b.settings.ssao.strength);
+    EXPECT_EQ(a.settings.ssao.blur, b.settings.ssao.blur);
 }
 
 // The error text for a scene that must fail; "" (and a test failure) if it loads.
@@ -210,6 +238,8 @@ TEST(SceneLoader, FullSceneParsesIntoExpectedValues) {
     EXPECT_EQ(lee.material.roughness, 0.35f);
     EXPECT_EQ(lee.material.rhoS, 0.2f);
     EXPECT_EQ(lee.material.profile, "marble");
+    EXPECT_EQ(lee.ssao.radiusM, 0.03f);
+    EXPECT_EQ(lee.ssao.samples, 64);
 
     const Character& head = s.characters[1];
     EXPECT_EQ(head.name, "head");
@@ -218,14 +248,72 @@ TEST(SceneLoader, FullSceneParsesIntoExpectedValues) {
     EXPECT_TRUE(head.material.procedural);
     EXPECT_EQ(head.material.profile, "none");
     EXPECT_EQ(head.material.albedoMap, "");  // empty stays empty, not the scene directory
+    EXPECT_EQ(head.ssao.radiusM, 0.0f);      // 0: the settings' radius and sample count
+    EXPECT_EQ(head.ssao.samples, 0);
 
     EXPECT_VEC3_EQ(s.background.colour, glm::vec3(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(s.settings.exposure, 1.5f);
     EXPECT_VEC3_EQ(s.settings.ambient, glm::vec3(0.01f, 0.02f, 0.03f));
-    EXPECT_EQ(s.settings.shadowMapSize, 2048);
-    EXPECT_EQ(s.settings.shadowBiasConstant, 0.001f);
-    EXPECT_EQ(s.settings.shadowBiasSlope, 1.5f);
-    EXPECT_EQ(s.settings.shadowFilter, "poisson");
+    EXPECT_FALSE(s.settings.energyConservation);
+    EXPECT_EQ(s.settings.shadow.mapSize, 2048);
+    EXPECT_EQ(s.settings.shadow.biasConstantM, 0.001f);
+    EXPECT_EQ(s.settings.shadow.biasSlopeTexels, 1.5f);
+    EXPECT_EQ(s.settings.shadow.filter, "poisson");
+    const SssSettings& sss = s.settings.sss;
+    EXPECT_FALSE(sss.enabled);
+    EXPECT_EQ(sss.blur, "control");
+    EXPECT_EQ(sss.taps, 13);
+    EXPECT_EQ(sss.bilateralDepthMm, 2.5f);
+    EXPECT_EQ(sss.controlDepthScalePerMm, 0.75f);
+    EXPECT_EQ(sss.gaussians, 4);
+    EXPECT_EQ(sss.widthScale, 1.25f);
+    EXPECT_EQ(sss.minWidthPx, 0.25f);
+    EXPECT_EQ(sss.mix, 0.3f);
+    EXPECT_FALSE(s.settings.transmittance.enabled);
+    EXPECT_EQ(s.settings.transmittance.shrinkMm, 0.5f);
+    EXPECT_EQ(s.settings.transmittance.strength, 2.0f);
+    const SsaoSettings& ssao = s.settings.ssao;
+    EXPECT_FALSE(ssao.enabled);
+    EXPECT_EQ(ssao.samples, 32);
+    EXPECT_EQ(ssao.radiusM, 0.05f);
+    EXPECT_EQ(ssao.strength, 0.8f);
+    EXPECT_FALSE(ssao.blur);
+}
+
+// kFullScene must exercise every field: a field left at its default would let
+// a writer that forgets it pass the round trip.
+TEST(SceneLoader, FullSceneSetsEverySettingAwayFromItsDefault) {
+    const Result<Scene> result = parseScene(kFullScene, kScenePath);
+    ASSERT_TRUE(result.ok()) << result.error().message();
+    const RenderSettings& s = result->settings;
+    const RenderSettings d;
+    EXPECT_NE(s.exposure, d.exposure);
+    EXPECT_NE(s.ambient, d.ambient);
+    EXPECT_NE(s.energyConservation, d.energyConservation);
+    EXPECT_NE(s.shadow.mapSize, d.shadow.mapSize);
+    EXPECT_NE(s.shadow.biasConstantM, d.shadow.biasConstantM);
+    EXPECT_NE(s.shadow.biasSlopeTexels, d.shadow.biasSlopeTexels);
+    EXPECT_NE(s.shadow.filter, d.shadow.filter);
+    EXPECT_NE(s.sss.enabled, d.sss.enabled);
+    EXPECT_NE(s.sss.blur, d.sss.blur);
+    EXPECT_NE(s.sss.taps, d.sss.taps);
+    EXPECT_NE(s.sss.bilateralDepthMm, d.sss.bilateralDepthMm);
+    EXPECT_NE(s.sss.controlDepthScalePerMm, d.sss.controlDepthScalePerMm);
+    EXPECT_NE(s.sss.gaussians, d.sss.gaussians);
+    EXPECT_NE(s.sss.widthScale, d.sss.widthScale);
+    EXPECT_NE(s.sss.minWidthPx, d.sss.minWidthPx);
+    EXPECT_NE(s.sss.mix, d.sss.mix);
+    EXPECT_NE(s.transmittance.enabled, d.transmittance.enabled);
+    EXPECT_NE(s.transmittance.shrinkMm, d.transmittance.shrinkMm);
+    EXPECT_NE(s.transmittance.strength, d.transmittance.strength);
+    EXPECT_NE(s.ssao.enabled, d.ssao.enabled);
+    EXPECT_NE(s.ssao.samples, d.ssao.samples);
+    EXPECT_NE(s.ssao.radiusM, d.ssao.radiusM);
+    EXPECT_NE(s.ssao.strength, d.ssao.strength);
+    EXPECT_NE(s.ssao.blur, d.ssao.blur);
+    const CharacterSsao defaultSsao;
+    EXPECT_NE(result->characters[0].ssao.radiusM, defaultSsao.radiusM);
+    EXPECT_NE(result->characters[0].ssao.samples, defaultSsao.samples);
 }
 
 TEST(SceneLoader, AbsentKeysTakeTheStructDefaults) {
@@ -236,8 +324,8 @@ TEST(SceneLoader, AbsentKeysTakeTheStructDefaults) {
     expectSceneEq(*empty, expected);
 
     const Result<Scene> minimal = parseScene(
-        R"({"lights": [{}], "characters": [{"mesh": {"procedural": "sphere"}}], "camera": {}, "background": {},
-            "settings": {}})",
+        R"({"lights": [{}], "characters": [{"mesh": {"procedural": "sphere"}, "ssao": {}}], "camera": {},
+            "background": {}, "settings": {"shadow": {}, "sss": {}, "transmittance": {}, "ssao": {}}})",
         "minimal.json");
     ASSERT_TRUE(minimal.ok()) << minimal.error().message();
     expected.path = "minimal.json";
@@ -255,11 +343,51 @@ TEST(SceneLoader, SceneWithoutCharactersIsValid) {
 }
 
 TEST(SceneLoader, IntegralSettingsAcceptIntegralNumbersOnly) {
-    const Result<Scene> scene = parseScene(R"({"settings": {"shadow_map_size": 512.0}})", "x.json");
+    const Result<Scene> scene = parseScene(
+        R"({"settings": {"shadow": {"map_size": 512.0}, "sss": {"taps": 7.0}, "ssao": {"samples": 8.0}}})", "x.json");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    EXPECT_EQ(scene->settings.shadowMapSize, 512);
-    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 512.5}})"),
-              "/settings/shadow_map_size: expected an integer, got 512.5");
+    EXPECT_EQ(scene->settings.shadow.mapSize, 512);
+    EXPECT_EQ(scene->settings.sss.taps, 7);
+    EXPECT_EQ(scene->settings.ssao.samples, 8);
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow": {"map_size": 512.5}}})"),
+              "/settings/shadow/map_size: expected an integer, got 512.5");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"taps": 9.5}}})"), "/settings/sss/taps: expected an integer, got 9.5");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"gaussians": "6"}}})"),
+              "/settings/sss/gaussians: expected an integer, got a string");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"samples": 16.5})")),
+              "/characters/0/ssao/samples: expected an integer, got 16.5");
+}
+
+TEST(SceneLoader, SssTapsAreOddAndWithinRange) {
+    for (const int taps : {3, 5, 9, 31, 33}) {
+        const Result<Scene> scene =
+            parseScene(R"({"settings": {"sss": {"taps": )" + std::to_string(taps) + "}}}", "x.json");
+        ASSERT_TRUE(scene.ok()) << scene.error().message();
+        EXPECT_EQ(scene->settings.sss.taps, taps);
+    }
+    for (const int taps : {-3, 0, 1, 2, 4, 10, 32, 34, 35}) {
+        EXPECT_EQ(errorOf(R"({"settings": {"sss": {"taps": )" + std::to_string(taps) + "}}}"),
+                  "/settings/sss/taps: must be an odd number of taps in [3, 33], got " + std::to_string(taps));
+    }
+}
+
+TEST(SceneLoader, CharacterSsaoSamplesAreZeroOrInRange) {
+    for (const int samples : {0, 8, 64, 128}) {
+        const Result<Scene> scene = parseScene(
+            withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"samples": )" + std::to_string(samples) + "}"),
+            "x.json");
+        ASSERT_TRUE(scene.ok()) << scene.error().message();
+        EXPECT_EQ(scene->characters[0].ssao.samples, samples);
+    }
+    for (const int samples : {-8, 1, 7, 129}) {
+        EXPECT_EQ(
+            errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"samples": )" +
+                                  std::to_string(samples) + "}")),
+            "/characters/0/ssao/samples: must be 0 (use settings.ssao.samples) or in [8, 128], got " +
+                std::to_string(samples));
+    }
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius_m": -0.01})")),
+              "/characters/0/ssao/radius_m: must be >= 0, got -0.01");
 }
 
 TEST(SceneLoader, LoadsFromDiskAndResolvesPathsFromTheFilesDirectory) {
@@ -289,6 +417,37 @@ TEST(SceneLoader, ManualExampleParses) {
     ASSERT_EQ(scene->characters.size(), 2u);
     EXPECT_EQ(scene->characters[1].mesh.gltfPath, "content/meshes/lee.glb");
     EXPECT_EQ(scene->characters[1].metresPerUnit, 0.01f);
+    EXPECT_EQ(scene->characters[1].ssao.samples, 32);
+    EXPECT_EQ(scene->settings.shadow.mapSize, 2048);
+    EXPECT_EQ(scene->settings.shadow.filter, "poisson");
+    EXPECT_EQ(scene->settings.sss.taps, 13);
+    EXPECT_EQ(scene->settings.ssao.strength, 0.8f);
+}
+
+// Every key the writer emits must be documented in the manual's tables.
+TEST(SceneLoader, ManualDocumentsEveryKey) {
+    const std::string manual = std::string(DERMIS_SOURCE_CONTENT_DIR) + "/scenes/README.md";
+    std::ifstream file(manual);
+    ASSERT_TRUE(file) << manual;
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    Scene scene;
+    scene.lights.emplace_back();
+    scene.characters.emplace_back();
+    scene.characters[0].mesh.procedural = "head";
+    const std::string written = sceneToJson(scene);
+    size_t keys = 0;
+    for (size_t at = written.find("\n"); at != std::string::npos; at = written.find("\n", at + 1)) {
+        const size_t open = written.find_first_not_of(' ', at + 1);
+        if (open == std::string::npos || written[open] != '"') {
+            continue;
+        }
+        const std::string key = written.substr(open + 1, written.find('"', open + 1) - open - 1);
+        const bool documented = text.find("| `" + key + "` |") != std::string::npos ||
+                                text.find("### `" + key + "` (") != std::string::npos;
+        EXPECT_TRUE(documented) << "undocumented key " << key;
+        ++keys;
+    }
+    EXPECT_GT(keys, 50u);
 }
 
 TEST(SceneWriter, RoundTripReproducesEveryField) {
@@ -324,7 +483,12 @@ TEST(SceneWriter, RoundTripKeepsAwkwardFloatsAndDefaults) {
     character.metresPerUnit = 0.0254f;
     character.transform.rotationDeg = glm::vec3(-179.99f, 0.001f, 720.0f);
     scene.characters = {character};
-    scene.settings.shadowMapSize = 64;
+    scene.settings.shadow.mapSize = 64;
+    scene.settings.shadow.biasConstantM = 1e-7f;
+    scene.settings.sss.mix = 1.0f / 3.0f;
+    scene.settings.sss.taps = 33;
+    scene.settings.ssao.radiusM = 0.1f;
+    scene.characters[0].ssao.radiusM = 2.0f / 3.0f;
 
     const std::string text = sceneToJson(scene);
     const Result<Scene> again = parseScene(text, scene.path);
@@ -344,6 +508,19 @@ TEST(SceneWriter, WritesShortestDecimalsWithTwoSpaceIndent) {
     EXPECT_NE(text.find("\"near_m\": 0.05,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"position_m\": [0.0, 0.0, 1.0],"), std::string::npos) << text;
     EXPECT_EQ(text.find("0.0500000"), std::string::npos) << text;
+}
+
+TEST(SceneWriter, WritesSettingsAsNestedGroups) {
+    const std::string text = sceneToJson(Scene{});
+    EXPECT_NE(text.find("\"energy_conservation\": true,"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"shadow\": {\n      \"map_size\": 1024,"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"filter\": \"pcf4x4\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"blur\": \"bilateral\",\n      \"taps\": 9,"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\"transmittance\": {"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"ssao\": {\n      \"enabled\": true,\n      \"samples\": 16,"), std::string::npos) << text;
+    EXPECT_EQ(text.find("shadow_map_size"), std::string::npos) << text;
 }
 
 TEST(SceneLoader, MissingFileNamesTheFile) {
@@ -410,8 +587,11 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
     EXPECT_NE(what.find("/lights/0/type"), std::string::npos);
     EXPECT_NE(what.find("laser"), std::string::npos);
     EXPECT_EQ(what, "/lights/0/type: unknown light type \"laser\" (expected directional, spot or point)");
-    EXPECT_EQ(errorOf(R"({"settings": {"shadow_filter": "pcf"}})"),
-              "/settings/shadow_filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow": {"filter": "pcf"}}})"),
+              "/settings/shadow/filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": "gaussian"}}})"),
+              "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected bilateral or control)");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": 1}}})"), "/settings/sss/blur: expected a string, got a number");
 }
 
 TEST(SceneLoader, MeshNeedsExactlyOneSource) {
@@ -457,15 +637,74 @@ TEST(SceneLoader, OutOfRangeValuesAreRejected) {
               "/characters/0/material/albedo/1: must be in [0, 1], got 1.2");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": ""})")),
               "/characters/0/material/profile: must not be empty");
-    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 32}})"),
-              "/settings/shadow_map_size: must be in [64, 8192], got 32");
-    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 10000}})"),
-              "/settings/shadow_map_size: must be in [64, 8192], got 10000");
     EXPECT_EQ(errorOf(R"({"settings": {"exposure": 0}})"), "/settings/exposure: must be > 0, got 0");
-    EXPECT_EQ(errorOf(R"({"settings": {"shadow_bias_slope": -0.5}})"),
-              "/settings/shadow_bias_slope: must be >= 0, got -0.5");
+    EXPECT_EQ(errorOf(R"({"settings": {"ambient": [0, -1, 0]}})"), "/settings/ambient/1: must be >= 0, got -1");
     // A positive value that rounds to 0 as a float is as bad as 0.
     EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-60}})"), "/camera/near_m: must be > 0, got 1e-60");
+}
+
+TEST(SceneLoader, OutOfRangeSettingsAreRejected) {
+    const auto settingsError = [](const std::string& group, const std::string& member) {
+        return errorOf(R"({"settings": {")" + group + R"(": {)" + member + "}}}");
+    };
+    EXPECT_EQ(settingsError("shadow", R"("map_size": 32)"), "/settings/shadow/map_size: must be in [64, 8192], got 32");
+    EXPECT_EQ(settingsError("shadow", R"("map_size": 10000)"),
+              "/settings/shadow/map_size: must be in [64, 8192], got 10000");
+    EXPECT_EQ(settingsError("shadow", R"("bias_constant_m": -0.001)"),
+              "/settings/shadow/bias_constant_m: must be >= 0, got -0.001");
+    EXPECT_EQ(settingsError("shadow", R"("bias_slope_texels": -0.5)"),
+              "/settings/shadow/bias_slope_texels: must be >= 0, got -0.5");
+    EXPECT_EQ(settingsError("sss", R"("bilateral_depth_mm": 0)"),
+              "/settings/sss/bilateral_depth_mm: must be > 0, got 0");
+    EXPECT_EQ(settingsError("sss", R"("control_depth_scale_per_mm": -1)"),
+              "/settings/sss/control_depth_scale_per_mm: must be >= 0, got -1");
+    EXPECT_EQ(settingsError("sss", R"("gaussians": 0)"), "/settings/sss/gaussians: must be in [1, 8], got 0");
+    EXPECT_EQ(settingsError("sss", R"("gaussians": 9)"), "/settings/sss/gaussians: must be in [1, 8], got 9");
+    EXPECT_EQ(settingsError("sss", R"("width_scale": -0.5)"), "/settings/sss/width_scale: must be >= 0, got -0.5");
+    EXPECT_EQ(settingsError("sss", R"("min_width_px": -1)"), "/settings/sss/min_width_px: must be >= 0, got -1");
+    EXPECT_EQ(settingsError("sss", R"("mix": 1.5)"), "/settings/sss/mix: must be in [0, 1], got 1.5");
+    EXPECT_EQ(settingsError("sss", R"("mix": -0.1)"), "/settings/sss/mix: must be in [0, 1], got -0.1");
+    EXPECT_EQ(settingsError("transmittance", R"("shrink_mm": -1)"),
+              "/settings/transmittance/shrink_mm: must be >= 0, got -1");
+    EXPECT_EQ(settingsError("transmittance", R"("strength": -2)"),
+              "/settings/transmittance/strength: must be >= 0, got -2");
+    EXPECT_EQ(settingsError("ssao", R"("samples": 7)"), "/settings/ssao/samples: must be in [8, 128], got 7");
+    EXPECT_EQ(settingsError("ssao", R"("samples": 129)"), "/settings/ssao/samples: must be in [8, 128], got 129");
+    EXPECT_EQ(settingsError("ssao", R"("radius_m": 0)"), "/settings/ssao/radius_m: must be > 0, got 0");
+    EXPECT_EQ(settingsError("ssao", R"("strength": 1.01)"), "/settings/ssao/strength: must be in [0, 1], got 1.01");
+    // The edges of closed ranges are accepted.
+    const Result<Scene> edges = parseScene(
+        R"({"settings": {"shadow": {"map_size": 8192, "bias_constant_m": 0, "bias_slope_texels": 0},
+                         "sss": {"gaussians": 8, "width_scale": 0, "min_width_px": 0, "mix": 1,
+                                 "control_depth_scale_per_mm": 0},
+                         "transmittance": {"shrink_mm": 0, "strength": 0},
+                         "ssao": {"samples": 128, "strength": 0}}})",
+        "x.json");
+    ASSERT_TRUE(edges.ok()) << edges.error().message();
+    EXPECT_EQ(edges->settings.shadow.mapSize, 8192);
+    EXPECT_EQ(edges->settings.sss.gaussians, 8);
+    EXPECT_EQ(edges->settings.sss.mix, 1.0f);
+    EXPECT_EQ(edges->settings.ssao.samples, 128);
+}
+
+TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": []}})"), "/settings/sss: expected an object, got an array");
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow": 1024}})"), "/settings/shadow: expected an object, got a number");
+    EXPECT_EQ(errorOf(R"({"settings": {"ssao": {"enabled": "yes"}}})"),
+              "/settings/ssao/enabled: expected true or false, got a string");
+    EXPECT_EQ(errorOf(R"({"settings": {"energy_conservation": 1}})"),
+              "/settings/energy_conservation: expected true or false, got a number");
+    EXPECT_EQ(errorOf(R"({"settings": {"transmittance": {"shrink": 1}}})"),
+              "/settings/transmittance/shrink: unknown key \"shrink\" (known: enabled, shrink_mm and strength)");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"width": 1}}})"),
+              "/settings/sss/width: unknown key \"width\" (known: enabled, blur, taps, bilateral_depth_mm, "
+              "control_depth_scale_per_mm, gaussians, width_scale, min_width_px and mix)");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius": 1})")),
+              "/characters/0/ssao/radius: unknown key \"radius\" (known: radius_m and samples)");
+    // The flat shadow keys of the first format are gone.
+    EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 2048}})"),
+              "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, ambient, "
+              "energy_conservation, shadow, sss, transmittance and ssao)");
 }
 
 TEST(SceneLoader, NumbersMustBeFiniteFloats) {
