@@ -34,6 +34,15 @@ void rasteriseTriangle(const MeshData& mesh, size_t triangle, uint8_t part, int 
     }
     const float area = edge(p[0], p[1], p[2]);
     if (area == 0.0f || !std::isfinite(area)) return;
+    // The surface's derivatives per texel step along x and y, from the
+    // triangle's edges in UV and in space.
+    const glm::vec2 d1 = p[1] - p[0];
+    const glm::vec2 d2 = p[2] - p[0];
+    const glm::vec3 e1 = v[1]->position - v[0]->position;
+    const glm::vec3 e2 = v[2]->position - v[0]->position;
+    const glm::vec3 perX = (e1 * d2.y - e2 * d1.y) / area;
+    const glm::vec3 perY = (e2 * d1.x - e1 * d2.x) / area;
+    const float footprint = std::max(glm::length(perX), glm::length(perY));
     const glm::vec2 lo = glm::min(p[0], glm::min(p[1], p[2]));
     const glm::vec2 hi = glm::max(p[0], glm::max(p[1], p[2]));
     const int x0 = std::max(0, static_cast<int>(std::floor(lo.x)));
@@ -57,6 +66,7 @@ void rasteriseTriangle(const MeshData& mesh, size_t triangle, uint8_t part, int 
             texel.tangent = orthonormalTo(texel.normal, tangent);
             const float sign = v[0]->tangent.w < 0.0f ? -1.0f : 1.0f;
             texel.bitangent = sign * glm::cross(texel.normal, texel.tangent);
+            texel.footprintM = footprint;
             texel.part = part;
             texel.covered = true;
         }

@@ -16,6 +16,7 @@ struct SurfaceTexel {
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     glm::vec3 tangent{1.0f, 0.0f, 0.0f};
     glm::vec3 bitangent{0.0f, 1.0f, 0.0f};  // w * cross(normal, tangent): up the image
+    float footprintM = 0.0f;                 // the longer side of the surface patch one texel covers
     uint8_t part = 0;                        // the triangle's tag
     bool covered = false;
 };

@@ -42,7 +42,7 @@ float nose(const vec3& p, const vec3& mirrored) {
     float d = taperedCapsule(p, {0.0f, 0.022f, 0.090f}, {0.0f, -0.019f, 0.114f}, 0.0062f, 0.0085f);
     d = smoothUnion(d, sphere(p, {0.0f, -0.0235f, 0.1125f}, 0.0105f), 0.006f);
     // The wings beside the nostrils.
-    d = smoothUnion(d, ellipsoid(mirrored - vec3(0.0125f, -0.0285f, 0.1015f), {0.0085f, 0.0075f, 0.009f}), 0.009f);
+    d = smoothUnion(d, ellipsoid(mirrored - vec3(0.0125f, -0.0285f, 0.1015f), {0.0085f, 0.0075f, 0.009f}), 0.014f);
     return d;
 }
 

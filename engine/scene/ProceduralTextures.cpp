@@ -18,9 +18,9 @@ constexpr uint8_t kEarPart = 1;
 constexpr int kGutterRingsPer1024 = 8;
 
 // Linear-light skin colours; the map stores them sRGB-encoded.
-const vec3 kBaseSkin{0.62f, 0.36f, 0.26f};
+const vec3 kBaseSkin{0.60f, 0.39f, 0.30f};
 const vec3 kFlushTint{1.0f, 0.78f, 0.82f};   // multiplies the base where blood shows
-const vec3 kLipColour{0.46f, 0.17f, 0.15f};
+const vec3 kLipColour{0.44f, 0.19f, 0.17f};
 const vec3 kBrowColour{0.085f, 0.050f, 0.034f};
 const vec3 kLashColour{0.05f, 0.03f, 0.024f};
 const vec3 kStubbleTint{0.80f, 0.79f, 0.84f};
@@ -28,6 +28,18 @@ const vec3 kStubbleTint{0.80f, 0.79f, 0.84f};
 float smoothStep(float edge0, float edge1, float x) {
     const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
+}
+
+// The share of a feature of the given size that texels of the given
+// footprint can hold without aliasing: all of it up to a third of the size,
+// none from two thirds. Stretched parts of a chart lose the fine detail
+// instead of turning it into streaks.
+float resolvable(float featureM, float footprintM) { return smoothStep(0.7f, 0.35f, footprintM / featureM); }
+
+// Value noise faded toward its mean where the texels cannot hold it.
+float bandLimitedValueNoise(const vec3& p, float frequencyPerM, float footprintM, uint32_t seed) {
+    const float keep = resolvable(1.0f / frequencyPerM, footprintM);
+    return keep > 0.0f ? 0.5f + keep * (valueNoise(p * frequencyPerM, seed) - 0.5f) : 0.5f;
 }
 
 float gaussian(const vec3& p, const vec3& centre, float sigmaM) {
@@ -65,7 +77,7 @@ struct Regions {
     float stubble = 0.0f;
 };
 
-Regions regionsAt(const vec3& p, bool ear) {
+Regions regionsAt(const vec3& p, bool ear, float footprintM) {
     const vec3 m(std::fabs(p.x), p.y, p.z);  // mirrored onto the right side
     Regions r;
     r.flush = 0.75f * gaussian(m, head::kCheekM, 0.018f) + 0.65f * gaussian(p, head::kNoseTipM, 0.012f) +
@@ -77,7 +89,8 @@ Regions regionsAt(const vec3& p, bool ear) {
     const float along = (m.x - head::kBrowM.x) / 0.021f;
     const float browCentreY = head::kBrowM.y - 0.004f * along * along - 0.002f * along;
     const float browHalfHeight = 0.0042f * (1.0f - 0.45f * along);
-    const float streaks = valueNoise(vec3(m.x * 300.0f, m.y * 3000.0f, m.z * 300.0f), 11u);
+    // Streaks along the hairs: fine across them, long along them.
+    const float streaks = bandLimitedValueNoise(vec3(m.x * 0.2f, m.y, m.z * 0.2f), 1500.0f, footprintM, 11u);
     r.brows = smoothStep(1.0f, 0.6f, std::fabs(along)) *
               smoothStep(1.0f, 0.45f, std::fabs(p.y - browCentreY) / browHalfHeight) *
               smoothStep(0.06f, 0.08f, p.z) * (0.55f + 0.45f * streaks);
@@ -94,25 +107,25 @@ Regions regionsAt(const vec3& p, bool ear) {
     // Toward the back it reaches further down the jaw than up the cheeks.
     const float frontmostZ = glm::mix(0.035f, -0.005f, smoothStep(-0.05f, -0.09f, p.y));
     const float jawSide = smoothStep(frontmostZ, frontmostZ + 0.025f, p.z);
-    const float speckle = valueNoise(p * 2500.0f, 23u);
+    const float speckle = bandLimitedValueNoise(p, 1200.0f, footprintM, 23u);
     r.stubble = ear ? 0.0f : belowNose * aboveNeck * jawSide * (1.0f - r.lips) * (0.5f + 0.5f * speckle);
     return r;
 }
 
-vec3 skinColour(const vec3& p, bool ear) {
-    const Regions r = regionsAt(p, ear);
+vec3 skinColour(const vec3& p, bool ear, float footprintM) {
+    const Regions r = regionsAt(p, ear, footprintM);
 
     // Mottling: broad blotches, smaller patches and fine grain.
     const float broad = fractalNoise(p * 30.0f, 2, 2.0f, 0.5f, 3u).value;
     const float patches = valueNoise(p * 180.0f, 5u) - 0.5f;
-    const float grain = valueNoise(p * 900.0f, 7u) - 0.5f;
+    const float grain = bandLimitedValueNoise(p, 900.0f, footprintM, 7u) - 0.5f;
     const float blood = std::clamp(r.flush + 0.25f * broad + 0.2f * patches, 0.0f, 1.0f);
 
     vec3 c = kBaseSkin * (1.0f + 0.06f * broad + 0.05f * patches + 0.06f * grain);
     c *= glm::mix(vec3(1.0f), kFlushTint, blood);
     // Sparse, soft, round freckles.
     constexpr float kFreckleCellM = 0.006f;
-    const float freckle = -poreNoise(p / kFreckleCellM, 0.4f, 0.35f, 13u).value;
+    const float freckle = -resolvable(kFreckleCellM, footprintM) * poreNoise(p / kFreckleCellM, 0.4f, 0.35f, 13u).value;
     c *= glm::mix(vec3(1.0f), vec3(0.90f, 0.86f, 0.84f), std::min(freckle, 1.0f));
 
     c = glm::mix(c, kLipColour * (1.0f + 0.1f * grain), r.lips);
@@ -123,7 +136,7 @@ vec3 skinColour(const vec3& p, bool ear) {
 }
 
 // Skin relief in metres, with its gradient: pores and fine creases.
-NoiseSample skinRelief(const vec3& p, bool ear) {
+NoiseSample skinRelief(const vec3& p, bool ear, float footprintM) {
     const vec3 m(std::fabs(p.x), p.y, p.z);
     const float lips = lipsWeight(p);
     // Pores are largest on the nose and cheeks, finer on the ears, absent on
@@ -133,10 +146,11 @@ NoiseSample skinRelief(const vec3& p, bool ear) {
     const float cheek = gaussian(m, head::kCheekM, 0.025f);
     const float poreCellM = ear ? 0.0006f : 0.0009f;
     const float poreRadius = std::min(0.36f + 0.12f * (nose + cheek), 0.5f);
-    const float poreDepthM = 0.00008f * (1.0f + 0.5f * nose) * (1.0f - lips);
+    const float poreDepthM = 0.00008f * (1.0f + 0.5f * nose) * (1.0f - lips) *
+                             resolvable(2.0f * poreRadius * poreCellM, footprintM);
 
     NoiseSample relief;
-    const NoiseSample pores = poreNoise(p / poreCellM, poreRadius, 0.75f, 101u);
+    const NoiseSample pores = poreDepthM > 0.0f ? poreNoise(p / poreCellM, poreRadius, 0.75f, 101u) : NoiseSample{};
     relief.value += poreDepthM * pores.value;
     relief.gradient += (poreDepthM / poreCellM) * pores.gradient;
 
@@ -148,9 +162,10 @@ NoiseSample skinRelief(const vec3& p, bool ear) {
     for (int layer = 0; layer < 2; ++layer) {
         const vec3 scale = stretch / kCreaseM[layer];
         const NoiseSample crease = gradientNoise(p * scale, 202u + static_cast<uint32_t>(layer));
-        const float side = crease.value < 0.0f ? -1.0f : 1.0f;
-        relief.value += kCreaseDepthM[layer] * side * crease.value;
-        relief.gradient += kCreaseDepthM[layer] * side * crease.gradient * scale;
+        const float depthM = kCreaseDepthM[layer] * resolvable(kCreaseM[layer], footprintM) *
+                             (crease.value < 0.0f ? -1.0f : 1.0f);
+        relief.value += depthM * crease.value;
+        relief.gradient += depthM * crease.gradient * scale;
     }
     return relief;
 }
@@ -169,7 +184,7 @@ Image makeHeadAlbedoMap(const HeadMesh& head, int size) {
             const size_t i = static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x);
             const SurfaceTexel& s = surface.texels[i];
             if (!s.covered) continue;
-            image.texels[i] = encodeSrgb(skinColour(s.position, s.part == kEarPart));
+            image.texels[i] = encodeSrgb(skinColour(s.position, s.part == kEarPart, s.footprintM));
         }
     });
     fillGutters(image, surface, kGutterRingsPer1024 * size / 1024, encodeSrgb(kBaseSkin), false);
@@ -188,7 +203,7 @@ Image makeHeadNormalMap(const HeadMesh& head, int size) {
             const size_t i = static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x);
             const SurfaceTexel& s = surface.texels[i];
             if (!s.covered) continue;
-            const glm::vec3 gradient = skinRelief(s.position, s.part == kEarPart).gradient;
+            const glm::vec3 gradient = skinRelief(s.position, s.part == kEarPart, s.footprintM).gradient;
             // The surface z = h tilts its normal by -grad h within the tangent plane.
             const vec3 slope = gradient - s.normal * glm::dot(s.normal, gradient);
             const vec3 tilted(-glm::dot(slope, s.tangent), -glm::dot(slope, s.bitangent), 1.0f);
