@@ -12,6 +12,7 @@
 #define AOV_IRRADIANCE 6
 #define AOV_AO 7
 #define AOV_TRANSMITTANCE 8
+#define AOV_THICKNESS 9
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
@@ -42,7 +43,7 @@ void main() {
         else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
         else if (aov == AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
         else if (aov == AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
-        else value = texture(uComponent, vUv).rgb;  // irradiance, transmittance (1x1 when culled)
+        else value = texture(uComponent, vUv).rgb;  // irradiance, transmittance, thickness (1x1 when culled)
     }
     oValue = vec4(value, background ? 0.0 : 1.0);
 }

@@ -60,6 +60,6 @@ void main() {
     }
 
     float mixRatio = uFrame.shading.y;
-    oIrradiance = vec4(sanitizeColour(irradiance * pow(albedo, vec3(mixRatio))), 1.0);
+    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), 1.0);
     oSpecular = vec4(sanitizeColour(specular), 1.0);
 }

@@ -123,7 +123,7 @@ float ambientOcclusion(ivec2 pixel) {
     radiusM = min(radiusM, kMaxRadiusM);
     int samples = int(min(sampleCount, float(kMaxSamples)));
     float biasM = max(uSsao.kernel.z, 0.0) * radiusM;
-    float fadeEndM = max(uSsao.kernel.w, 1.0 + 1e-3) * radiusM;
+    float guardM = max(uSsao.kernel.w, 1.0) * radiusM;
 
     vec3 P = viewPositionAt(pixel, depth);
     vec3 N = decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
@@ -154,9 +154,11 @@ float ambientOcclusion(ivec2 pixel) {
 
         // View space looks down -z: larger z is nearer the camera.
         if (Q.z < S.z + biasM) continue;
-        vec3 toOccluder = Q - P;
-        if (dot(toOccluder, N) <= biasM) continue;
-        occlusion += 1.0 - smoothstep(radiusM, fadeEndM, length(toOccluder));
+        // The range check: the occluder, taken as its tangent plane at Q,
+        // must pass between P and S, so within the radius of P.
+        vec3 occluderNormal = decodeNormal(texelFetch(uNormalMaterial, texel, 0).xy);
+        if (dot(P - Q, occluderNormal) <= biasM || dot(S - Q, occluderNormal) >= 0.0) continue;
+        occlusion += 1.0 - smoothstep(0.5 * guardM, guardM, length(Q - P));
     }
     float ao = 1.0 - strength * occlusion / float(samples);
     return isnan(ao) ? 1.0 : clamp(ao, 0.0, 1.0);

@@ -14,7 +14,7 @@ vec3 acesFilm(vec3 x) {
 
 vec3 encodeSrgb(vec3 linear) {
     vec3 low = linear * 12.92;
-    vec3 high = 1.055 * pow(linear, vec3(1.0 / 2.4)) - 0.055;
+    vec3 high = 1.055 * pow(max(linear, vec3(0.0)), vec3(1.0 / 2.4)) - 0.055;
     return mix(high, low, lessThanEqual(linear, vec3(0.0031308)));
 }
 

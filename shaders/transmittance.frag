@@ -1,3 +1,6 @@
+// With the thickness AOV (id 9) it writes, instead, the thickness in mm seen
+// through the first back light (0 where there is none): a check of step 2.
+//
 // Adds back-normal transmittance (include/Transmittance.glsl) from every
 // shadowed back light into the diffuse irradiance, for SSS pixels only (the
 // stencil test keeps the rest). Output is blended additively. Positions come
@@ -32,6 +35,8 @@ void main() {
                            vec3(0.0, 1.0, 0.0));
     float shrinkMm = uProfiles.transmittance.x;
 
+    const int kAovThickness = 9;
+    bool writeThickness = int(uFrame.shading.w) == kAovThickness;
     vec3 transmitted = vec3(0.0);
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
@@ -41,8 +46,12 @@ void main() {
         vec3 L;
         vec3 radiance = incidentRadiance(light, worldPositionM, L);
         float sMm = thicknessMm(uShadowMaps[shadowSlot], light, worldPositionM, N, shrinkMm);
+        if (writeThickness) {
+            oTransmitted = vec4(vec3(sMm), 0.0);
+            return;
+        }
         transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
     }
     float mixRatio = uFrame.shading.y;
-    oTransmitted = vec4(sanitizeColour(transmitted * uProfiles.transmittance.y * pow(albedo, vec3(mixRatio))), 0.0);
+    oTransmitted = vec4(sanitizeColour(transmitted * uProfiles.transmittance.y * albedoPower(albedo, mixRatio)), 0.0);
 }

@@ -5,7 +5,7 @@
 
 namespace dermis {
 namespace {
-constexpr std::array<std::pair<Aov, std::string_view>, 9> kAovNames{{
+constexpr std::array<std::pair<Aov, std::string_view>, 10> kAovNames{{
     {Aov::Final, "final"},
     {Aov::Albedo, "albedo"},
     {Aov::Normal, "normal"},
@@ -15,6 +15,7 @@ constexpr std::array<std::pair<Aov, std::string_view>, 9> kAovNames{{
     {Aov::Irradiance, "irradiance"},
     {Aov::Ao, "ao"},
     {Aov::Transmittance, "transmittance"},
+    {Aov::Thickness, "thickness"},
 }};
 }  // namespace
 

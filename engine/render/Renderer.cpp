@@ -201,7 +201,7 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
     AovInputs inputs{gbuffer, {}, lighting.specular, {}};
     if (request.aov == Aov::Irradiance) inputs.component = lighting.irradiance;
     if (request.aov == Aov::Ao) inputs.component = ambientOcclusion;
-    if (request.aov == Aov::Transmittance) {
+    if (request.aov == Aov::Transmittance || request.aov == Aov::Thickness) {
         inputs.component = addTransmittancePass(graph, frame, gbuffer, shadowMaps, {}, black);
     }
     graph.markOutput(addAovPass(graph, frame, inputs, output));

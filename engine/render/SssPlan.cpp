@@ -80,19 +80,20 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
 
     const float widthScale2 = settings.widthScale * settings.widthScale;
     const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
-    plan.initWeight = weights[0];
+    plan.initWeight = glm::vec3(0.0f);
     plan.steps.clear();
-    for (int i = 1; i < used; ++i) {
+    for (int i = 0; i < used; ++i) {
         SssGaussianStep step;
         step.gaussian = i;
         const float variance = gaussians[static_cast<size_t>(i)].varianceMm2;
-        const float previous = gaussians[static_cast<size_t>(i - 1)].varianceMm2;
+        const float previous = i == 0 ? 0.0f : gaussians[static_cast<size_t>(i - 1)].varianceMm2;
         step.stepVarianceMm2 = (variance - previous) * widthScale2;
         step.weight = weights[static_cast<size_t>(i)];
         step.widthPxAtNearest = std::sqrt(variance * widthScale2) * pixelsPerMm;
         step.skipped = !plan.visible || step.widthPxAtNearest < settings.minWidthPx;
         // Only a prefix can be skipped for width (variances increase), so a
-        // skipped Gaussian's weight joins the identity term.
+        // skipped Gaussian counts as the identity and its weight starts the
+        // accumulation.
         if (step.skipped) plan.initWeight += step.weight;
         plan.steps.push_back(step);
     }

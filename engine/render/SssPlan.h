@@ -5,12 +5,15 @@
 //
 // Profiles in use get slots 1..DERMIS_MAX_PROFILES (the stencil value of
 // their pixels). For each slot the chain blurs incrementally (seed 000
-// §2.2.4): Gaussian 0 is the identity; step i blurs the previous result by
-// variance v_i - v_(i-1) and adds w_i x result into the accumulation.
+// §2.2.4): step i blurs the previous result by variance v_i - v_(i-1)
+// (v_(-1) = 0) and adds w_i x result into the accumulation.
 // A Gaussian whose standard deviation at the nearest SSS pixel is below
-// SssSettings::minWidthPx is skipped and its weight folded into the
-// identity term, so energy is kept; with settings.gaussians < N the widest
-// Gaussians are dropped and their weights folded into the widest one kept.
+// SssSettings::minWidthPx is skipped: it counts as the identity, its weight
+// starts the accumulation, so energy is kept. At ordinary distances that is
+// always Gaussian 0 (0.0064 mm^2, DESIGN.md: "the identity"); only extreme
+// close-ups, where it spans pixels, blur it. With settings.gaussians < N the
+// widest Gaussians are dropped and their weights folded into the widest one
+// kept.
 
 #include "scene/Mesh.h"
 #include "scene/Scene.h"
@@ -35,7 +38,7 @@ struct SssSlotPlan {
     int slot = 0;  // 1..DERMIS_MAX_PROFILES
     const DiffusionProfile* profile = nullptr;
     glm::vec3 initWeight{0.0f};  // accumulation = initWeight x irradiance before the first step
-    std::vector<SssGaussianStep> steps;
+    std::vector<SssGaussianStep> steps;  // one per Gaussian used, from the narrowest
     bool visible = false;            // some character with this profile may cover a pixel
     float nearestViewDepthM = 0.0f;  // of its visible characters' bounds, clamped to the near plane
     glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)

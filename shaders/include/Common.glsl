@@ -15,6 +15,13 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
     return lengthSquared > kTiny ? v * inversesqrt(lengthSquared) : fallback;
 }
 
+// albedo^exponent for the pre-/post-scatter split (seed 000 §2.2.4). GLSL's
+// pow(0, 0) is undefined (NaN on many GPUs); here x^0 = 1 and 0^e = 0 for e > 0.
+vec3 albedoPower(vec3 albedo, float exponent) {
+    if (exponent <= 0.0) return vec3(1.0);
+    return pow(max(albedo, vec3(0.0)), vec3(exponent));
+}
+
 // Keeps colours storable in fp16 targets and free of NaN/Inf.
 vec3 sanitizeColour(vec3 c) {
     c = mix(c, vec3(0.0), isnan(c));

@@ -7,7 +7,7 @@
 // The diffuse radiance leaving the surface (also the `diffuse` AOV).
 vec3 outgoingDiffuse(ivec2 pixel, float depth) {
     vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
-    vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb * pow(albedo, vec3(1.0 - uFrame.shading.y));
+    vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb * albedoPower(albedo, 1.0 - uFrame.shading.y);
     if (uFrame.features.x > 0.5) {
         vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
         vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);

@@ -28,7 +28,7 @@ float beckmannPH(sampler2D beckmannTable, float nDotH, float m) {
 // Schlick's approximation (seed 000 listing 2.3).
 float fresnelSchlick(vec3 H, vec3 V, float f0) {
     float base = 1.0 - clamp(dot(V, H), 0.0, 1.0);
-    float exponential = pow(base, 5.0);
+    float exponential = pow(max(base, 0.0), 5.0);
     return exponential + f0 * (1.0 - exponential);
 }
 

@@ -1,9 +1,5 @@
 // Headless renders of the procedural default scene through the whole graph.
-#include "GlTestEnvironment.h"
-#include "TestSupport.h"
-
-#include "render/Renderer.h"
-#include "scene/SceneLoader.h"
+#include "RenderFixture.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,37 +11,9 @@ namespace {
 constexpr int kWidth = 160;
 constexpr int kHeight = 90;
 
-class HeadlessRender : public test::GlTest {
+class HeadlessRender : public test::RenderFixture {
 protected:
-    void load(const std::string& sceneFile) {
-        auto scene = loadScene(test::contentDir() + "/scenes/" + sceneFile);
-        ASSERT_TRUE(scene.ok()) << scene.error().message();
-        mScene = std::make_unique<Scene>(std::move(*scene));
-        auto renderer = Renderer::create(*mScene);
-        ASSERT_TRUE(renderer.ok()) << renderer.error().message();
-        mRenderer = std::move(*renderer);
-    }
-    Image render(Aov aov, int frames = 1) {
-        for (int i = 0; i < frames; ++i) {
-            const Status status = mRenderer->renderFrame({kWidth, kHeight, aov});
-            EXPECT_TRUE(status.ok()) << status.error().message();
-        }
-        auto image = mRenderer->readOutput();
-        EXPECT_TRUE(image.ok());
-        return image.ok() ? std::move(*image) : Image{};
-    }
-    const PassSummary* pass(const std::string& name) {
-        mRenderer->finishTimings();
-        mSummary = mRenderer->timings().summary();
-        for (const PassSummary& s : mSummary) {
-            if (s.name == name) return &s;
-        }
-        return nullptr;
-    }
-
-    std::unique_ptr<Scene> mScene;
-    std::unique_ptr<Renderer> mRenderer;
-    std::vector<PassSummary> mSummary;
+    Image render(Aov aov, int frames = 1) { return RenderFixture::render(aov, kWidth, kHeight, frames); }
 };
 
 struct Stats {

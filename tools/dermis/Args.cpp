@@ -10,6 +10,11 @@ std::string ParsedArgs::get(const std::string& name, const std::string& fallback
     return it == options.end() ? fallback : it->second;
 }
 
+std::vector<std::string> ParsedArgs::all(const std::string& name) const {
+    auto it = repeated.find(name);
+    return it == repeated.end() ? std::vector<std::string>{} : it->second;
+}
+
 Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valued,
                              const std::set<std::string>& switches) {
     ParsedArgs parsed;
@@ -34,6 +39,7 @@ Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::se
                 value = args[++i];
             }
             parsed.options[name] = *value;
+            parsed.repeated[name].push_back(*value);
         } else {
             return makeError(arg, "unknown option (see --help)");
         }

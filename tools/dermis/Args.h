@@ -14,11 +14,13 @@ namespace dermis::cli {
 
 struct ParsedArgs {
     std::vector<std::string> positional;
-    std::map<std::string, std::string> options;  // without the leading "--"
+    std::map<std::string, std::string> options;  // without the leading "--"; the last value given
+    std::map<std::string, std::vector<std::string>> repeated;  // every value, in order
     std::set<std::string> flags;
 
     bool has(const std::string& name) const { return options.count(name) > 0; }
     std::string get(const std::string& name, const std::string& fallback) const;
+    std::vector<std::string> all(const std::string& name) const;
 };
 
 // `valued` lists options that take a value, `switches` those that do not.

@@ -30,6 +30,10 @@ const char* const kHelp =
     "                      final image: %s\n"
     "                      (default final)\n"
     "  --timings FILE      also write the timings as JSON\n"
+    "  --set PATH=VALUE    override a scene value, checked like the file; repeatable.\n"
+    "                      PATH is dot-separated from the root, or from \"settings\" when\n"
+    "                      it does not start with a root key: --set sss.taps=13\n"
+    "                      --set ssao.enabled=false --set camera.position_m=[0,0.1,0.5]\n"
     "  --backend NAME      egl (GPU through EGL devices, else Mesa surfaceless) or osmesa\n"
     "                      (default: egl, falling back to osmesa)\n"
     "  --gl-debug          GL debug context; driver errors are printed and fail the run\n"
@@ -42,7 +46,7 @@ const char* const kHelp =
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend"},
+    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set"},
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
@@ -68,7 +72,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
 
-    auto session = Session::open(scenePath, *backend, args->flags.count("gl-debug") > 0);
+    auto session = Session::open(scenePath, args->all("set"), *backend, args->flags.count("gl-debug") > 0);
     if (!session.ok()) return failure(session.error());
     Renderer& renderer = *session->renderer;
 

@@ -13,10 +13,11 @@ Result<gl::Backend> parseBackend(const std::string& name) {
     return makeError("--backend " + name, "expected egl or osmesa");
 }
 
-Result<Session> Session::open(const std::string& scenePath, gl::Backend backend, bool glDebug) {
+Result<Session> Session::open(const std::string& scenePath, const std::vector<std::string>& overrides,
+                              gl::Backend backend, bool glDebug) {
     Session session;
     session.glDebug = glDebug;
-    auto scene = loadScene(scenePath);
+    auto scene = loadScene(scenePath, overrides);
     if (!scene.ok()) return scene.error();
     session.scene = std::make_unique<Scene>(std::move(*scene));
     auto context = gl::createHeadlessContext({backend, glDebug});

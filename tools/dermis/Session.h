@@ -19,7 +19,9 @@ struct Session {
     std::unique_ptr<Renderer> renderer;
     bool glDebug = false;
 
-    static Result<Session> open(const std::string& scenePath, gl::Backend backend, bool glDebug);
+    // `overrides` are --set PATH=VALUE strings (scene/SceneOverrides.h).
+    static Result<Session> open(const std::string& scenePath, const std::vector<std::string>& overrides,
+                                gl::Backend backend, bool glDebug);
     Status checkGlErrors() const;  // with --gl-debug: any driver error is a failure
     RunInfo runInfo(const std::string& scenePath, int width, int height, int frames) const;
 };

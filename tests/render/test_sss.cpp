@@ -1,0 +1,192 @@
+// Screen-space SSS against closed forms: the furnace, the analytic edge, the
+// slab's thickness and transmittance, and the stencil mask.
+#include "RenderFixture.h"
+#include "TestSupport.h"
+
+#include "sss/DiffusionProfile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+using namespace dermis;
+
+namespace {
+
+class Sss : public test::RenderFixture {};
+
+constexpr int kTapCounts[] = {5, 7, 9, 13, 17};
+
+// The analytic-edge set-up: a 40 mm skin plane seen straight down from
+// kEdgeHeightM, its albedo a hard black|white step at x = 0. With mix = 1 all
+// albedo is applied before the blur, so the blur's input is exactly a step in
+// irradiance (seed 000 §2.2.4) and the diffuse AOV is the blurred step.
+constexpr double kEdgeFovDeg = 30.0;
+constexpr double kEdgeHeightM = 0.0336;
+constexpr int kEdgeWidth = 640;
+constexpr int kEdgeHeight = 360;
+
+std::string writeEdgeScene(const test::TempDir& dir) {
+    Image step;
+    step.width = 4096;
+    step.height = 4;
+    step.colourSpace = ColourSpace::Linear;
+    for (int y = 0; y < step.height; ++y) {
+        for (int x = 0; x < step.width; ++x) {
+            const float v = x < step.width / 2 ? 0.0f : 1.0f;
+            step.texels.push_back(glm::vec4(v, v, v, 1.0f));
+        }
+    }
+    EXPECT_TRUE(saveImage(dir.file("step.png"), step).ok());
+    char json[2048];
+    std::snprintf(json, sizeof json, R"({
+      "camera": {"position_m": [0, %.6f, 0], "target_m": [0, 0, 0], "up": [0, 0, -1],
+                 "vertical_fov_deg": %.1f, "near_m": 0.005, "far_m": 1},
+      "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1, "shadow": false}],
+      "characters": [{"name": "step", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.04},
+                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0, 0, 0], "energy_conservation": false, "ssao": {"enabled": false},
+                   "transmittance": {"enabled": false}, "sss": {"mix": 1}}
+    })",
+                  kEdgeHeightM, kEdgeFovDeg);
+    test::writeTextFile(dir.file("edge.json"), json);
+    return dir.file("edge.json");
+}
+
+}  // namespace
+
+TEST_F(Sss, FurnaceUniformLightStaysUniformForEveryTapCount) {
+    for (const char* blur : {"bilateral", "control"}) {
+        for (int taps : kTapCounts) {
+            load("furnace.json", {"sss.taps=" + std::to_string(taps), std::string("sss.blur=") + blur});
+            const Image image = render(Aov::Diffuse, 160, 90);
+            ASSERT_EQ(test::countNonFinite(image), 0u);
+            load("furnace.json", {"sss.enabled=false"});
+            const Image unblurred = render(Aov::Diffuse, 160, 90);
+            double worst = 0.0;
+            for (size_t i = 0; i < image.texels.size(); ++i) {
+                for (int c = 0; c < 3; ++c) {
+                    const double reference = unblurred.texels[i][c];
+                    ASSERT_GT(reference, 0.05);
+                    worst = std::max(worst, std::abs(image.texels[i][c] - reference) / reference);
+                }
+            }
+            std::printf("furnace %-9s %2d taps: largest relative change %.5f\n", blur, taps, worst);
+            EXPECT_LT(worst, 0.005) << blur << " " << taps << " taps";
+        }
+    }
+}
+
+TEST_F(Sss, AnalyticEdgeMatchesSumOfGaussianCdfs) {
+    test::TempDir dir;
+    const std::string scene = writeEdgeScene(dir);
+    const DiffusionProfile& skin = skinProfile();
+    const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / kEdgeHeight;
+    for (int taps : kTapCounts) {
+        load(scene, {"sss.taps=" + std::to_string(taps), "sss.min_width_px=0"});
+        const Image image = render(Aov::Diffuse, kEdgeWidth, kEdgeHeight);
+        double maxError = 0.0;
+        double sumSquares = 0.0;
+        int samples = 0;
+        const int row = kEdgeHeight / 2;
+        for (int x = 0; x < kEdgeWidth; ++x) {
+            const double xMm = (x + 0.5 - kEdgeWidth / 2.0) * mmPerPixel;
+            const glm::vec3 expected = skin.edgeResponse(static_cast<float>(xMm));
+            const glm::vec4 got = image.at(x, row);
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::abs(double(got[c]) - expected[c]);
+                maxError = std::max(maxError, error);
+                sumSquares += error * error;
+                ++samples;
+            }
+        }
+        const double rms = std::sqrt(sumSquares / samples);
+        std::printf("analytic edge, %2d taps: max error %.4f, RMS %.4f (of a unit step)\n", taps, maxError, rms);
+        // Bounds from the measured errors with margin: taps are nearest-texel
+        // (SssBlur.glsl), so a few taps spread over a narrow Gaussian miss
+        // the step by up to a pixel.
+        EXPECT_LT(maxError, taps < 9 ? 0.2 : 0.08) << taps << " taps";
+        EXPECT_LT(rms, 0.01) << taps << " taps";
+    }
+}
+
+TEST_F(Sss, SlabThicknessMatchesTheWedgeAndTransmittanceFollowsT) {
+    // Camera straight above the wedge; its back light shines straight up
+    // through it, so the thickness along the light is the wedge's thickness.
+    load("slab.json", {"transmittance.shrink_mm=0", "lights.0.shadow=false"});
+    const int width = 320;
+    const int height = 180;
+    const Image thickness = render(Aov::Thickness, width, height);
+    const Image transmitted = render(Aov::Transmittance, width, height);
+    const Image depth = render(Aov::Depth, width, height);
+    const Camera& camera = mScene->camera;
+    const double tanHalf = std::tan(glm::radians(double(camera.verticalFovDeg)) / 2.0);
+    const DiffusionProfile& skin = skinProfile();
+    const glm::vec3 radiance = mScene->lights[1].colour * mScene->lights[1].intensity;
+    const glm::vec3 albedoRoot = glm::sqrt(mScene->characters[0].material.albedo);
+
+    double worstThickness = 0.0;
+    double worstTransmittance = 0.0;
+    int checked = 0;
+    const int row = height / 2;
+    for (int x = 0; x < width; ++x) {
+        const double viewDepthM = depth.at(x, row).r;
+        if (viewDepthM > 0.5) continue;  // background
+        const double xM = camera.positionM.x + (x + 0.5 - width / 2.0) * 2.0 * viewDepthM * tanHalf / height;
+        if (xM < 0.005 || xM > 0.195) continue;  // away from the ends
+        const double trueMm = 1.0 + 19.0 * xM / 0.2;
+        const double measuredMm = thickness.at(x, row).r;
+        worstThickness = std::max(worstThickness, std::abs(measuredMm - trueMm) / trueMm);
+        const glm::vec3 expected = radiance * skin.transmittance(float(measuredMm)) * albedoRoot;
+        for (int c = 0; c < 3; ++c) {
+            if (expected[c] < 1e-3f) continue;
+            worstTransmittance =
+                std::max(worstTransmittance, std::abs(double(transmitted.at(x, row)[c]) - expected[c]) / expected[c]);
+        }
+        ++checked;
+    }
+    std::printf("slab: %d pixels, worst thickness error %.2f%%, worst T(s) error %.2f%%\n", checked,
+                100.0 * worstThickness, 100.0 * worstTransmittance);
+    EXPECT_GT(checked, 100);
+    EXPECT_LT(worstThickness, 0.05);
+    EXPECT_LT(worstTransmittance, 0.02);
+}
+
+TEST_F(Sss, PixelsOutsideTheSssMaskAreBitIdenticalAfterTheBlur) {
+    // A skin head beside an opaque blue ball. With mix = 1 and no energy
+    // conservation the diffuse AOV is the SSS accumulation itself.
+    const std::vector<std::string> overrides = {"characters.0.material.profile=skin", "sss.mix=1",
+                                                "energy_conservation=false", "transmittance.enabled=false"};
+    load("no_sss.json", overrides);
+    const Image irradiance = render(Aov::Irradiance, 320, 180);
+    const Image diffuse = render(Aov::Diffuse, 320, 180);
+    const Image albedo = render(Aov::Albedo, 320, 180);
+    const glm::vec3 ball = mScene->characters[1].material.albedo;
+    size_t outside = 0;
+    size_t inside = 0;
+    size_t changedInside = 0;
+    for (size_t i = 0; i < irradiance.texels.size(); ++i) {
+        const bool background = albedo.texels[i].a < 0.5f;
+        const bool isBall = !background && glm::length(glm::vec3(albedo.texels[i]) - ball) < 0.02f;
+        if (background || isBall) {
+            ++outside;
+            ASSERT_EQ(std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)), 0) << "texel " << i;
+        } else {
+            ++inside;
+            if (std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)) != 0) ++changedInside;
+        }
+    }
+    EXPECT_GT(outside, 1000u);
+    EXPECT_GT(inside, 1000u);
+    EXPECT_GT(changedInside, inside / 2) << "the blur should have changed the skin";
+}
+
+TEST_F(Sss, NoSssSceneRunsNoSssPass) {
+    load("no_sss.json");
+    render(Aov::Final, 160, 90);
+    for (const PassSummary& s : summary()) {
+        if (s.name.rfind("sss", 0) == 0 || s.name == "transmittance") EXPECT_FALSE(s.executed) << s.name;
+    }
+}

@@ -1,0 +1,132 @@
+// What the SSS chain decides to run, on the CPU alone.
+#include "render/SssPlan.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+using namespace dermis;
+
+namespace {
+
+Scene headScene(const std::string& profile = "skin") {
+    Scene scene;
+    Character head;
+    head.name = "head";
+    head.mesh.procedural = "head";
+    head.material.profile = profile;
+    scene.characters.push_back(head);
+    return scene;
+}
+
+const Bounds kHeadBounds{glm::vec3(-0.1f, -0.19f, -0.12f), glm::vec3(0.1f, 0.13f, 0.12f)};
+
+ViewParams viewFrom(float distanceM, int width = 640, int height = 360) {
+    ViewParams view;
+    view.viewFromWorld = glm::lookAt(glm::vec3(0, 0, distanceM), glm::vec3(0), glm::vec3(0, 1, 0));
+    view.clipFromView = glm::perspective(glm::radians(35.0f), float(width) / float(height), 0.05f, 100.0f);
+    view.nearM = 0.05f;
+    view.widthPx = width;
+    view.heightPx = height;
+    return view;
+}
+
+int executedSteps(const SssSlotPlan& slot) {
+    int n = 0;
+    for (const SssGaussianStep& s : slot.steps) n += s.skipped ? 0 : 1;
+    return n;
+}
+
+glm::vec3 totalWeight(const SssSlotPlan& slot) {
+    glm::vec3 sum = slot.initWeight;
+    for (const SssGaussianStep& s : slot.steps) {
+        if (!s.skipped) sum += s.weight;
+    }
+    return sum;
+}
+
+}  // namespace
+
+TEST(SssPlan, NearHeadSkipsOnlyTheSubPixelIdentityGaussian) {
+    auto plan = planSss(headScene(), {kHeadBounds}, viewFrom(0.45f));
+    ASSERT_TRUE(plan.ok()) << plan.error().message();
+    ASSERT_EQ(plan->slots.size(), 1u);
+    const SssSlotPlan& slot = plan->slots[0];
+    EXPECT_TRUE(slot.visible);
+    EXPECT_EQ(slot.slot, 1);
+    EXPECT_EQ(plan->slotOfCharacter[0], 1);
+    ASSERT_EQ(slot.steps.size(), 6u);
+    EXPECT_TRUE(slot.steps[0].skipped);  // 0.0064 mm^2: the identity at this distance
+    EXPECT_FALSE(slot.steps[5].skipped);
+    EXPECT_GT(slot.scissor.z, 0);
+    EXPECT_GT(slot.scissor.w, 0);
+}
+
+TEST(SssPlan, FarHeadRunsFewerBlursThanNear) {
+    auto near = planSss(headScene(), {kHeadBounds}, viewFrom(0.45f));
+    auto far = planSss(headScene(), {kHeadBounds}, viewFrom(6.0f));
+    ASSERT_TRUE(near.ok() && far.ok());
+    EXPECT_LT(executedSteps(far->slots[0]), executedSteps(near->slots[0]));
+}
+
+TEST(SssPlan, SkippedGaussiansKeepTheirEnergyInTheIdentityTerm) {
+    for (float distance : {0.3f, 1.0f, 3.0f, 20.0f}) {
+        auto plan = planSss(headScene(), {kHeadBounds}, viewFrom(distance));
+        ASSERT_TRUE(plan.ok());
+        const glm::vec3 total = totalWeight(plan->slots[0]);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(total[c], 1.0f, 1e-5f) << "at " << distance << " m";
+    }
+}
+
+TEST(SssPlan, FewerGaussiansFoldTheWidestIntoTheLastKept) {
+    Scene scene = headScene();
+    scene.settings.sss.gaussians = 3;
+    auto plan = planSss(scene, {kHeadBounds}, viewFrom(0.45f));
+    ASSERT_TRUE(plan.ok());
+    ASSERT_EQ(plan->slots[0].steps.size(), 3u);
+    const glm::vec3 total = totalWeight(plan->slots[0]);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(total[c], 1.0f, 1e-5f);
+}
+
+TEST(SssPlan, OffScreenAndOpaqueCharactersRunNothing) {
+    const Bounds behindCamera{glm::vec3(-0.1f, -0.1f, 1.0f), glm::vec3(0.1f, 0.1f, 1.2f)};
+    auto plan = planSss(headScene(), {behindCamera}, viewFrom(0.45f));
+    ASSERT_TRUE(plan.ok());
+    EXPECT_FALSE(plan->anyVisible());
+    EXPECT_EQ(executedSteps(plan->slots[0]), 0);
+
+    auto opaque = planSss(headScene("none"), {kHeadBounds}, viewFrom(0.45f));
+    ASSERT_TRUE(opaque.ok());
+    EXPECT_TRUE(opaque->slots.empty());
+    EXPECT_EQ(opaque->slotOfCharacter[0], 0);
+}
+
+TEST(SssPlan, CharactersSharingAProfileShareASlot) {
+    Scene scene = headScene();
+    scene.characters.push_back(scene.characters[0]);
+    Character stone = scene.characters[0];
+    stone.material.profile = "marble";
+    scene.characters.push_back(stone);
+    auto plan = planSss(scene, {kHeadBounds, kHeadBounds, kHeadBounds}, viewFrom(0.45f));
+    ASSERT_TRUE(plan.ok());
+    EXPECT_EQ(plan->slots.size(), 2u);
+    EXPECT_EQ(plan->slotOfCharacter, (std::vector<int>{1, 1, 2}));
+}
+
+TEST(SssPlan, UnknownProfileIsAnError) {
+    auto plan = planSss(headScene("jelly"), {kHeadBounds}, viewFrom(0.45f));
+    ASSERT_FALSE(plan.ok());
+    EXPECT_NE(plan.error().message().find("jelly"), std::string::npos);
+    EXPECT_NE(plan.error().message().find("head"), std::string::npos);
+}
+
+TEST(SssPlan, BackLightIsOnTheFarSideFromTheCamera) {
+    Light back;
+    back.type = LightType::Directional;
+    back.direction = glm::vec3(0, 0, 1);  // travels towards the camera at +z: comes from behind
+    Light key;
+    key.type = LightType::Directional;
+    key.direction = glm::vec3(0, 0, -1);
+    const glm::vec3 camera(0, 0, 0.45f);
+    EXPECT_TRUE(isBackLight(back, kHeadBounds, camera));
+    EXPECT_FALSE(isBackLight(key, kHeadBounds, camera));
+}
