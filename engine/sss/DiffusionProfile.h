@@ -1,0 +1,58 @@
+#pragma once
+// The one diffusion-profile type (DESIGN.md, "Units and the profile"): a sum
+// of Gaussians R(r) = sum_i w_i G(v_i, r), G(v, r) = exp(-r^2 / 2v) / (2 pi v)
+// (seed 000 §2.1.4), variances in mm^2, RGB weights normalised per channel
+// so each channel sums to 1 (a white surface stays white after scattering).
+// It serves both SSS modes, the transmittance, the CPU reference and user
+// profiles.
+
+#include "core/Result.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+struct ProfileGaussian {
+    float varianceMm2 = 0.0f;
+    glm::vec3 weight{0.0f};
+};
+
+class DiffusionProfile {
+public:
+    // Validates (at least one Gaussian, variances finite, > 0 and strictly
+    // increasing, weights finite and >= 0, every channel's sum > 0) and
+    // normalises the weights per channel.
+    static Result<DiffusionProfile> create(std::string name, std::vector<ProfileGaussian> gaussians);
+
+    const std::string& name() const { return mName; }
+    const std::vector<ProfileGaussian>& gaussians() const { return mGaussians; }
+    size_t size() const { return mGaussians.size(); }
+
+    // R(r) per channel, r in mm (units 1/mm^2; integrates to 1 over the plane).
+    glm::vec3 radialProfile(float radiusMm) const;
+    // Response across a straight edge between unlit (x < 0) and unit-lit
+    // (x > 0) half-planes: sum_i w_i Phi(x / sqrt(v_i)) (DESIGN.md, "Accuracy").
+    glm::vec3 edgeResponse(float xMm) const;
+    // Back-lit transmittance through thickness s (Jimenez 2010, seed 003 §4.3):
+    // T(s) = sum_i w_i exp(-s^2 / v_i).
+    glm::vec3 transmittance(float thicknessMm) const;
+    float largestStdDevMm() const;
+
+private:
+    std::string mName;
+    std::vector<ProfileGaussian> mGaussians;
+};
+
+// d'Eon & Luebke's six-Gaussian fit of the three-layer skin model (seed 000 fig. 2.7).
+const DiffusionProfile& skinProfile();
+// A marble-like profile: wider and whiter (see ProfileLibrary.cpp for its source).
+const DiffusionProfile& marbleProfile();
+
+// The built-in profiles by name ("skin", "marble"); the error lists the known names.
+Result<const DiffusionProfile*> findProfile(const std::string& name);
+std::vector<std::string> profileNames();
+
+}  // namespace dermis
