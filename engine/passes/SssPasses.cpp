@@ -21,8 +21,10 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
     for (size_t i = 0; i < kernel.weights.size(); ++i) {
         block.kernel[i] = glm::vec4(kernel.offsetsSigma[i], kernel.weights[i], 0.0f, 0.0f);
     }
-    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, std::sqrt(step.stepVarianceMm2),
-                           float(kernel.weights.size()));
+    // The discrete kernel's own variance is a little more than 1 sigma^2, so
+    // its offsets are scaled for the step to blur by exactly stepVarianceMm2.
+    const float sigmaMm = std::sqrt(step.stepVarianceMm2 / kernelVarianceSigma2(kernel));
+    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(kernel.weights.size()));
     block.edges = glm::vec4(settings.blur == "control" ? 1.0f : 0.0f, settings.bilateralDepthMm,
                             settings.controlDepthScalePerMm, float(slot));
     return block;
