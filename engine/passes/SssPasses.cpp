@@ -25,7 +25,8 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
     // its offsets are scaled for the step to blur by exactly stepVarianceMm2.
     const float sigmaMm = std::sqrt(step.stepVarianceMm2 / kernelVarianceSigma2(kernel));
     block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(kernel.weights.size()));
-    block.edges = glm::vec4(settings.blur == "control" ? 1.0f : 0.0f, settings.bilateralDepthMm,
+    const float mode = settings.blur == "control" ? 1.0f : settings.blur == "fetch-only" ? 2.0f : 0.0f;
+    block.edges = glm::vec4(mode, settings.bilateralDepthMm,
                             settings.controlDepthScalePerMm, float(slot));
     return block;
 }

@@ -82,7 +82,8 @@ struct Background {
 // Screen-space SSS (DESIGN.md pass 5; seed 000 §2.2.4, seed 001 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
-    std::string blur = "bilateral";     // "bilateral" (depth-weighted taps) or "control" (Jimenez's lerp to centre)
+    std::string blur = "bilateral";     // "bilateral" (depth-weighted taps), "control" (Jimenez's lerp to centre),
+                                         // or "fetch-only" (same fetches, no weighting: the benchmarks' bandwidth floor)
     int taps = 9;                        // taps per direction, odd, 3..33
     float bilateralDepthMm = 1.0f;       // std dev of the Gaussian in tap-to-centre depth difference (mm)
     float controlDepthScalePerMm = 0.5f;  // control: lerp to centre by min(1, scale * |depth difference| in mm)

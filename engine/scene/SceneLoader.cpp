@@ -24,7 +24,7 @@ constexpr double kParallelTolerance = 1e-6;
 
 const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
 const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
-const std::vector<std::string> kSssBlurs = {"bilateral", "control"};
+const std::vector<std::string> kSssBlurs = {"bilateral", "control", "fetch-only"};
 constexpr int kMinSsaoSamples = 8;
 constexpr int kMaxSsaoSamples = 128;
 

@@ -43,6 +43,9 @@
 //     renormalised. No light crosses an edge: no halo, no background bleed.
 //   - control (Jimenez, seed 001 §3.2.2): a tap's colour is lerped back to
 //     the centre's by min(1, k * d); weights are not renormalised.
+//   - fetch-only (benchmarks): the same fetches of colour and key per tap,
+//     summed with the kernel weights and nothing else: the bandwidth floor
+//     the blur's cost is compared with.
 //   Taps that land on another profile or the background are replaced by the
 //   centre (control) or dropped (bilateral) by selection, not by a multiply,
 //   so a non-finite value outside the mask can never leak in.
@@ -81,6 +84,7 @@ vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
     vec2 direction = uSssBlur.step.xy;
     int taps = int(uSssBlur.step.w);
     bool bilateral = uSssBlur.edges.x < 0.5;
+    bool fetchOnly = uSssBlur.edges.x > 1.5;
     float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
     float controlScale = uSssBlur.edges.z;
     float sameProfileMm = 0.5 * kSssKeyStrideMm;
@@ -91,6 +95,11 @@ vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
         vec2 offset = direction * (uSssBlur.kernel[i].x * sigmaPx);
         ivec2 tapPixel = clamp(pixel + ivec2(round(offset)), ivec2(0), size - 1);
         float weight = uSssBlur.kernel[i].y;
+        if (fetchOnly) {
+            sum += weight * vec4(texelFetch(colour, tapPixel, 0).rgb, texelFetch(depthKey, tapPixel, 0).r);
+            weightSum += weight;
+            continue;
+        }
         // Keys of different profiles differ by >= kSssKeyStrideMm.
         float distanceMm = abs(texelFetch(depthKey, tapPixel, 0).r - centreKeyM) * 1000.0;
         bool sameProfile = distanceMm < sameProfileMm;

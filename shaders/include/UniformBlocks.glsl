@@ -109,7 +109,7 @@ DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
 DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
     vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
     vec4 step;   // xy: blur direction, (1,0) or (0,1); z: standard deviation of this step (mm); w: tap count
-    vec4 edges;  // x: 0 = bilateral, 1 = control (Jimenez); y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+    vec4 edges;  // x: 0 = bilateral, 1 = control (Jimenez), 2 = fetch-only (benchmark floor); y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 

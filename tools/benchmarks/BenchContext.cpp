@@ -1,0 +1,57 @@
+#include "BenchContext.h"
+
+#include "core/Log.h"
+#include "scene/SceneLoader.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace dermis::bench {
+
+gl::Context& context() {
+    static std::unique_ptr<gl::Context> sContext = [] {
+        auto made = gl::createHeadlessContext({});
+        if (!made.ok()) {
+            std::fprintf(stderr, "error: %s\n", made.error().message().c_str());
+            std::exit(1);
+        }
+        return std::move(*made);
+    }();
+    return *sContext;
+}
+
+const Scene& contentScene(const std::string& name) {
+    static std::map<std::string, std::unique_ptr<Scene>> sScenes;
+    auto& slot = sScenes[name];
+    if (!slot) {
+        auto scene = loadScene(std::string(DERMIS_SOURCE_CONTENT_DIR) + "/scenes/" + name);
+        if (!scene.ok()) {
+            std::fprintf(stderr, "error: %s\n", scene.error().message().c_str());
+            std::exit(1);
+        }
+        slot = std::make_unique<Scene>(std::move(*scene));
+    }
+    return *slot;
+}
+
+double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix) {
+    renderer.resetTimings();
+    const Status status = renderer.renderFrame({width, height, Aov::Final});
+    if (!status.ok()) {
+        std::fprintf(stderr, "error: %s\n", status.error().message().c_str());
+        std::exit(1);
+    }
+    renderer.finishTimings();
+    double ms = 0.0;
+    for (const PassSummary& pass : renderer.timings().summary()) {
+        if (pass.executed && pass.name.rfind(prefix, 0) == 0) ms += pass.gpuMs;
+    }
+    return ms;
+}
+
+std::map<std::string, double>& recorded() {
+    static std::map<std::string, double> sRecorded;
+    return sRecorded;
+}
+
+}  // namespace dermis::bench

@@ -1,0 +1,29 @@
+#pragma once
+// Shared state of the benchmark process: one headless GL context, scenes
+// loaded once, and the figures the summary at the end compares.
+
+#include "gl/GlContext.h"
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace dermis::bench {
+
+gl::Context& context();  // created on first use; aborts with a message when none can be made
+
+// Loads content/scenes/<name> once and keeps it alive for the process.
+const Scene& contentScene(const std::string& name);
+
+// Renders one frame and returns the summed GPU ms of passes whose names
+// start with `prefix` ("" = the whole frame). Stalls to read the timers,
+// which is fine in a benchmark.
+double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix);
+
+// Figures recorded by benchmarks (median GPU ms per named measurement) for
+// the comparisons printed after the run.
+std::map<std::string, double>& recorded();
+
+}  // namespace dermis::bench
