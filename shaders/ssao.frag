@@ -41,11 +41,14 @@
 //   Sample directions are generated here, deterministically, for any count
 //   n: point i of a Fibonacci spiral on the unit disc, r = sqrt((i+0.5)/n),
 //   phi = i x golden angle, lifted onto the hemisphere (z = sqrt(1 - r^2)).
-//   That is a cosine-weighted distribution, so the fraction of occluded
-//   directions estimates the cosine-weighted visibility integral of seed 003
-//   §3.2 (1/pi integral of V (w.n) dw). Sample i's distance is
+//   That is a cosine-weighted distribution, as in the visibility integral of
+//   seed 003 §3.2 (1/pi integral of V (w.n) dw). Sample i's distance is
 //   radius x mix(0.1, 1, t^2), t a golden-ratio sequence in i with a
-//   per-pixel offset, so near occluders get more samples.
+//   per-pixel offset, so near occluders get more samples. A sample counts
+//   when its point is inside geometry, not when anything lies along its
+//   direction, so (as with seed 003's kernel) the result is lighter than
+//   ray-traced AO of the same radius, most where the occluder is nearly
+//   a radius away.
 //   The hemisphere is rotated about the normal by interleaved gradient noise
 //   (Jimenez 2014) instead of seed 003's 64x64 noise texture, and the
 //   tangent frame is built by Gram-Schmidt as in seed 003 §3.2.2.
@@ -60,6 +63,8 @@
 //   object far in front does not draw a dark halo on what is behind it.
 //   Samples that leave the screen, go behind the camera or land on the
 //   background count as unoccluded.
+//
+// Cost per pixel: per sample two 4x4 matrix products and one depth fetch.
 //
 // Every output is finite: background, object id 0, a zero/NaN radius or zero
 // strength give 1; normals decode through safeNormalize.
@@ -123,7 +128,7 @@ float ambientOcclusion(ivec2 pixel) {
     radiusM = min(radiusM, kMaxRadiusM);
     int samples = int(min(sampleCount, float(kMaxSamples)));
     float biasM = max(uSsao.kernel.z, 0.0) * radiusM;
-    float guardM = max(uSsao.kernel.w, 1.0) * radiusM;
+    float fadeEndM = max(uSsao.kernel.w, 1.0 + 1e-3) * radiusM;
 
     vec3 P = viewPositionAt(pixel, depth);
     vec3 N = decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
@@ -154,11 +159,9 @@ float ambientOcclusion(ivec2 pixel) {
 
         // View space looks down -z: larger z is nearer the camera.
         if (Q.z < S.z + biasM) continue;
-        // The range check: the occluder, taken as its tangent plane at Q,
-        // must pass between P and S, so within the radius of P.
-        vec3 occluderNormal = decodeNormal(texelFetch(uNormalMaterial, texel, 0).xy);
-        if (dot(P - Q, occluderNormal) <= biasM || dot(S - Q, occluderNormal) >= 0.0) continue;
-        occlusion += 1.0 - smoothstep(0.5 * guardM, guardM, length(Q - P));
+        vec3 toOccluder = Q - P;
+        if (dot(toOccluder, N) <= biasM) continue;
+        occlusion += 1.0 - smoothstep(radiusM, fadeEndM, length(toOccluder));
     }
     float ao = 1.0 - strength * occlusion / float(samples);
     return isnan(ao) ? 1.0 : clamp(ao, 0.0, 1.0);
