@@ -27,6 +27,12 @@ layout(location = 0) out vec4 oValue;
 
 #include "OutgoingDiffuse.glsl"
 
+// The component at this pixel; a culled producer leaves a 1x1 stand-in. No
+// filtering: linear sampling at texel centres is not exact on every GPU.
+vec4 component(ivec2 pixel) {
+    return textureSize(uComponent, 0) == ivec2(1) ? texelFetch(uComponent, ivec2(0), 0) : texelFetch(uComponent, pixel, 0);
+}
+
 void main() {
     int aov = int(uFrame.shading.w);
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -37,13 +43,13 @@ void main() {
         // Linear view depth in metres; the far plane for the background.
         value = vec3(background ? uFrame.depthRangeM.y : -viewPositionFromDepth(vUv, depth, uFrame.viewFromClip).z);
     } else if (aov == AOV_AO) {
-        value = vec3(background ? 1.0 : texture(uComponent, vUv).r);
+        value = vec3(background ? 1.0 : component(pixel).r);
     } else if (!background) {
         if (aov == AOV_ALBEDO) value = texelFetch(uAlbedo, pixel, 0).rgb;
         else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
         else if (aov == AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
         else if (aov == AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
-        else value = texture(uComponent, vUv).rgb;  // irradiance, transmittance, thickness (1x1 when culled)
+        else value = component(pixel).rgb;  // irradiance, transmittance, thickness
     }
     oValue = vec4(value, background ? 0.0 : 1.0);
 }

@@ -2,8 +2,8 @@
 //   depth/stencil  D24S8; stencil = SSS profile slot (0 = opaque), for the blurs
 //   target 0       RGBA8 sRGB: albedo (linear after decode), a = object id / 255
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s
-//   target 2       R32F: view depth (m) + profile slot x DERMIS_PROFILE_KEY_STRIDE_M,
-//                  the key depth-aware blurs compare (see UniformBlocks.glsl)
+//   target 2       R32UI: profile slot and view depth packed, the key that
+//                  depth-aware blurs compare (layout in UniformBlocks.glsl)
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 
@@ -16,7 +16,7 @@ in vec2 vUv;
 
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
-layout(location = 2) out float oDepthKey;
+layout(location = 2) out uint oDepthKey;
 
 in vec3 vViewPositionM;
 
@@ -37,6 +37,6 @@ void main() {
     oAlbedo = vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0);
     oNormalMaterial = vec4(encodeNormal(N), uObject.albedoRoughness.w, uObject.material.x);
     int objectId = int(uObject.material.y + 0.5);
-    float slot = uCharacters.characters[objectId].params.x;
-    oDepthKey = -vViewPositionM.z + slot * DERMIS_PROFILE_KEY_STRIDE_M;
+    int slot = int(uCharacters.characters[objectId].params.x + 0.5);
+    oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
 }

@@ -5,9 +5,8 @@
 //   engine/passes/SsaoPass.cpp. Fullscreen triangle into an R8 target of the
 //   raw AO's size. Inputs:
 //     unit 0  uAo        raw AO from ssao.frag (R8, 1 = unoccluded)
-//     unit 1  uDepthKey  G-buffer R32F depth key: view depth (m) +
-//                        profile slot x DERMIS_PROFILE_KEY_STRIDE_M,
-//                        DERMIS_BACKGROUND_KEY_M on the background
+//     unit 1  uDepthKey  G-buffer R32UI depth key: profile slot and view
+//                        depth packed (UniformBlocks.glsl)
 //     SsaoBlock (DERMIS_BINDING_PASS):
 //       blur.x  half width in pixels, 0..4 (0 copies)         default 2 (5x5)
 //       blur.y  depth tolerance as a fraction of the centre's  default 0.05
@@ -26,18 +25,17 @@
 #include "UniformBlocks.glsl"
 
 layout(binding = 0) uniform sampler2D uAo;
-layout(binding = 1) uniform sampler2D uDepthKey;
+layout(binding = 1) uniform usampler2D uDepthKey;
 
 layout(location = 0) out vec4 oAo;
 
 const int kMaxHalfWidthPx = 4;
 
 float blurredAo(ivec2 pixel) {
-    float centreKey = texelFetch(uDepthKey, pixel, 0).r;
-    if (!(centreKey < 0.5 * DERMIS_BACKGROUND_KEY_M)) return 1.0;
-    float slot = floor(centreKey / DERMIS_PROFILE_KEY_STRIDE_M);
-    float viewDepthM = max(centreKey - slot * DERMIS_PROFILE_KEY_STRIDE_M, 1e-3);
-    float toleranceM = max(uSsao.blur.y * viewDepthM, 1e-5);
+    uint centreKey = texelFetch(uDepthKey, pixel, 0).r;
+    if (isBackgroundKey(centreKey)) return 1.0;
+    float viewDepthM = max(viewDepthFromKey(centreKey), 1e-3);
+    float toleranceMm = max(uSsao.blur.y * viewDepthM, 1e-5) * 1000.0;
     int halfWidth = clamp(int(uSsao.blur.x), 0, kMaxHalfWidthPx);
     ivec2 last = textureSize(uAo, 0) - 1;
 
@@ -46,9 +44,8 @@ float blurredAo(ivec2 pixel) {
     for (int dy = -halfWidth; dy <= halfWidth; ++dy) {
         for (int dx = -halfWidth; dx <= halfWidth; ++dx) {
             ivec2 tap = clamp(pixel + ivec2(dx, dy), ivec2(0), last);
-            float key = texelFetch(uDepthKey, tap, 0).r;
-            float difference = abs(key - centreKey);
-            float weight = difference < toleranceM ? 1.0 - difference / toleranceM : 0.0;  // NaN keys get 0
+            float differenceMm = keyDistanceMm(centreKey, texelFetch(uDepthKey, tap, 0).r);
+            float weight = differenceMm < toleranceMm ? 1.0 - differenceMm / toleranceMm : 0.0;
             sum += weight * texelFetch(uAo, tap, 0).r;
             weightSum += weight;
         }

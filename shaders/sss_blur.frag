@@ -6,7 +6,7 @@
 #include "SssBlur.glsl"
 
 layout(binding = 0) uniform sampler2D uColour;
-layout(binding = 1) uniform sampler2D uDepthKey;
+layout(binding = 1) uniform usampler2D uDepthKey;
 
 layout(location = 0) out vec4 oBlurred;
 layout(location = 1) out vec4 oAccumulate;  // blended: += constant colour (w_i) x value

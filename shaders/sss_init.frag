@@ -6,14 +6,14 @@
 #include "UniformBlocks.glsl"
 
 layout(binding = 0) uniform sampler2D uIrradiance;
-layout(binding = 1) uniform sampler2D uDepthKey;
+layout(binding = 1) uniform usampler2D uDepthKey;
 
 layout(location = 0) out vec4 oAccumulated;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 irradiance = texelFetch(uIrradiance, pixel, 0);
-    float key = texelFetch(uDepthKey, pixel, 0).r;
+    uint key = texelFetch(uDepthKey, pixel, 0).r;
     int slot = slotFromKey(key);
     vec3 weight = slot > 0 && slot <= DERMIS_MAX_PROFILES ? uProfiles.profiles[slot].info.yzw : vec3(1.0);
     oAccumulated = vec4(irradiance.rgb * weight, irradiance.a);

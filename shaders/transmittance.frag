@@ -14,7 +14,7 @@
 
 layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uNormalMaterial;
-layout(binding = 3) uniform sampler2D uDepthKey;
+layout(binding = 3) uniform usampler2D uDepthKey;
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
 
 in vec2 vUv;
@@ -22,14 +22,14 @@ layout(location = 0) out vec4 oTransmitted;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    float key = texelFetch(uDepthKey, pixel, 0).r;
+    uint key = texelFetch(uDepthKey, pixel, 0).r;
     int slot = slotFromKey(key);
     if (slot <= 0 || slot > DERMIS_MAX_PROFILES) {
         oTransmitted = vec4(0.0);
         return;
     }
     vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
-    vec3 viewPositionM = viewPositionFromViewDepth(vUv, viewDepthFromKey(key, slot), uFrame.viewFromClip);
+    vec3 viewPositionM = viewPositionFromViewDepth(vUv, viewDepthFromKey(key), uFrame.viewFromClip);
     vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy),
                            vec3(0.0, 1.0, 0.0));

@@ -13,6 +13,7 @@ GLenum internalFormat(graph::TextureFormat format) {
         case TextureFormat::Rg16F: return GL_RG16F;
         case TextureFormat::R16F: return GL_R16F;
         case TextureFormat::R32F: return GL_R32F;
+        case TextureFormat::R32UI: return GL_R32UI;
         case TextureFormat::Rgba32F: return GL_RGBA32F;
         case TextureFormat::R8: return GL_R8;
         case TextureFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
@@ -25,9 +26,10 @@ Texture createTexture2D(const graph::TextureDesc& desc, int levels) {
     Texture texture = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(texture.get(), levels, internalFormat(desc.format), static_cast<GLsizei>(desc.width),
                        static_cast<GLsizei>(desc.height));
-    const bool depth = graph::isDepthFormat(desc.format);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, depth ? GL_NEAREST : GL_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, depth ? GL_NEAREST : GL_LINEAR);
+    // Integer textures are incomplete with linear filtering.
+    const bool nearest = graph::isDepthFormat(desc.format) || graph::isIntegerFormat(desc.format);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
     glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return texture;

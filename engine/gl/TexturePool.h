@@ -13,7 +13,7 @@ namespace dermis::gl {
 GLenum internalFormat(graph::TextureFormat format);
 
 // Immutable single-level 2-D storage, clamp-to-edge, linear filtering for
-// colour and nearest for depth.
+// colour and nearest for depth and integer formats.
 Texture createTexture2D(const graph::TextureDesc& desc, int levels = 1);
 
 class TexturePool {

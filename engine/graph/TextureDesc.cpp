@@ -10,6 +10,7 @@ std::string_view formatName(TextureFormat format) {
         case TextureFormat::Rg16F: return "rg16f";
         case TextureFormat::R16F: return "r16f";
         case TextureFormat::R32F: return "r32f";
+        case TextureFormat::R32UI: return "r32ui";
         case TextureFormat::Rgba32F: return "rgba32f";
         case TextureFormat::R8: return "r8";
         case TextureFormat::Depth24Stencil8: return "d24s8";
@@ -17,6 +18,8 @@ std::string_view formatName(TextureFormat format) {
     }
     return "?";
 }
+
+bool isIntegerFormat(TextureFormat format) { return format == TextureFormat::R32UI; }
 
 bool isDepthFormat(TextureFormat format) {
     return format == TextureFormat::Depth24Stencil8 || format == TextureFormat::Depth32F;

@@ -13,6 +13,7 @@ enum class TextureFormat : uint8_t {
     Rg16F,
     R16F,
     R32F,        // linear depth (shadow maps)
+    R32UI,       // packed keys (G-buffer depth key)
     Rgba32F,     // AOV read-back
     R8,          // AO
     Depth24Stencil8,
@@ -21,6 +22,7 @@ enum class TextureFormat : uint8_t {
 
 std::string_view formatName(TextureFormat format);
 bool isDepthFormat(TextureFormat format);
+bool isIntegerFormat(TextureFormat format);  // needs nearest filtering and (u)int samplers
 
 struct TextureDesc {
     uint32_t width = 1;

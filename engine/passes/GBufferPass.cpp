@@ -11,7 +11,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             g.depthStencil = builder.create("depth", {w, h, graph::TextureFormat::Depth24Stencil8});
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
-            g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32F});
+            g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
         },
         [&frame](const graph::PassResources& resources, const GBuffer& g) {
             gl::Attachments attachments;
@@ -25,9 +25,12 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             const float zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 0, zero);
             glClearBufferfv(GL_COLOR, 1, zero);
-            const float backgroundKey[4] = {float(DERMIS_BACKGROUND_KEY_M), 0, 0, 0};
-            glClearBufferfv(GL_COLOR, 2, backgroundKey);
+            const GLuint backgroundKey[4] = {DERMIS_BACKGROUND_KEY, 0, 0, 0};
+            glClearBufferuiv(GL_COLOR, 2, backgroundKey);
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+            // The albedo target is sRGB: without this GL stores the linear value
+            // unencoded and every later read decodes it a second time.
+            glEnable(GL_FRAMEBUFFER_SRGB);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
             glDepthMask(GL_TRUE);
@@ -48,6 +51,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             }
             glDisable(GL_STENCIL_TEST);
             glDisable(GL_DEPTH_TEST);
+            glDisable(GL_FRAMEBUFFER_SRGB);
         });
 }
 

@@ -11,7 +11,7 @@ struct GBuffer {
     graph::TextureHandle depthStencil;    // D24S8; stencil = SSS profile slot (0 = opaque)
     graph::TextureHandle albedo;          // RGBA8 sRGB; alpha = object id / 255
     graph::TextureHandle normalMaterial;  // RGBA16F: octahedral view normal, roughness m, rho_s
-    graph::TextureHandle depthKey;        // R32F: view depth (m) + slot x DERMIS_PROFILE_KEY_STRIDE_M
+    graph::TextureHandle depthKey;        // R32UI: profile slot and view depth (UniformBlocks.glsl)
 };
 
 GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame);

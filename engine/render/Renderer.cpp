@@ -6,6 +6,7 @@
 #include "passes/GBufferPass.h"
 #include "passes/LightingPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SsaoPass.h"
 #include "passes/SssPasses.h"
 #include "passes/TransmittancePass.h"
 #include "render/BeckmannTable.h"
@@ -183,7 +184,7 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
 
     const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, frame, mShadowCache);
     const GBuffer gbuffer = addGBufferPass(graph, frame);
-    const graph::TextureHandle ambientOcclusion = white;
+    const graph::TextureHandle ambientOcclusion = addSsaoPasses(graph, frame, gbuffer, white);
     const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion);
 
     if (request.aov == Aov::Final || request.aov == Aov::Diffuse) {

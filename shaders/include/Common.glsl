@@ -56,10 +56,25 @@ vec3 viewPositionFromViewDepth(vec2 uv, float viewDepthM, mat4 viewFromClip) {
     return farPoint * (viewDepthM / max(-farPoint.z, kTiny));
 }
 
-// The view depth (m) and profile slot stored in a G-buffer depth key.
-float viewDepthFromKey(float keyM, int slot) { return keyM - float(slot) * DERMIS_PROFILE_KEY_STRIDE_M; }
-int slotFromKey(float keyM) {
-    return keyM < DERMIS_BACKGROUND_KEY_M * 0.5 ? int(floor(keyM / DERMIS_PROFILE_KEY_STRIDE_M)) : 0;
+// G-buffer depth keys (layout in UniformBlocks.glsl).
+const uint kKeyDepthMask = (1u << DERMIS_KEY_DEPTH_BITS) - 1u;
+uint makeDepthKey(int slot, float viewDepthM) {
+    float units = clamp(viewDepthM * DERMIS_KEY_UNITS_PER_M, 0.0, float(kKeyDepthMask));
+    return (uint(slot) << DERMIS_KEY_DEPTH_BITS) | uint(units);
+}
+float viewDepthFromKey(uint key) { return float(key & kKeyDepthMask) / DERMIS_KEY_UNITS_PER_M; }
+// The SSS profile slot, 0 for opaque pixels and the background.
+int slotFromKey(uint key) {
+    int slot = int(key >> DERMIS_KEY_DEPTH_BITS);
+    return slot == DERMIS_BACKGROUND_SLOT ? 0 : slot;
+}
+bool isBackgroundKey(uint key) { return int(key >> DERMIS_KEY_DEPTH_BITS) == DERMIS_BACKGROUND_SLOT; }
+// Depth difference in mm between two keys; +infinity-like when they belong to
+// different slots (so every depth weight of it is 0).
+float keyDistanceMm(uint a, uint b) {
+    if ((a >> DERMIS_KEY_DEPTH_BITS) != (b >> DERMIS_KEY_DEPTH_BITS)) return 1e30;
+    int units = int(a & kKeyDepthMask) - int(b & kKeyDepthMask);
+    return float(abs(units)) * (1000.0 / DERMIS_KEY_UNITS_PER_M);
 }
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }

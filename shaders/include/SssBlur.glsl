@@ -23,8 +23,8 @@
 //      standard deviations and weights, computed on the CPU by
 //      engine/sss/BlurKernel.cpp), the direction, this step's standard
 //      deviation in mm, the edge mode and the profile slot.
-//   4. Bind the colour input to unit 0 and the depth key (G-buffer target 2)
-//      to unit 1.
+//   4. Bind the colour input to unit 0 and the depth key (G-buffer target 2,
+//      R32UI) to unit 1.
 //
 // WIDTH (seed 000 §2.2.4; DESIGN.md pass 5)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
@@ -34,9 +34,9 @@
 //   sets the width, as in Jimenez's SeparableSSS.
 //
 // EDGES
-//   Taps read the depth key: view depth (mm after scaling) plus a large
-//   per-profile offset, so one test rejects taps across silhouettes, on the
-//   background, on opaque objects and on other profiles.
+//   Taps read the depth key (profile slot + view depth, UniformBlocks.glsl),
+//   so one test rejects taps across silhouettes, on the background, on
+//   opaque objects and on other profiles.
 //   - bilateral (seed 001 §4.3.2, the default): each tap's kernel weight is
 //     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
 //     SSS_BILATERAL default below or the block's value, and the sum is
@@ -68,17 +68,15 @@
 #error "SSS_EXTRA_TARGETS must be 0..3"
 #endif
 
-const float kSssKeyStrideMm = DERMIS_PROFILE_KEY_STRIDE_M * 1000.0;
-
 // The blurred value of `colour` at `pixel` along uSssBlur.step.xy. Returns
 // the centre when the pixel is not on this profile (stencil keeps that from
 // happening; this is the belt to its braces).
-vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
+vec4 sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
     vec4 centre = texelFetch(colour, pixel, 0);
-    float centreKeyM = texelFetch(depthKey, pixel, 0).r;
-    float viewDepthM = viewDepthFromKey(centreKeyM, int(uSssBlur.edges.w));
-    if (viewDepthM <= 0.0 || viewDepthM > DERMIS_PROFILE_KEY_STRIDE_M * 0.5) return centre;
+    uint centreKey = texelFetch(depthKey, pixel, 0).r;
+    float viewDepthM = viewDepthFromKey(centreKey);
+    if (slotFromKey(centreKey) != int(uSssBlur.edges.w) || viewDepthM <= 0.0) return centre;
 
     float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
     vec2 direction = uSssBlur.step.xy;
@@ -87,7 +85,6 @@ vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
     bool fetchOnly = uSssBlur.edges.x > 1.5;
     float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
     float controlScale = uSssBlur.edges.z;
-    float sameProfileMm = 0.5 * kSssKeyStrideMm;
 
     vec4 sum = vec4(0.0);
     float weightSum = 0.0;
@@ -96,13 +93,12 @@ vec4 sssBlurStep(sampler2D colour, sampler2D depthKey, ivec2 pixel) {
         ivec2 tapPixel = clamp(pixel + ivec2(round(offset)), ivec2(0), size - 1);
         float weight = uSssBlur.kernel[i].y;
         if (fetchOnly) {
-            sum += weight * vec4(texelFetch(colour, tapPixel, 0).rgb, texelFetch(depthKey, tapPixel, 0).r);
+            sum += weight * vec4(texelFetch(colour, tapPixel, 0).rgb, float(texelFetch(depthKey, tapPixel, 0).r & 255u));
             weightSum += weight;
             continue;
         }
-        // Keys of different profiles differ by >= kSssKeyStrideMm.
-        float distanceMm = abs(texelFetch(depthKey, tapPixel, 0).r - centreKeyM) * 1000.0;
-        bool sameProfile = distanceMm < sameProfileMm;
+        float distanceMm = keyDistanceMm(centreKey, texelFetch(depthKey, tapPixel, 0).r);
+        bool sameProfile = distanceMm < 1e29;
         if (bilateral) {
             if (!sameProfile) continue;
             weight *= exp(-distanceMm * distanceMm * inverseTwoSigmaSquared);

@@ -35,12 +35,16 @@
 #define DERMIS_BINDING_PROFILES 4
 #define DERMIS_BINDING_PASS 5
 
-// The linear-depth key target (R32F) holds view depth in metres plus
-// DERMIS_PROFILE_KEY_STRIDE_M x profile slot, so a depth-aware blur rejects
-// taps from other profiles (or opaque pixels) with the same depth test that
-// rejects taps across silhouettes. The background holds DERMIS_BACKGROUND_KEY_M.
-#define DERMIS_PROFILE_KEY_STRIDE_M 1000.0
-#define DERMIS_BACKGROUND_KEY_M 1.0e7
+// The depth-key target (R32UI) packs a pixel's profile slot in the top 4 bits
+// and its view depth in the low 28, in units of 2^-20 m (about 1 micrometre,
+// up to 256 m). Depth-aware passes compare keys: a different slot (another
+// profile, an opaque object, the background) rejects a tap the same way a
+// depth step does. A float key (depth + slot x stride) was tried first: at
+// 1000 m strides its 0.12 mm rounding showed up in the thickness estimate.
+#define DERMIS_KEY_DEPTH_BITS 28
+#define DERMIS_KEY_UNITS_PER_M 1048576.0
+#define DERMIS_BACKGROUND_SLOT 15
+#define DERMIS_BACKGROUND_KEY 0xFFFFFFFFu
 
 #define DERMIS_LIGHT_DIRECTIONAL 0
 #define DERMIS_LIGHT_SPOT 1

@@ -172,7 +172,10 @@ TEST_F(Sss, PixelsOutsideTheSssMaskAreBitIdenticalAfterTheBlur) {
         const bool isBall = !background && glm::length(glm::vec3(albedo.texels[i]) - ball) < 0.02f;
         if (background || isBall) {
             ++outside;
-            ASSERT_EQ(std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)), 0) << "texel " << i;
+            ASSERT_EQ(std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)), 0)
+                << "texel " << i << ": irradiance " << irradiance.texels[i].r << " " << irradiance.texels[i].g << " "
+                << irradiance.texels[i].b << ", diffuse " << diffuse.texels[i].r << " " << diffuse.texels[i].g << " "
+                << diffuse.texels[i].b;
         } else {
             ++inside;
             if (std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)) != 0) ++changedInside;
@@ -188,5 +191,16 @@ TEST_F(Sss, NoSssSceneRunsNoSssPass) {
     render(Aov::Final, 160, 90);
     for (const PassSummary& s : summary()) {
         if (s.name.rfind("sss", 0) == 0 || s.name == "transmittance") EXPECT_FALSE(s.executed) << s.name;
+    }
+}
+
+TEST_F(Sss, AlbedoSurvivesTheSrgbGBufferExactly) {
+    // The G-buffer stores albedo as sRGB: the write must encode (GL_FRAMEBUFFER_SRGB)
+    // so the read's decode gives back the linear value, within 8-bit steps.
+    load("furnace.json");
+    const Image albedo = render(Aov::Albedo, 64, 36);
+    const glm::vec3 expected = mScene->characters[0].material.albedo;
+    for (const glm::vec4& t : albedo.texels) {
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(t[c], expected[c], 0.004f);
     }
 }
