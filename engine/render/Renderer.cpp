@@ -242,6 +242,13 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     return success();
 }
 
+Status Renderer::reloadShaders() {
+    auto programs = Programs::build();
+    if (!programs.ok()) return programs.error();
+    mPrograms = std::move(*programs);
+    return success();
+}
+
 void Renderer::finishTimings() {
     mProfiler.drain();
     mTimings.addTimings(mProfiler.takeCompleted());

@@ -43,6 +43,12 @@ public:
     Result<Image> readOutput();
     // Waits for outstanding GPU timers and folds them into timings().
     void finishTimings();
+    // The last frame's output texture (RGBA8 for Aov::Final, RGBA32F
+    // otherwise), for a viewer to draw without a CPU read-back.
+    GLuint outputTexture() const { return mOutput.get(); }
+    // Recompiles every shader from disk. On an error the old programs stay
+    // in use and the error (file and compiler log) is returned.
+    Status reloadShaders();
 
     const FrameTimings& timings() const { return mTimings; }
     void resetTimings() { mTimings = FrameTimings{}; }
