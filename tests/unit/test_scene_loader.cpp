@@ -48,7 +48,10 @@ constexpr const char* kFullScene = R"({
                        "control_depth_scale_per_mm": 0.75, "gaussians": 4, "width_scale": 1.25, "min_width_px": 0.25,
                        "mix": 0.3},
                "transmittance": {"enabled": false, "shrink_mm": 0.5, "strength": 2},
-               "ssao": {"enabled": false, "samples": 32, "radius_m": 0.05, "strength": 0.8, "blur": false}}
+               "ssao": {"enabled": false, "samples": 32, "radius_m": 0.05, "strength": 0.8, "blur": false},
+               "mode": "ts",
+               "ts": {"taps": 9, "min_size": 128, "max_size": 1024, "tsm": false, "tsm_strength": 0.5,
+                      "seam_blend": 1.5}}
 })";
 
 #define EXPECT_VEC3_EQ(a, b)                \
@@ -137,6 +140,13 @@ void expectSceneEq(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.settings.ssao.radiusM, b.settings.ssao.radiusM);
     EXPECT_EQ(a.settings.ssao.strength, b.settings.ssao.strength);
     EXPECT_EQ(a.settings.ssao.blur, b.settings.ssao.blur);
+    EXPECT_EQ(a.settings.mode, b.settings.mode);
+    EXPECT_EQ(a.settings.ts.taps, b.settings.ts.taps);
+    EXPECT_EQ(a.settings.ts.minSize, b.settings.ts.minSize);
+    EXPECT_EQ(a.settings.ts.maxSize, b.settings.ts.maxSize);
+    EXPECT_EQ(a.settings.ts.tsm, b.settings.ts.tsm);
+    EXPECT_EQ(a.settings.ts.tsmStrength, b.settings.ts.tsmStrength);
+    EXPECT_EQ(a.settings.ts.seamBlend, b.settings.ts.seamBlend);
 }
 
 // The error text for a scene that must fail; "" (and a test failure) if it loads.
@@ -311,6 +321,13 @@ TEST(SceneLoader, FullSceneSetsEverySettingAwayFromItsDefault) {
     EXPECT_NE(s.ssao.radiusM, d.ssao.radiusM);
     EXPECT_NE(s.ssao.strength, d.ssao.strength);
     EXPECT_NE(s.ssao.blur, d.ssao.blur);
+    EXPECT_NE(s.mode, d.mode);
+    EXPECT_NE(s.ts.taps, d.ts.taps);
+    EXPECT_NE(s.ts.minSize, d.ts.minSize);
+    EXPECT_NE(s.ts.maxSize, d.ts.maxSize);
+    EXPECT_NE(s.ts.tsm, d.ts.tsm);
+    EXPECT_NE(s.ts.tsmStrength, d.ts.tsmStrength);
+    EXPECT_NE(s.ts.seamBlend, d.ts.seamBlend);
     const CharacterSsao defaultSsao;
     EXPECT_NE(result->characters[0].ssao.radiusM, defaultSsao.radiusM);
     EXPECT_NE(result->characters[0].ssao.samples, defaultSsao.samples);
@@ -590,7 +607,7 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
     EXPECT_EQ(errorOf(R"({"settings": {"shadow": {"filter": "pcf"}}})"),
               "/settings/shadow/filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": "gaussian"}}})"),
-              "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected bilateral or control)");
+              "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected bilateral, control or fetch-only)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": 1}}})"), "/settings/sss/blur: expected a string, got a number");
 }
 
@@ -704,7 +721,33 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     // The flat shadow keys of the first format are gone.
     EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 2048}})"),
               "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, ambient, "
-              "energy_conservation, shadow, sss, transmittance and ssao)");
+              "energy_conservation, mode, shadow, sss, transmittance, ssao and ts)");
+}
+
+TEST(SceneLoader, ModeAndTextureSpaceSettingsAreChecked) {
+    const Result<Scene> scene = parseScene(R"({"settings": {"mode": "ts", "ts": {"min_size": 64, "max_size": 4096}}})",
+                                           "x.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->settings.mode, "ts");
+    EXPECT_EQ(scene->settings.ts.minSize, 64);
+    EXPECT_EQ(scene->settings.ts.maxSize, 4096);
+    EXPECT_EQ(errorOf(R"({"settings": {"mode": "texture"}})"),
+              "/settings/mode: unknown SSS mode \"texture\" (expected ss or ts)");
+    for (const int taps : {1, 2, 8, 35}) {
+        EXPECT_EQ(errorOf(R"({"settings": {"ts": {"taps": )" + std::to_string(taps) + "}}}"),
+                  "/settings/ts/taps: must be an odd number of taps in [3, 33], got " + std::to_string(taps));
+    }
+    for (const int size : {0, 32, 300, 8192}) {
+        EXPECT_EQ(errorOf(R"({"settings": {"ts": {"max_size": )" + std::to_string(size) + "}}}"),
+                  "/settings/ts/max_size: must be a power of two in [64, 4096], got " + std::to_string(size));
+    }
+    EXPECT_EQ(errorOf(R"({"settings": {"ts": {"min_size": 1024, "max_size": 512}}})"),
+              "/settings/ts/min_size: must be <= max_size (512), got 1024");
+    EXPECT_EQ(errorOf(R"({"settings": {"ts": {"tsm_strength": -1}}})"),
+              "/settings/ts/tsm_strength: must be >= 0, got -1");
+    EXPECT_EQ(errorOf(R"({"settings": {"ts": {"seam_blend": -0.5}}})"),
+              "/settings/ts/seam_blend: must be >= 0, got -0.5");
+    EXPECT_EQ(errorOf(R"({"settings": {"ts": {"tsm": 1}}})"), "/settings/ts/tsm: expected true or false, got a number");
 }
 
 TEST(SceneLoader, NumbersMustBeFiniteFloats) {

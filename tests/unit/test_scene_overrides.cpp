@@ -140,7 +140,7 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
     EXPECT_ERROR(errorOf({"settings.ssao.samples=4"}), "--set settings.ssao.samples=4",
                  "/settings/ssao/samples: must be in [8, 128], got 4");
     EXPECT_ERROR(errorOf({"sss.blur=gauss"}), "--set sss.blur=gauss",
-                 "/settings/sss/blur: unknown SSS blur \"gauss\" (expected bilateral or control)");
+                 "/settings/sss/blur: unknown SSS blur \"gauss\" (expected bilateral, control or fetch-only)");
     EXPECT_ERROR(errorOf({"exposure=bright"}), "--set exposure=bright",
                  "/settings/exposure: expected a number, got a string");
     EXPECT_ERROR(errorOf({"lights.1.shadow=1"}), "--set lights.1.shadow=1",
