@@ -2,6 +2,7 @@
 
 #include "sss/BlurKernel.h"
 
+#include <cstdio>
 #include <string>
 
 namespace dermis {
@@ -115,9 +116,10 @@ graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame
         const std::string prefix = "sss " + slot.profile->name() + " g";
         for (const SssGaussianStep& step : slot.steps) {
             const std::string name = prefix + std::to_string(step.gaussian);
-            const std::string why = !slot.visible ? "no pixel of this profile on screen"
-                                                  : "narrower than " + std::to_string(frame.scene->settings.sss.minWidthPx) +
-                                                        " px at the nearest SSS pixel";
+            char why[96];
+            std::snprintf(why, sizeof why, slot.visible ? "%.2f px wide at the nearest SSS pixel (< %g px)"
+                                                        : "no pixel of this profile on screen",
+                          double(step.widthPxAtNearest), double(frame.scene->settings.sss.minWidthPx));
             const BlurData& horizontal = graph.addPass<BlurData>(
                 name + " h",
                 [&](graph::PassBuilder& builder, BlurData& d) {

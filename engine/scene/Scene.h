@@ -116,8 +116,20 @@ struct ShadowSettings {
     std::string filter = "pcf4x4";   // "pcf4x4" (seed 000) or "poisson" (seed 003)
 };
 
+// Texture-space SSS (d'Eon & Luebke, seed 000 §2.2-§2.8; DESIGN.md "Texture-space mode").
+struct TextureSpaceSettings {
+    int taps = 7;              // taps per 1-D blur pass (seed 000 §2.2.4 uses seven), odd, 3..33
+    int minSize = 256;         // irradiance texture side in texels, a power of two: the screen coverage
+    int maxSize = 2048;        // picks a power of two within [minSize, maxSize]
+    bool tsm = true;           // modified translucent shadow map: light through thin regions (seed 000 §2.5)
+    float tsmStrength = 1.0f;  // multiplies the TSM's global-scattering terms (1 = as the profile predicts)
+    float seamBlend = 2.0f;    // a Gaussian gives way to local diffuse where a UV chart border is nearer than
+                               // this many of its standard deviations (0 = never)
+};
+
 // Settings of the frame itself.
 struct RenderSettings {
+    std::string mode = "ss";   // "ss": screen-space SSS chain; "ts": texture-space (DESIGN.md)
     float exposure = 1.0f;
     glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
     bool energyConservation = true;  // seed 000 §2.6: diffuse x (1 - rho_s rho_dt) in and out
@@ -125,6 +137,7 @@ struct RenderSettings {
     SssSettings sss;
     TransmittanceSettings transmittance;
     SsaoSettings ssao;
+    TextureSpaceSettings ts;
 };
 
 struct Scene {

@@ -25,6 +25,9 @@ constexpr double kParallelTolerance = 1e-6;
 const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
 const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
 const std::vector<std::string> kSssBlurs = {"bilateral", "control", "fetch-only"};
+const std::vector<std::string> kSssModes = {"ss", "ts"};
+constexpr int kMinTsSize = 64;
+constexpr int kMaxTsSize = 4096;
 constexpr int kMinSsaoSamples = 8;
 constexpr int kMaxSsaoSamples = 128;
 
@@ -272,20 +275,52 @@ void readSsao(JsonObject& parent, SsaoSettings& ssao) {
     object.boolean("blur", ssao.blur);
 }
 
+bool isTsSize(int size) {
+    return size >= kMinTsSize && size <= kMaxTsSize && (size & (size - 1)) == 0;
+}
+
+void readTextureSpace(JsonObject& parent, TextureSpaceSettings& ts) {
+    const json* value = parent.member("ts");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("ts"),
+                      {"taps", "min_size", "max_size", "tsm", "tsm_strength", "seam_blend"});
+    constrainedInteger(
+        object, "taps", ts.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
+        "must be an odd number of taps in [3, 33]");
+    const std::string sizes =
+        "must be a power of two in [" + std::to_string(kMinTsSize) + ", " + std::to_string(kMaxTsSize) + "]";
+    constrainedInteger(object, "min_size", ts.minSize, isTsSize, sizes);
+    constrainedInteger(object, "max_size", ts.maxSize, isTsSize, sizes);
+    object.boolean("tsm", ts.tsm);
+    object.number("tsm_strength", ts.tsmStrength, Range::atLeast(0.0));
+    object.number("seam_blend", ts.seamBlend, Range::atLeast(0.0));
+    JsonContext& context = parent.context();
+    if (context.failed()) {
+        return;
+    }
+    context.check(ts.minSize <= ts.maxSize, object.pointer("min_size"),
+                  "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
+}
+
 void readSettings(JsonObject& root, RenderSettings& settings) {
     const json* value = root.member("settings");
     if (value == nullptr) {
         return;
     }
     JsonObject object(root.context(), *value, root.pointer("settings"),
-                      {"exposure", "ambient", "energy_conservation", "shadow", "sss", "transmittance", "ssao"});
+                      {"exposure", "ambient", "energy_conservation", "mode", "shadow", "sss", "transmittance", "ssao",
+                       "ts"});
     object.number("exposure", settings.exposure, Range::above(0.0));
     object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
     object.boolean("energy_conservation", settings.energyConservation);
+    choiceString(object, "mode", "SSS mode", kSssModes, settings.mode);
     readShadow(object, settings.shadow);
     readSss(object, settings.sss);
     readTransmittance(object, settings.transmittance);
     readSsao(object, settings.ssao);
+    readTextureSpace(object, settings.ts);
 }
 
 }  // namespace

@@ -134,14 +134,25 @@ Json settingsJson(const RenderSettings& settings) {
     ssaoJson["strength"] = number(ssao.strength);
     ssaoJson["blur"] = ssao.blur;
 
+    const TextureSpaceSettings& ts = settings.ts;
+    Json tsJson;
+    tsJson["taps"] = ts.taps;
+    tsJson["min_size"] = ts.minSize;
+    tsJson["max_size"] = ts.maxSize;
+    tsJson["tsm"] = ts.tsm;
+    tsJson["tsm_strength"] = number(ts.tsmStrength);
+    tsJson["seam_blend"] = number(ts.seamBlend);
+
     Json j;
     j["exposure"] = number(settings.exposure);
     j["ambient"] = vec3(settings.ambient);
     j["energy_conservation"] = settings.energyConservation;
+    j["mode"] = settings.mode;
     j["shadow"] = std::move(shadowJson);
     j["sss"] = std::move(sssJson);
     j["transmittance"] = std::move(transmittanceJson);
     j["ssao"] = std::move(ssaoJson);
+    j["ts"] = std::move(tsJson);
     return j;
 }
 
