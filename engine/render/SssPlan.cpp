@@ -1,5 +1,6 @@
 #include "render/SssPlan.h"
 
+#include "render/ScreenFootprint.h"
 #include "render/UniformBlocks.h"
 
 #include <algorithm>
@@ -7,59 +8,6 @@
 
 namespace dermis {
 namespace {
-
-struct ScreenFootprint {
-    bool visible = false;
-    float nearestViewDepthM = 0.0f;
-    glm::ivec4 scissor{0};
-};
-
-// Conservative: the box's corners in clip space. Invisible only when all
-// corners are outside one frustum plane.
-ScreenFootprint footprint(const Bounds& bounds, const ViewParams& view) {
-    ScreenFootprint out;
-    const glm::mat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
-    int outside[6] = {0, 0, 0, 0, 0, 0};
-    bool behindNear = false;
-    float nearest = INFINITY;
-    glm::vec2 ndcMin(INFINITY);
-    glm::vec2 ndcMax(-INFINITY);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                          (corner & 4) ? bounds.max.z : bounds.min.z);
-        const glm::vec4 clip = clipFromWorld * glm::vec4(p, 1.0f);
-        for (int axis = 0; axis < 3; ++axis) {
-            if (clip[axis] < -clip.w) ++outside[2 * axis];
-            if (clip[axis] > clip.w) ++outside[2 * axis + 1];
-        }
-        const float viewDepthM = -(view.viewFromWorld * glm::vec4(p, 1.0f)).z;
-        nearest = std::min(nearest, viewDepthM);
-        if (clip.w <= view.nearM * 0.5f) {
-            behindNear = true;
-        } else {
-            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-            ndcMin = glm::min(ndcMin, ndc);
-            ndcMax = glm::max(ndcMax, ndc);
-        }
-    }
-    for (int plane : outside) {
-        if (plane == 8) return out;
-    }
-    out.visible = true;
-    out.nearestViewDepthM = std::max(nearest, view.nearM);
-    if (behindNear) {
-        out.scissor = glm::ivec4(0, 0, view.widthPx, view.heightPx);
-        return out;
-    }
-    ndcMin = glm::clamp(ndcMin, glm::vec2(-1.0f), glm::vec2(1.0f));
-    ndcMax = glm::clamp(ndcMax, glm::vec2(-1.0f), glm::vec2(1.0f));
-    const int x0 = static_cast<int>(std::floor((ndcMin.x * 0.5f + 0.5f) * float(view.widthPx)));
-    const int y0 = static_cast<int>(std::floor((ndcMin.y * 0.5f + 0.5f) * float(view.heightPx)));
-    const int x1 = static_cast<int>(std::ceil((ndcMax.x * 0.5f + 0.5f) * float(view.widthPx)));
-    const int y1 = static_cast<int>(std::ceil((ndcMax.y * 0.5f + 0.5f) * float(view.heightPx)));
-    out.scissor = glm::ivec4(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
-    return out;
-}
 
 glm::ivec4 unionRect(const glm::ivec4& a, const glm::ivec4& b) {
     if (a.z <= 0 || a.w <= 0) return b;
@@ -130,7 +78,7 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
         }
         plan.slotOfCharacter[c] = existing->slot;
         if (!scene.settings.sss.enabled || c >= characterBounds.size()) continue;
-        const ScreenFootprint fp = footprint(characterBounds[c], view);
+        const ScreenFootprint fp = screenFootprint(characterBounds[c], view);
         if (!fp.visible) continue;
         existing->nearestViewDepthM =
             existing->visible ? std::min(existing->nearestViewDepthM, fp.nearestViewDepthM) : fp.nearestViewDepthM;

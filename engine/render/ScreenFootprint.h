@@ -1,0 +1,27 @@
+#pragma once
+// Where a world-space box lands on screen: whether it may cover a pixel, its
+// nearest view depth and a pixel rectangle around it. Conservative: the box is
+// culled only when all eight corners are outside one frustum plane, and a box
+// reaching behind the camera covers the whole frame. Shared by the
+// screen-space (SssPlan) and texture-space (TsPlan) planners.
+
+#include "render/SssPlan.h"
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+namespace dermis {
+
+struct ScreenFootprint {
+    bool visible = false;
+    float nearestViewDepthM = 0.0f;  // clamped to the near plane
+    glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)
+};
+
+ScreenFootprint screenFootprint(const Bounds& bounds, const ViewParams& view);
+
+// The view Renderer::planFrame sets up for a camera and frame size.
+ViewParams makeViewParams(const Camera& camera, int widthPx, int heightPx);
+
+}  // namespace dermis

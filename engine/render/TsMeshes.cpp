@@ -1,0 +1,89 @@
+#include "render/TsMeshes.h"
+
+#include "scene/UvLayout.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace dermis {
+namespace {
+
+struct LayoutVertex {
+    glm::vec3 dPdu;
+    glm::vec3 dPdv;
+    float borderDistance;
+};
+
+MeshData readBack(const GpuCharacter& character) {
+    MeshData mesh;
+    GLint64 bytes = 0;
+    glGetNamedBufferParameteri64v(character.mesh.vertexBuffer.get(), GL_BUFFER_SIZE, &bytes);
+    mesh.vertices.resize(static_cast<size_t>(bytes) / sizeof(Vertex));
+    glGetNamedBufferSubData(character.mesh.vertexBuffer.get(), 0,
+                            static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)), mesh.vertices.data());
+    mesh.indices.resize(static_cast<size_t>(character.mesh.indexCount));
+    glGetNamedBufferSubData(character.mesh.indexBuffer.get(), 0,
+                            static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data());
+    return mesh;
+}
+
+TsMesh makeTsMesh(const GpuCharacter& character) {
+    const MeshData mesh = readBack(character);
+    const UvLayout layout = analyseUvLayout(mesh);
+    std::vector<LayoutVertex> vertices(mesh.vertices.size());
+    for (size_t v = 0; v < vertices.size(); ++v) {
+        vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v]};
+    }
+
+    TsMesh out;
+    out.sourceVertexBuffer = character.mesh.vertexBuffer.get();
+    out.indexCount = character.mesh.indexCount;
+    out.medianStretch = layout.medianStretch;
+    out.denseStretch = layout.denseStretch;
+    out.layoutBuffer = gl::createBuffer();
+    glNamedBufferStorage(out.layoutBuffer.get(), static_cast<GLsizeiptr>(std::max<size_t>(vertices.size(), 1) * sizeof(LayoutVertex)),
+                         vertices.empty() ? nullptr : vertices.data(), 0);
+
+    out.vertexArray = gl::createVertexArray();
+    const GLuint vao = out.vertexArray.get();
+    glVertexArrayVertexBuffer(vao, 0, character.mesh.vertexBuffer.get(), 0, sizeof(Vertex));
+    glVertexArrayVertexBuffer(vao, 1, out.layoutBuffer.get(), 0, sizeof(LayoutVertex));
+    glVertexArrayElementBuffer(vao, character.mesh.indexBuffer.get());
+    struct Attribute {
+        GLuint location;
+        GLuint binding;
+        GLint components;
+        size_t offset;
+    };
+    const Attribute attributes[] = {{0, 0, 3, offsetof(Vertex, position)},
+                                    {1, 0, 3, offsetof(Vertex, normal)},
+                                    {2, 0, 4, offsetof(Vertex, tangent)},
+                                    {3, 0, 2, offsetof(Vertex, uv)},
+                                    {kTsLocationDPdu, 1, 3, offsetof(LayoutVertex, dPdu)},
+                                    {kTsLocationDPdv, 1, 3, offsetof(LayoutVertex, dPdv)},
+                                    {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)}};
+    for (const Attribute& a : attributes) {
+        glEnableVertexArrayAttrib(vao, a.location);
+        glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+        glVertexArrayAttribBinding(vao, a.location, a.binding);
+    }
+    return out;
+}
+
+}  // namespace
+
+void TsMesh::draw() const {
+    glBindVertexArray(vertexArray.get());
+    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+const TsMesh& TsMeshes::get(size_t characterIndex, const GpuCharacter& character) {
+    if (mMeshes.size() <= characterIndex) mMeshes.resize(characterIndex + 1);
+    TsMesh& mesh = mMeshes[characterIndex];
+    if (!mesh.vertexArray.isValid() || mesh.sourceVertexBuffer != character.mesh.vertexBuffer.get()) {
+        mesh = makeTsMesh(character);
+    }
+    return mesh;
+}
+
+}  // namespace dermis

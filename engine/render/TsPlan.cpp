@@ -1,0 +1,151 @@
+#include "render/TsPlan.h"
+
+#include "render/ScreenFootprint.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace dermis {
+namespace {
+
+glm::vec3 anyUp(const glm::vec3& direction) {
+    return std::fabs(direction.y) < 0.95f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+}
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// The brightest shadow-casting light behind the character, or -1.
+int chooseTsmLight(const Scene& scene, const LightSetup& lights, const Bounds& bounds) {
+    int best = -1;
+    float bestLuminance = 0.0f;
+    const glm::vec3 centre = bounds.centre();
+    for (int index : lights.shadowedLights) {
+        const Light& light = scene.lights[static_cast<size_t>(index)];
+        if (!isBackLight(light, bounds, scene.camera.positionM)) continue;
+        float value = luminance(light.colour) * light.intensity;
+        if (light.type != LightType::Directional) {
+            const glm::vec3 toLight = light.positionM - centre;
+            value /= std::max(glm::dot(toLight, toLight), 1e-6f);
+        }
+        if (value > bestLuminance) {
+            bestLuminance = value;
+            best = index;
+        }
+    }
+    return best;
+}
+
+// A projection that frames the character's bounding sphere as the light sees it.
+void fitTsm(const gpu::GpuLight& light, const Bounds& bounds, TsCharacterPlan& plan) {
+    const glm::vec3 centre = bounds.centre();
+    const float radiusM = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    const glm::vec3 direction = glm::vec3(light.directionShadow);
+    if (int(light.positionType.w) == DERMIS_LIGHT_DIRECTIONAL) {
+        const glm::vec3 eye = centre - direction * (2.0f * radiusM);
+        plan.tsmClipFromWorld = glm::ortho(-radiusM, radiusM, -radiusM, radiusM, 0.5f * radiusM, 3.5f * radiusM) *
+                                glm::lookAt(eye, centre, anyUp(direction));
+        plan.tsmOriginM = eye;
+        plan.tsmAxis = direction;
+        plan.tsmAlongAxis = true;
+        return;
+    }
+    const glm::vec3 position = glm::vec3(light.positionType);
+    const float distanceM = glm::length(centre - position);
+    plan.tsmOriginM = position;
+    plan.tsmAlongAxis = false;
+    if (distanceM > 1.05f * radiusM) {
+        const glm::vec3 axis = (centre - position) / distanceM;
+        const float halfAngle = std::asin(std::min(radiusM / distanceM, 0.999f));
+        plan.tsmAxis = axis;
+        plan.tsmClipFromWorld = glm::perspective(2.0f * halfAngle, 1.0f, std::max(distanceM - radiusM, 1e-3f),
+                                                 distanceM + radiusM) *
+                                glm::lookAt(position, centre, anyUp(axis));
+        return;
+    }
+    // The light is inside the bounds: its own cone.
+    const float halfAngle = std::acos(std::clamp(light.spot.y, 0.02f, 0.999f));
+    plan.tsmAxis = direction;
+    plan.tsmClipFromWorld = glm::perspective(2.0f * halfAngle, 1.0f, 1e-3f, distanceM + radiusM) *
+                            glm::lookAt(position, position + direction, anyUp(direction));
+}
+
+void planGaussians(TsCharacterPlan& plan, const SssSettings& sss, float denseMmPerUv) {
+    const auto& gaussians = plan.profile->gaussians();
+    const int used = std::clamp(sss.gaussians, 1, static_cast<int>(gaussians.size()));
+    const float widthScale2 = sss.widthScale * sss.widthScale;
+    plan.gaussians.clear();
+    for (int i = 0; i < used; ++i) {
+        const ProfileGaussian& g = gaussians[static_cast<size_t>(i)];
+        plan.gaussians.push_back(glm::vec4(g.weight, g.varianceMm2 * widthScale2));
+    }
+    for (size_t i = static_cast<size_t>(used); i < gaussians.size(); ++i) {
+        plan.gaussians.back() += glm::vec4(gaussians[i].weight, 0.0f);
+    }
+    const float texelsPerMm = denseMmPerUv > 0.0f ? float(plan.size) / denseMmPerUv : 0.0f;
+    plan.steps.clear();
+    for (int i = 1; i < used; ++i) {
+        TsStep step;
+        step.gaussian = i;
+        step.stepVarianceMm2 = plan.gaussians[static_cast<size_t>(i)].a - plan.gaussians[static_cast<size_t>(i - 1)].a;
+        step.widthTexels = std::sqrt(plan.gaussians[static_cast<size_t>(i)].a) * texelsPerMm;
+        step.skipped = !plan.visible || step.stepVarianceMm2 <= 0.0f || step.widthTexels < kMinStepTexels;
+        plan.steps.push_back(step);
+    }
+}
+
+}  // namespace
+
+bool TsPlan::anyVisible() const {
+    return std::any_of(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.visible; });
+}
+
+int tsTextureSize(float texels, int minSize, int maxSize) {
+    int size = minSize;
+    if (std::isfinite(texels) && texels > 0.0f) {
+        const float exponent = std::round(std::log2(texels));
+        size = exponent >= 30.0f ? maxSize : 1 << std::max(0, static_cast<int>(exponent));
+    }
+    return std::clamp(size, minSize, maxSize);
+}
+
+Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacterInput>& inputs, const ViewParams& view,
+                                const LightSetup& lights) {
+    TsPlan plan;
+    const RenderSettings& settings = scene.settings;
+    std::map<std::string, int> labelUses;
+    for (const Character& character : scene.characters) labelUses[character.name]++;
+    for (size_t c = 0; c < scene.characters.size() && c < inputs.size(); ++c) {
+        const Character& character = scene.characters[c];
+        if (character.material.profile == "none") continue;
+        auto profile = findProfile(character.material.profile);
+        if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
+
+        TsCharacterPlan p;
+        p.character = static_cast<int>(c);
+        p.profile = *profile;
+        p.label = character.name.empty() ? "character " + std::to_string(c) : character.name;
+        if (labelUses[character.name] > 1) p.label += " #" + std::to_string(c);
+
+        const TsCharacterInput& input = inputs[c];
+        const ScreenFootprint footprint = screenFootprint(input.worldBounds, view);
+        p.visible = settings.sss.enabled && footprint.visible;
+        p.nearestViewDepthM = footprint.nearestViewDepthM;
+        const float pixelsPerMm =
+            p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;
+        p.size = tsTextureSize(input.mmPerUv * pixelsPerMm, settings.ts.minSize, settings.ts.maxSize);
+        planGaussians(p, settings.sss, input.denseMmPerUv);
+
+        if (settings.ts.tsm) p.tsmLight = chooseTsmLight(scene, lights, input.worldBounds);
+        if (p.tsmLight >= 0) {
+            p.tsmSize = std::clamp(p.size, kMinTsmSize, kMaxTsmSize);
+            fitTsm(lights.block.lights[p.tsmLight], input.worldBounds, p);
+        }
+        plan.characters.push_back(std::move(p));
+    }
+    return plan;
+}
+
+}  // namespace dermis

@@ -1,0 +1,91 @@
+#pragma once
+// What the texture-space SSS mode will do this frame, per character, decided
+// on the CPU from the scene, the view and each mesh's UV layout (no GL), so
+// the render graph skips work by predicate and tests can check the decisions.
+//
+// Per SSS character (seed 000 §2.2.2):
+//  - visible: its bounds may cover a pixel (render/ScreenFootprint.h). An
+//    invisible character's texture-space passes are all skipped.
+//  - size: the irradiance texture's side, the power of two nearest to one
+//    texel per screen pixel at the character's nearest point, within
+//    [ts.min_size, ts.max_size].
+//  - Gaussians: Gaussian 0 is the irradiance texture itself (seed 000
+//    §2.2.4: the narrowest Gaussian changes nothing); step i >= 1 blurs
+//    texture i-1 by v_i - v_(i-1) into texture i, so a six-Gaussian profile
+//    takes five blurs. sss.gaussians and sss.width_scale mean what they mean
+//    in screen space (render/SssPlan.h): the widest Gaussians are dropped
+//    with their weights folded into the widest kept; widths are scaled. A
+//    step whose Gaussian is narrower than half a texel where the layout is
+//    densest is skipped (its texture is the previous one).
+//  - TSM: the shadow-casting light behind the character (as the camera sees
+//    it) whose modified translucent shadow map carries light through thin
+//    regions (seed 000 §2.5), with a projection fitted to the character.
+//    Seed 000 applies it for one light; so does this (the irradiance
+//    texture's alpha holds one thickness).
+
+#include "core/Result.h"
+#include "render/LightSetup.h"
+#include "render/SssPlan.h"
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+#include "sss/DiffusionProfile.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+// What the planner needs of one character besides the scene.
+struct TsCharacterInput {
+    Bounds worldBounds;
+    float mmPerUv = 0.0f;       // typical world length of one UV unit, mm (UvLayout::medianStretch, scaled)
+    float denseMmPerUv = 0.0f;  // the same where the layout is densest (UvLayout::denseStretch, scaled)
+};
+
+struct TsStep {
+    int gaussian = 1;              // index into the profile's Gaussians, >= 1
+    float stepVarianceMm2 = 0.0f;  // blur of this step: (v_i - v_(i-1)) x width_scale^2
+    float widthTexels = 0.0f;      // std dev of Gaussian i in texels where the layout is densest
+    bool skipped = false;
+};
+
+struct TsCharacterPlan {
+    int character = 0;   // index into Scene::characters
+    std::string label;   // names its passes: "ts <label> ..."; the character's name, made unique
+    const DiffusionProfile* profile = nullptr;
+    bool visible = false;
+    float nearestViewDepthM = 0.0f;
+    int size = 0;        // irradiance texture side, texels (a power of two)
+    // One per Gaussian used: rgb the weight (after folding), a the variance
+    // (mm^2, width-scaled). Index i is blurred texture i.
+    std::vector<glm::vec4> gaussians;
+    std::vector<TsStep> steps;  // Gaussians 1 .. gaussians.size() - 1
+    int tsmLight = -1;          // index into Scene::lights; -1: no translucent shadow map
+    int tsmSize = 0;            // its side, texels
+    glm::mat4 tsmClipFromWorld{1.0f};
+    glm::vec3 tsmOriginM{0.0f};  // depth in the TSM is measured from here...
+    glm::vec3 tsmAxis{0.0f, 0.0f, -1.0f};
+    bool tsmAlongAxis = true;    // ...along tsmAxis (directional lights) or as the distance (spot lights)
+};
+
+struct TsPlan {
+    std::vector<TsCharacterPlan> characters;  // the SSS characters, in scene order
+    bool anyVisible() const;
+};
+
+// Smallest TSM side; the largest is min(irradiance size, kMaxTsmSize).
+constexpr int kMinTsmSize = 256;
+constexpr int kMaxTsmSize = 1024;
+// A Gaussian step narrower than this (std dev, texels) is not blurred.
+constexpr float kMinStepTexels = 0.5f;
+
+// The power of two nearest (in log2) to `texels`, within [minSize, maxSize].
+int tsTextureSize(float texels, int minSize, int maxSize);
+
+// inputs has one entry per scene character. Errors for an unknown profile.
+Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacterInput>& inputs, const ViewParams& view,
+                                const LightSetup& lights);
+
+}  // namespace dermis

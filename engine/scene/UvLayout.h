@@ -1,0 +1,48 @@
+#pragma once
+// What texture-space SSS needs to know about a mesh's UV layout, worked out
+// once on the CPU from the mesh alone (no GL):
+//
+//  - per vertex, the derivatives of the position with respect to u and v, in
+//    object units per UV unit. Their world-space lengths are the stretch map
+//    (seed 000 §2.2.4 listing 2.1, seed 002 §II): how far on the surface one
+//    unit of u or v reaches, which sets the spacing of the blur taps.
+//    Listing 2.1 takes dFdx(worldPosition) per fragment, which is constant
+//    over each triangle; on the 64 x 32 UV sphere that is off by up to
+//    dtheta cot(theta) (10% at 45 degrees latitude) and steps from triangle
+//    to triangle. Averaged per vertex (weighted by UV area) and interpolated,
+//    the error is second order instead.
+//  - per vertex, the distance along the surface to the nearest UV chart
+//    border (a seam or the mesh's edge), in object units. A texture-space blur
+//    cannot see light from across a border, so near one the final gather
+//    blends to local diffuse (DESIGN.md, "Texture-space mode").
+//  - summary stretch figures from which the planner picks a texture size.
+//
+// Degenerate triangles (no area in UV, or none in space) add nothing, so every
+// value is finite; a vertex with only degenerate triangles gets zero
+// derivatives.
+
+#include "scene/Mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace dermis {
+
+struct UvLayout {
+    std::vector<glm::vec3> dPdu;        // per vertex, object units per unit of u
+    std::vector<glm::vec3> dPdv;        // per vertex, object units per unit of v
+    std::vector<float> borderDistance;  // per vertex, object units along mesh edges to a chart border
+    // Median over vertices of sqrt(|dP/du| |dP/dv|): the typical object-space
+    // length of one UV unit. 0 for a mesh without a usable triangle.
+    float medianStretch = 0.0f;
+    // 5th percentile of min(|dP/du|, |dP/dv|): the densest parts of the layout.
+    float denseStretch = 0.0f;
+};
+
+// A border vertex that no edge path reaches keeps this distance.
+constexpr float kFarFromBorder = 1e6f;
+
+UvLayout analyseUvLayout(const MeshData& mesh);
+
+}  // namespace dermis

@@ -1,0 +1,154 @@
+// What the texture-space mode decides to run, on the CPU alone.
+#include "render/ScreenFootprint.h"
+#include "render/TsPlan.h"
+#include "scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+using namespace dermis;
+
+namespace {
+
+const Bounds kHeadBounds{glm::vec3(-0.1f, -0.19f, -0.12f), glm::vec3(0.1f, 0.15f, 0.13f)};
+constexpr float kHeadMmPerUv = 600.0f;
+
+Scene defaultScene(const std::vector<std::string>& overrides = {}) {
+    auto scene = loadScene(std::string(DERMIS_SOURCE_CONTENT_DIR) + "/scenes/default.json", overrides);
+    EXPECT_TRUE(scene.ok()) << scene.error().message();
+    return scene.ok() ? *scene : Scene{};
+}
+
+TsPlan plan(const Scene& scene, int width = 640, int height = 360, Bounds bounds = kHeadBounds) {
+    std::vector<TsCharacterInput> inputs(scene.characters.size(), {bounds, kHeadMmPerUv, 300.0f});
+    const LightSetup lights = setupLights(scene.lights, bounds, scene.settings.shadow);
+    auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, width, height), lights);
+    EXPECT_TRUE(result.ok()) << result.error().message();
+    return result.ok() ? *result : TsPlan{};
+}
+
+}  // namespace
+
+TEST(TsPlan, TextureSizeIsTheNearestPowerOfTwoWithinTheLimits) {
+    EXPECT_EQ(tsTextureSize(1000.0f, 256, 2048), 1024);
+    EXPECT_EQ(tsTextureSize(1400.0f, 256, 2048), 1024);
+    EXPECT_EQ(tsTextureSize(1500.0f, 256, 2048), 2048);
+    EXPECT_EQ(tsTextureSize(100000.0f, 256, 2048), 2048);
+    EXPECT_EQ(tsTextureSize(10.0f, 256, 2048), 256);
+    EXPECT_EQ(tsTextureSize(0.0f, 256, 2048), 256);
+    EXPECT_EQ(tsTextureSize(NAN, 256, 2048), 256);
+    EXPECT_EQ(tsTextureSize(INFINITY, 256, 2048), 256);
+    EXPECT_EQ(tsTextureSize(1e30f, 64, 4096), 4096);
+}
+
+TEST(TsPlan, VisibleSkinHeadTakesFiveIncrementalBlurs) {
+    const TsPlan p = plan(defaultScene());
+    ASSERT_EQ(p.characters.size(), 1u);
+    const TsCharacterPlan& head = p.characters[0];
+    EXPECT_TRUE(head.visible);
+    EXPECT_EQ(head.label, "head");
+    ASSERT_EQ(head.gaussians.size(), 6u);
+    ASSERT_EQ(head.steps.size(), 5u);
+    const auto& skin = skinProfile().gaussians();
+    float total = 0.0f;
+    for (size_t i = 0; i < head.steps.size(); ++i) {
+        EXPECT_EQ(head.steps[i].gaussian, int(i) + 1);
+        EXPECT_FLOAT_EQ(head.steps[i].stepVarianceMm2, skin[i + 1].varianceMm2 - skin[i].varianceMm2);
+        total += head.steps[i].stepVarianceMm2;
+    }
+    // The incremental steps add up to the widest Gaussian (seed 000 §2.2.4).
+    EXPECT_NEAR(total + skin[0].varianceMm2, skin[5].varianceMm2, 1e-5f);
+    EXPECT_GE(head.size, 256);
+    EXPECT_LE(head.size, 2048);
+    EXPECT_EQ(head.size & (head.size - 1), 0);
+}
+
+TEST(TsPlan, SizeFollowsScreenCoverage) {
+    const Scene scene = defaultScene();
+    const int small = plan(scene, 320, 180).characters[0].size;
+    const int large = plan(scene, 1280, 720).characters[0].size;
+    EXPECT_EQ(large, 4 * small > 2048 ? 2048 : 4 * small);
+    EXPECT_LT(small, large);
+    const TsPlan capped = plan(defaultScene({"ts.max_size=512"}), 1280, 720);
+    EXPECT_EQ(capped.characters[0].size, 512);
+    const TsPlan floored = plan(defaultScene({"ts.min_size=1024"}), 64, 36);
+    EXPECT_EQ(floored.characters[0].size, 1024);
+}
+
+TEST(TsPlan, OffScreenCharacterIsInvisibleAndSkipsEveryStep) {
+    const Bounds behindCamera{glm::vec3(0.5f, 0.0f, 2.0f), glm::vec3(0.7f, 0.3f, 2.2f)};
+    const TsPlan p = plan(defaultScene(), 640, 360, behindCamera);
+    ASSERT_EQ(p.characters.size(), 1u);
+    EXPECT_FALSE(p.characters[0].visible);
+    EXPECT_FALSE(p.anyVisible());
+    for (const TsStep& step : p.characters[0].steps) EXPECT_TRUE(step.skipped);
+}
+
+TEST(TsPlan, DisabledSssMakesEveryCharacterInvisible) {
+    const TsPlan p = plan(defaultScene({"sss.enabled=false"}));
+    EXPECT_FALSE(p.anyVisible());
+}
+
+TEST(TsPlan, DroppedGaussiansFoldIntoTheWidestKept) {
+    const TsPlan p = plan(defaultScene({"sss.gaussians=3", "sss.width_scale=2"}));
+    const TsCharacterPlan& head = p.characters[0];
+    ASSERT_EQ(head.gaussians.size(), 3u);
+    ASSERT_EQ(head.steps.size(), 2u);
+    glm::vec3 sum(0.0f);
+    for (const glm::vec4& g : head.gaussians) sum += glm::vec3(g);
+    EXPECT_NEAR(sum.r, 1.0f, 1e-5f);
+    EXPECT_NEAR(sum.g, 1.0f, 1e-5f);
+    EXPECT_NEAR(sum.b, 1.0f, 1e-5f);
+    EXPECT_FLOAT_EQ(head.gaussians[2].a, 4.0f * skinProfile().gaussians()[2].varianceMm2);
+}
+
+TEST(TsPlan, NarrowGaussiansAreSkippedAtLowResolution) {
+    // At 64 texels over 300 mm a texel is ~5 mm: only the widest skin Gaussian spans half a texel.
+    const TsPlan p = plan(defaultScene({"ts.min_size=64", "ts.max_size=64"}));
+    const TsCharacterPlan& head = p.characters[0];
+    int blurred = 0;
+    for (const TsStep& step : head.steps) {
+        EXPECT_EQ(step.skipped, step.widthTexels < kMinStepTexels);
+        blurred += step.skipped ? 0 : 1;
+    }
+    EXPECT_LT(blurred, 5);
+    EXPECT_FALSE(head.steps.back().skipped);
+}
+
+TEST(TsPlan, TranslucentShadowMapUsesTheShadowedBackLight) {
+    // default.json: light 0 lights the face, light 1 (a shadowed spot) is behind the head.
+    TsPlan p = plan(defaultScene());
+    EXPECT_EQ(p.characters[0].tsmLight, 1);
+    EXPECT_GE(p.characters[0].tsmSize, kMinTsmSize);
+    EXPECT_LE(p.characters[0].tsmSize, kMaxTsmSize);
+    EXPECT_FALSE(p.characters[0].tsmAlongAxis);
+    // The head's centre projects into the middle of the map.
+    const glm::vec4 clip = p.characters[0].tsmClipFromWorld * glm::vec4(kHeadBounds.centre(), 1.0f);
+    EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-4f);
+    EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-4f);
+    EXPECT_EQ(plan(defaultScene({"ts.tsm=false"})).characters[0].tsmLight, -1);
+    EXPECT_EQ(plan(defaultScene({"lights.1.shadow=false"})).characters[0].tsmLight, -1);
+    // Seen from behind, the key light is the back light.
+    EXPECT_EQ(plan(defaultScene({"camera.position_m=[-0.3,0.1,-0.5]"})).characters[0].tsmLight, 0);
+}
+
+TEST(TsPlan, OpaqueCharactersHaveNoPlanAndLabelsAreUnique) {
+    Scene scene = defaultScene();
+    scene.characters.push_back(scene.characters[0]);
+    scene.characters.push_back(scene.characters[0]);
+    scene.characters[1].material.profile = "none";
+    const TsPlan p = plan(scene);
+    ASSERT_EQ(p.characters.size(), 2u);
+    EXPECT_EQ(p.characters[0].character, 0);
+    EXPECT_EQ(p.characters[1].character, 2);
+    EXPECT_EQ(p.characters[0].label, "head #0");
+    EXPECT_EQ(p.characters[1].label, "head #2");
+}
+
+TEST(TsPlan, UnknownProfileIsAnError) {
+    Scene scene = defaultScene();
+    scene.characters[0].material.profile = "jade";
+    std::vector<TsCharacterInput> inputs(1, {kHeadBounds, kHeadMmPerUv, 300.0f});
+    auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, 64, 36), LightSetup{});
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(result.error().what.find("jade"), std::string::npos);
+}

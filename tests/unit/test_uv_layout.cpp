@@ -1,0 +1,112 @@
+// The UV-layout analysis texture-space SSS draws with: stretch (position
+// derivatives) against the UV sphere's closed form, finiteness on degenerate
+// triangles, and distances to chart borders.
+#include "scene/Procedural.h"
+#include "scene/ProceduralShapes.h"
+#include "scene/UvLayout.h"
+
+#include <glm/gtc/constants.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace dermis;
+
+namespace {
+
+MeshData proceduralMesh(const std::string& name) {
+    auto model = makeProceduralModel(name);
+    EXPECT_TRUE(model.ok());
+    return model.ok() ? model->mesh : MeshData{};
+}
+
+}  // namespace
+
+TEST(UvLayout, SphereStretchMatchesTheClosedFormAwayFromThePoles) {
+    // u = longitude / 2 pi, v = polar angle / pi on a sphere of radius r:
+    // |dP/du| = 2 pi r sin(theta), |dP/dv| = pi r.
+    const MeshData sphere = proceduralMesh("sphere");
+    const UvLayout layout = analyseUvLayout(sphere);
+    ASSERT_EQ(layout.dPdu.size(), sphere.vertices.size());
+    const double r = kSphereRadiusM;
+    double worstInside = 0.0;  // away from the seam: averaged over triangles on every side
+    double worstSeam = 0.0;    // on the seam: one-sided, first-order error dtheta/3 cot(theta)
+    double worstV = 0.0;
+    int checked = 0;
+    for (size_t i = 0; i < sphere.vertices.size(); ++i) {
+        const glm::vec2 uv = sphere.vertices[i].uv;
+        const double theta = glm::pi<double>() * uv.y;
+        if (theta < glm::radians(35.0) || theta > glm::radians(145.0)) continue;
+        const double errorU = std::abs(glm::length(layout.dPdu[i]) / (2.0 * glm::pi<double>() * r * std::sin(theta)) - 1.0);
+        const bool seam = uv.x == 0.0f || uv.x == 1.0f;
+        (seam ? worstSeam : worstInside) = std::max(seam ? worstSeam : worstInside, errorU);
+        worstV = std::max(worstV, std::abs(glm::length(layout.dPdv[i]) / (glm::pi<double>() * r) - 1.0));
+        ++checked;
+    }
+    std::printf("sphere vertices 35..145 deg: worst |dP/du| error %.3f%% (seam %.3f%%), |dP/dv| %.3f%%\n",
+                100 * worstInside, 100 * worstSeam, 100 * worstV);
+    EXPECT_GT(checked, 1000);
+    EXPECT_LT(worstInside, 0.01);
+    EXPECT_LT(worstSeam, 0.05);
+    EXPECT_LT(worstV, 0.01);
+    // Vertices are spread evenly in theta, so the median of sin(theta) is sin(45 deg).
+    const double median = glm::pi<double>() * r * std::sqrt(2.0 * std::sin(glm::quarter_pi<double>()));
+    EXPECT_NEAR(layout.medianStretch, median, 0.03 * median);
+}
+
+TEST(UvLayout, DegenerateTrianglesGiveFiniteValues) {
+    MeshData mesh;
+    auto vertex = [](glm::vec3 p, glm::vec2 uv) {
+        Vertex v;
+        v.position = p;
+        v.uv = uv;
+        return v;
+    };
+    mesh.vertices = {vertex({0, 0, 0}, {0, 0}), vertex({1, 0, 0}, {1, 0}), vertex({0, 1, 0}, {0, 1}),
+                     // no area in space (collinear), some in UV
+                     vertex({2, 0, 0}, {2, 0}), vertex({3, 0, 0}, {3, 1}), vertex({4, 0, 0}, {2.5f, 2}),
+                     // no area in UV, some in space
+                     vertex({0, 0, 5}, {5, 5}), vertex({1, 0, 5}, {5, 5}), vertex({0, 1, 5}, {5, 5}),
+                     // a sliver in UV
+                     vertex({0, 0, 9}, {7, 7}), vertex({1, 0, 9}, {7.0001f, 7}), vertex({0, 1, 9}, {7, 7.0000001f})};
+    mesh.indices = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+    const UvLayout layout = analyseUvLayout(mesh);
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_TRUE(std::isfinite(layout.dPdu[i][c])) << i;
+            EXPECT_TRUE(std::isfinite(layout.dPdv[i][c])) << i;
+        }
+        EXPECT_TRUE(std::isfinite(layout.borderDistance[i])) << i;
+    }
+    EXPECT_FLOAT_EQ(glm::length(layout.dPdu[0]), 1.0f);
+    EXPECT_EQ(glm::length(layout.dPdu[3]), 0.0f);  // only in a degenerate triangle
+    EXPECT_EQ(glm::length(layout.dPdu[6]), 0.0f);
+    EXPECT_TRUE(std::isfinite(layout.medianStretch));
+}
+
+TEST(UvLayout, PlaneBorderDistanceIsTheDistanceToItsNearestEdge) {
+    // The plane is one chart, 1 m square, centred at the origin in XZ.
+    const MeshData plane = proceduralMesh("plane");
+    const UvLayout layout = analyseUvLayout(plane);
+    for (size_t i = 0; i < plane.vertices.size(); ++i) {
+        const glm::vec3 p = plane.vertices[i].position;
+        const float expected = std::min({p.x + 0.5f, 0.5f - p.x, p.z + 0.5f, 0.5f - p.z});
+        ASSERT_NEAR(layout.borderDistance[i], expected, 1e-4f) << "vertex " << i;
+    }
+}
+
+TEST(UvLayout, SphereSeamAndPolesAreChartBorders) {
+    const MeshData sphere = proceduralMesh("sphere");
+    const UvLayout layout = analyseUvLayout(sphere);
+    float equatorFarSide = -1.0f;
+    for (size_t i = 0; i < sphere.vertices.size(); ++i) {
+        const glm::vec2 uv = sphere.vertices[i].uv;
+        const bool pole = uv.y == 0.0f || uv.y == 1.0f;  // some pole copies are used by no triangle
+        if (!pole && (uv.x == 0.0f || uv.x == 1.0f)) EXPECT_EQ(layout.borderDistance[i], 0.0f) << "seam vertex " << i;
+        if (std::abs(uv.x - 0.5f) < 1e-4f && std::abs(uv.y - 0.5f) < 1e-4f) equatorFarSide = layout.borderDistance[i];
+    }
+    // Opposite the seam on the equator, the nearest border is the ring next to
+    // a pole (the zigzag of pole triangles), a quarter meridian minus one row away.
+    const float expected = kSphereRadiusM * (glm::half_pi<float>() - glm::pi<float>() / 32.0f);
+    EXPECT_NEAR(equatorFarSide, expected, 0.02f * expected);
+}
