@@ -82,7 +82,12 @@ struct Background {
 // Screen-space SSS (DESIGN.md pass 5; seed 000 §2.2.4, seed 001 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
-    std::string blur = "bilateral";     // "bilateral" (depth-weighted taps), "control" (Jimenez's lerp to centre),
+    // Seed 001's three variants of the frame (§5.1): "c" (Jimenez: KS specular from the unblurred normal, control
+    // blur), "lcb" (LEAN specular from moments blurred with the irradiance, control blur) or "lbb" (LEAN, bilateral
+    // blur). See render/SssVariant.h.
+    std::string variant = "lbb";
+    std::string blur = "variant";       // "variant" (the variant's: control for c and lcb, bilateral for lbb),
+                                         // "bilateral" (depth-weighted taps), "control" (Jimenez's lerp to centre),
                                          // or "fetch-only" (same fetches, no weighting: the benchmarks' bandwidth floor)
     int taps = 9;                        // taps per direction, odd, 3..33
     float bilateralDepthMm = 1.0f;       // std dev of the Gaussian in tap-to-centre depth difference (mm)

@@ -24,7 +24,8 @@ constexpr double kParallelTolerance = 1e-6;
 
 const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
 const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
-const std::vector<std::string> kSssBlurs = {"bilateral", "control", "fetch-only"};
+const std::vector<std::string> kSssBlurs = {"variant", "bilateral", "control", "fetch-only"};
+const std::vector<std::string> kSssVariants = {"c", "lcb", "lbb"};
 const std::vector<std::string> kSssModes = {"ss", "ts"};
 constexpr int kMinTsSize = 64;
 constexpr int kMaxTsSize = 4096;
@@ -235,9 +236,10 @@ void readSss(JsonObject& parent, SssSettings& sss) {
         return;
     }
     JsonObject object(parent.context(), *value, parent.pointer("sss"),
-                      {"enabled", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm", "gaussians",
-                       "width_scale", "min_width_px", "mix"});
+                      {"enabled", "variant", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm",
+                       "gaussians", "width_scale", "min_width_px", "mix"});
     object.boolean("enabled", sss.enabled);
+    choiceString(object, "variant", "SSS variant", kSssVariants, sss.variant);
     choiceString(object, "blur", "SSS blur", kSssBlurs, sss.blur);
     constrainedInteger(
         object, "taps", sss.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },

@@ -111,6 +111,7 @@ Json settingsJson(const RenderSettings& settings) {
     const SssSettings& sss = settings.sss;
     Json sssJson;
     sssJson["enabled"] = sss.enabled;
+    sssJson["variant"] = sss.variant;
     sssJson["blur"] = sss.blur;
     sssJson["taps"] = sss.taps;
     sssJson["bilateral_depth_mm"] = number(sss.bilateralDepthMm);

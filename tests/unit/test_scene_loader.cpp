@@ -44,7 +44,7 @@ constexpr const char* kFullScene = R"({
   "background": {"colour": [0.1, 0.2, 0.3]},
   "settings": {"exposure": 1.5, "ambient": [0.01, 0.02, 0.03], "energy_conservation": false,
                "shadow": {"map_size": 2048, "bias_constant_m": 0.001, "bias_slope_texels": 1.5, "filter": "poisson"},
-               "sss": {"enabled": false, "blur": "control", "taps": 13, "bilateral_depth_mm": 2.5,
+               "sss": {"enabled": false, "variant": "lcb", "blur": "control", "taps": 13, "bilateral_depth_mm": 2.5,
                        "control_depth_scale_per_mm": 0.75, "gaussians": 4, "width_scale": 1.25, "min_width_px": 0.25,
                        "mix": 0.3},
                "transmittance": {"enabled": false, "shrink_mm": 0.5, "strength": 2},
@@ -124,6 +124,7 @@ void expectSceneEq(const Scene& a, const Scene& b) {
     const SssSettings& x = a.settings.sss;
     const SssSettings& y = b.settings.sss;
     EXPECT_EQ(x.enabled, y.enabled);
+    EXPECT_EQ(x.variant, y.variant);
     EXPECT_EQ(x.blur, y.blur);
     EXPECT_EQ(x.taps, y.taps);
     EXPECT_EQ(x.bilateralDepthMm, y.bilateralDepthMm);
@@ -271,6 +272,7 @@ TEST(SceneLoader, FullSceneParsesIntoExpectedValues) {
     EXPECT_EQ(s.settings.shadow.filter, "poisson");
     const SssSettings& sss = s.settings.sss;
     EXPECT_FALSE(sss.enabled);
+    EXPECT_EQ(sss.variant, "lcb");
     EXPECT_EQ(sss.blur, "control");
     EXPECT_EQ(sss.taps, 13);
     EXPECT_EQ(sss.bilateralDepthMm, 2.5f);
@@ -305,6 +307,7 @@ TEST(SceneLoader, FullSceneSetsEverySettingAwayFromItsDefault) {
     EXPECT_NE(s.shadow.biasSlopeTexels, d.shadow.biasSlopeTexels);
     EXPECT_NE(s.shadow.filter, d.shadow.filter);
     EXPECT_NE(s.sss.enabled, d.sss.enabled);
+    EXPECT_NE(s.sss.variant, d.sss.variant);
     EXPECT_NE(s.sss.blur, d.sss.blur);
     EXPECT_NE(s.sss.taps, d.sss.taps);
     EXPECT_NE(s.sss.bilateralDepthMm, d.sss.bilateralDepthMm);
@@ -532,7 +535,7 @@ TEST(SceneWriter, WritesSettingsAsNestedGroups) {
     EXPECT_NE(text.find("\"energy_conservation\": true,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"shadow\": {\n      \"map_size\": 1024,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"filter\": \"pcf4x4\""), std::string::npos) << text;
-    EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"blur\": \"bilateral\",\n      \"taps\": 9,"),
+    EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"variant\": \"lbb\",\n      \"blur\": \"variant\",\n      \"taps\": 9,"),
               std::string::npos)
         << text;
     EXPECT_NE(text.find("\"transmittance\": {"), std::string::npos) << text;
@@ -607,8 +610,30 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
     EXPECT_EQ(errorOf(R"({"settings": {"shadow": {"filter": "pcf"}}})"),
               "/settings/shadow/filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": "gaussian"}}})"),
-              "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected bilateral, control or fetch-only)");
+              "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected variant, bilateral, control or fetch-only)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": 1}}})"), "/settings/sss/blur: expected a string, got a number");
+}
+
+// Seed 001's comparison: the variant picks the specular path and, unless
+// `blur` names one, the blur (render/SssVariant.h).
+TEST(SceneLoader, SssVariantDefaultsToLeanBilateralAndAcceptsTheThree) {
+    const Result<Scene> empty = parseScene("{}", kScenePath);
+    ASSERT_TRUE(empty.ok());
+    EXPECT_EQ(empty->settings.sss.variant, "lbb");
+    EXPECT_EQ(empty->settings.sss.blur, "variant");
+    for (const char* variant : {"c", "lcb", "lbb"}) {
+        const Result<Scene> scene =
+            parseScene(std::string(R"({"settings": {"sss": {"variant": ")") + variant + R"("}}})", kScenePath);
+        ASSERT_TRUE(scene.ok()) << scene.error().message();
+        EXPECT_EQ(scene->settings.sss.variant, variant);
+        const Result<Scene> again = parseScene(sceneToJson(*scene), kScenePath);
+        ASSERT_TRUE(again.ok());
+        EXPECT_EQ(again->settings.sss.variant, variant);
+    }
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"variant": "LBB"}}})"),
+              "/settings/sss/variant: unknown SSS variant \"LBB\" (expected c, lcb or lbb)");
+    EXPECT_EQ(errorOf(R"({"settings": {"sss": {"variant": true}}})"),
+              "/settings/sss/variant: expected a string, got a boolean");
 }
 
 TEST(SceneLoader, MeshNeedsExactlyOneSource) {
@@ -714,7 +739,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     EXPECT_EQ(errorOf(R"({"settings": {"transmittance": {"shrink": 1}}})"),
               "/settings/transmittance/shrink: unknown key \"shrink\" (known: enabled, shrink_mm and strength)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"width": 1}}})"),
-              "/settings/sss/width: unknown key \"width\" (known: enabled, blur, taps, bilateral_depth_mm, "
+              "/settings/sss/width: unknown key \"width\" (known: enabled, variant, blur, taps, bilateral_depth_mm, "
               "control_depth_scale_per_mm, gaussians, width_scale, min_width_px and mix)");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius": 1})")),
               "/characters/0/ssao/radius: unknown key \"radius\" (known: radius_m and samples)");

@@ -140,7 +140,7 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
     EXPECT_ERROR(errorOf({"settings.ssao.samples=4"}), "--set settings.ssao.samples=4",
                  "/settings/ssao/samples: must be in [8, 128], got 4");
     EXPECT_ERROR(errorOf({"sss.blur=gauss"}), "--set sss.blur=gauss",
-                 "/settings/sss/blur: unknown SSS blur \"gauss\" (expected bilateral, control or fetch-only)");
+                 "/settings/sss/blur: unknown SSS blur \"gauss\" (expected variant, bilateral, control or fetch-only)");
     EXPECT_ERROR(errorOf({"exposure=bright"}), "--set exposure=bright",
                  "/settings/exposure: expected a number, got a string");
     EXPECT_ERROR(errorOf({"lights.1.shadow=1"}), "--set lights.1.shadow=1",
@@ -159,7 +159,7 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
 
 TEST(SceneOverrides, UnknownKeysNameTheOverride) {
     EXPECT_ERROR(errorOf({"sss.tap=5"}), "--set sss.tap=5",
-                 "/settings/sss/tap: unknown key \"tap\" (known: enabled, blur, taps, bilateral_depth_mm, "
+                 "/settings/sss/tap: unknown key \"tap\" (known: enabled, variant, blur, taps, bilateral_depth_mm, "
                  "control_depth_scale_per_mm, gaussians, width_scale, min_width_px and mix)");
     EXPECT_EQ(errorOf({"foo=1"}).what.rfind("/settings/foo: unknown key \"foo\"", 0), 0u);
     const Error nested = errorOf({"sss.extra.deep=1"});

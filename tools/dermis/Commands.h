@@ -15,6 +15,7 @@ struct Command {
 
 int runRender(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
+int runBakeLean(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();
 

@@ -12,6 +12,7 @@ const std::vector<Command>& commands() {
     static const std::vector<Command> kCommands = {
         {"render", "render a scene headlessly to PNG/EXR and report per-pass GPU timings", runRender},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
+        {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };
     return kCommands;
 }

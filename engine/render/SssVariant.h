@@ -1,0 +1,36 @@
+#pragma once
+// Seed 001's three versions of the screen-space frame (§5.1), as the render
+// graph reads them from SssSettings:
+//
+//   variant  blur edges  specular                               LEAN targets
+//   c        control     KS from the unblurred normal (lighting)  none: not declared, not blurred
+//   lcb      control     LEAN lobe from the blurred moments      G-buffer, blurred with the irradiance
+//   lbb      bilateral   LEAN lobe from the blurred moments      G-buffer, blurred with the irradiance
+//
+// SssSettings::blur names the edge handling when it is not "variant" (a
+// benchmark's fetch-only floor, or a mix the seed did not try).
+
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace dermis {
+
+// Whether the frame carries LEAN moments (G-buffer targets, their blur, the LEAN specular pass).
+bool sssUsesLean(const SssSettings& settings);
+
+// The blur's edge handling: "bilateral", "control" or "fetch-only".
+std::string sssBlurEdges(const SssSettings& settings);
+
+// The scalar weight the LEAN moments receive for a Gaussian whose RGB weight
+// is `rgb`: the mean of the channels. Why (shaders/include/SssBlur.glsl):
+// the profile's weights are normalised per channel, so the means also sum to
+// one and the accumulated moments stay a convex combination of moments: the
+// covariance M - B B^T of a mixture is positive semi-definite. One scalar for
+// every moment channel keeps B and M from the same mixture, and the lobe is
+// white, so no channel is preferred.
+float sssMomentWeight(const glm::vec3& rgb);
+
+}  // namespace dermis
