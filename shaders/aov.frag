@@ -13,6 +13,7 @@
 #define AOV_AO 7
 #define AOV_TRANSMITTANCE 8
 #define AOV_THICKNESS 9
+#define AOV_OBJECT 10  // the object id (scene character index + 1; 0 for the background)
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
@@ -49,6 +50,7 @@ void main() {
         else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
         else if (aov == AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
         else if (aov == AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
+        else if (aov == AOV_OBJECT) value = vec3(floor(texelFetch(uAlbedo, pixel, 0).a * 255.0 + 0.5));
         else value = component(pixel).rgb;  // irradiance, transmittance, thickness
     }
     oValue = vec4(value, background ? 0.0 : 1.0);

@@ -5,7 +5,7 @@
 
 namespace dermis {
 namespace {
-constexpr std::array<std::pair<Aov, std::string_view>, 10> kAovNames{{
+constexpr std::array<std::pair<Aov, std::string_view>, 11> kAovNames{{
     {Aov::Final, "final"},
     {Aov::Albedo, "albedo"},
     {Aov::Normal, "normal"},
@@ -16,6 +16,7 @@ constexpr std::array<std::pair<Aov, std::string_view>, 10> kAovNames{{
     {Aov::Ao, "ao"},
     {Aov::Transmittance, "transmittance"},
     {Aov::Thickness, "thickness"},
+    {Aov::Object, "object"},
 }};
 }  // namespace
 

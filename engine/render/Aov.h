@@ -8,7 +8,7 @@
 
 namespace dermis {
 
-enum class Aov { Final = 0, Albedo = 1, Normal = 2, Depth = 3, Diffuse = 4, Specular = 5, Irradiance = 6, Ao = 7, Transmittance = 8, Thickness = 9 };
+enum class Aov { Final = 0, Albedo = 1, Normal = 2, Depth = 3, Diffuse = 4, Specular = 5, Irradiance = 6, Ao = 7, Transmittance = 8, Thickness = 9, Object = 10 };
 
 std::optional<Aov> parseAov(std::string_view name);
 std::string_view aovName(Aov aov);

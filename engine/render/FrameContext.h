@@ -14,7 +14,11 @@
 #include "render/UniformBlocks.h"
 #include "scene/Scene.h"
 
+#include <memory>
+
 namespace dermis {
+
+struct TextureSpaceState;
 
 // Texture units every fullscreen pass agrees on for shared tables.
 constexpr GLuint kBeckmannUnit = 14;
@@ -34,6 +38,9 @@ struct FrameContext {
     GLuint blackTexture = 0;    // 1x1 RGBA8 black: nothing (no transmitted light)
     LightSetup lights;
     SssPlan sss;
+    // Texture-space mode's state across frames (its meshes, this frame's plan),
+    // made on first use by passes/TextureSpacePasses.cpp.
+    std::shared_ptr<TextureSpaceState> textureSpace;
     int width = 0;
     int height = 0;
     Aov aov = Aov::Final;

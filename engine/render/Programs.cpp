@@ -25,6 +25,12 @@ Result<Programs> Programs::build() {
         {&Programs::transmittance, "fullscreen.vert", "transmittance.frag"},
         {&Programs::sssInit, "fullscreen.vert", "sss_init.frag"},
         {&Programs::sssBlur, "fullscreen.vert", "sss_blur.frag"},
+        {&Programs::tsTsm, "ts_tsm.vert", "ts_tsm.frag"},
+        {&Programs::tsStretch, "ts_uv.vert", "ts_stretch.frag"},
+        {&Programs::tsIrradiance, "ts_uv.vert", "ts_irradiance.frag"},
+        {&Programs::tsDilate, "fullscreen.vert", "ts_dilate.frag"},
+        {&Programs::tsBlur, "fullscreen.vert", "ts_blur.frag"},
+        {&Programs::tsGather, "ts_gather.vert", "ts_gather.frag"},
     };
     Programs programs;
     for (const Entry& e : entries) {

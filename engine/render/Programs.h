@@ -19,6 +19,12 @@ struct Programs {
     gl::Program transmittance;  // passes/TransmittancePass.cpp
     gl::Program sssInit;        // passes/SssPasses.cpp
     gl::Program sssBlur;
+    gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
+    gl::Program tsStretch;
+    gl::Program tsIrradiance;
+    gl::Program tsDilate;
+    gl::Program tsBlur;
+    gl::Program tsGather;
 
     static Result<Programs> build();
 };

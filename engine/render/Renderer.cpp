@@ -9,6 +9,7 @@
 #include "passes/ShadowPass.h"
 #include "passes/SsaoPass.h"
 #include "passes/SssPasses.h"
+#include "passes/TextureSpacePasses.h"
 #include "passes/TransmittancePass.h"
 #include "render/BeckmannTable.h"
 #include "sss/EnergyTable.h"
@@ -204,7 +205,10 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
     if (request.aov == Aov::Final || request.aov == Aov::Diffuse) {
         const graph::TextureHandle irradiance =
             addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
-        const graph::TextureHandle diffuse = addSssPasses(graph, frame, gbuffer, irradiance);
+        const graph::TextureHandle diffuse =
+            mScene.settings.mode == "ts"
+                ? addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance)
+                : addSssPasses(graph, frame, gbuffer, irradiance);
         if (request.aov == Aov::Final) {
             const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular);
             graph.markOutput(addTonemapPass(graph, frame, hdr, output));

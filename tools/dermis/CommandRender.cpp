@@ -30,6 +30,8 @@ const char* const kHelp =
     "                      final image: %s\n"
     "                      (default final)\n"
     "  --timings FILE      also write the timings as JSON\n"
+    "  --mode ss|ts        screen-space or texture-space subsurface scattering: the same as\n"
+    "                      --set mode=ss|ts\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable.\n"
     "                      PATH is dot-separated from the root, or from \"settings\" when\n"
     "                      it does not start with a root key: --set sss.taps=13\n"
@@ -46,7 +48,7 @@ const char* const kHelp =
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set"},
+    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode"},
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
@@ -72,7 +74,13 @@ int runRender(const std::vector<std::string>& rawArgs) {
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
 
-    auto session = Session::open(scenePath, args->all("set"), *backend, args->flags.count("gl-debug") > 0);
+    std::vector<std::string> overrides = args->all("set");
+    if (args->has("mode")) {
+        const std::string mode = args->get("mode", "");
+        if (mode != "ss" && mode != "ts") return usageError(makeError("--mode " + mode, "expected ss or ts"));
+        overrides.push_back("mode=" + mode);
+    }
+    auto session = Session::open(scenePath, overrides, *backend, args->flags.count("gl-debug") > 0);
     if (!session.ok()) return failure(session.error());
     Renderer& renderer = *session->renderer;
 

@@ -1,0 +1,57 @@
+#pragma once
+// Texture-space SSS, the "ts" mode (DESIGN.md "Texture-space mode";
+// shaders/include/TextureSpace.glsl is the method's manual, render/TsPlan.h
+// decides what runs). It takes the place of the screen-space chain
+// (SssPasses.h) and returns what the composite reads in its stead:
+//
+//   ts init                    the accumulation starts as the lighting's irradiance
+//   per SSS character <c> (its pass-name label, TsCharacterPlan::label):
+//   ts <c> tsm                 its modified translucent shadow map (seed 000 §2.5)
+//   ts <c> stretch             stretch map in its UV layout (§2.2.4, listing 2.1)
+//   ts <c> irradiance          irradiance texture in its UV layout (§2.2.3)
+//   ts <c> dilate              chart gutters filled: texture 0
+//   ts <c> g<i> u, g<i> v      texture i = texture i-1 blurred by v_i - v_(i-1) (§2.2.4)
+//   ts <c> gather              its pixels of the accumulation (§2.8)
+//
+// A character off screen has every one of its passes skipped by predicate;
+// with none on screen "ts init" is skipped too and the composite reads the
+// irradiance itself (passThrough). Textures are the graph's transients
+// (pooled); what lives across frames (the meshes' UV-layout buffers) is in
+// TextureSpaceState, owned by the FrameContext.
+//
+// The screen-space transmittance pass is not read in this mode (the TSM
+// carries light through thin regions instead), so the graph culls it.
+
+#include "graph/RenderGraph.h"
+#include "passes/GBufferPass.h"
+#include "render/FrameContext.h"
+#include "render/TsMeshes.h"
+#include "render/TsPlan.h"
+
+#include <vector>
+
+namespace dermis {
+
+struct TextureSpaceState {
+    TsMeshes meshes;
+    TsPlan plan;  // the last frame's
+};
+
+// c in the stored exp(-c d) of the thickness (1/mm): 50 mm (the front) is
+// e^-5, well inside fp16 (seed 000 listing 2.7 uses 0.1 in its units).
+constexpr float kTsThicknessPerMm = 0.1f;
+
+// Plans the frame (frame.textureSpace->plan) and declares its passes.
+// `irradiance` is the lighting pass's diffuse irradiance (before the
+// screen-space transmittance).
+graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                           const std::vector<graph::TextureHandle>& shadowMaps,
+                                           graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance);
+
+// Plans the frame into frame.textureSpace (made on first use). Errors from planTextureSpace.
+Status planTextureSpaceFrame(FrameContext& frame);
+
+// The stretch pass alone, for tests of it: the stretch map of `plan`'s character.
+graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan);
+
+}  // namespace dermis

@@ -1,0 +1,36 @@
+#pragma once
+// The texture-space passes of one character, one function each (the order
+// and names are in TextureSpacePasses.h). Internal to passes/.
+
+#include "graph/RenderGraph.h"
+#include "passes/GBufferPass.h"
+#include "render/FrameContext.h"
+#include "render/TsPlan.h"
+#include "sss/BlurKernel.h"
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+// The per-character TextureSpaceBlock; passes add their own fields (blur).
+gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsCharacterPlan& plan);
+// Uploads the character's ObjectBlock and `block`.
+void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, const gpu::TextureSpaceBlock& block);
+// Draws the character's TsMesh.
+void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan);
+std::string tsPassName(const TsCharacterPlan& plan, const std::string& step);
+
+graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                graph::TextureHandle black);
+graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                       const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
+                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm);
+graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                   graph::TextureHandle irradiance);
+// Texture 0 and one texture per Gaussian step (a skipped step's texture is the previous one).
+std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
+                                                const TsCharacterPlan& plan, const BlurKernel& kernel,
+                                                graph::TextureHandle stretch, graph::TextureHandle texture0);
+
+}  // namespace dermis

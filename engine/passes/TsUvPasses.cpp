@@ -1,0 +1,240 @@
+// The texture-space passes that work in a character's UV layout (TextureSpacePasses.h).
+#include "passes/LightingPass.h"
+#include "passes/TextureSpacePasses.h"
+#include "passes/TsPassSteps.h"
+
+#include <algorithm>
+
+namespace dermis {
+namespace {
+
+struct TsmData {
+    graph::TextureHandle tsm, depth;
+};
+struct StretchData {
+    graph::TextureHandle stretch;
+};
+struct IrradianceData {
+    graph::TextureHandle tsm, ambientOcclusion, depthKey, out;
+    std::vector<graph::TextureHandle> shadowMaps;
+};
+struct FilterData {
+    graph::TextureHandle in, stretch, out;
+};
+
+// Empty texels look this far for a chart: a quarter of the head's 8-texel
+// gutters at 1024 on each side, scaled with the size.
+int dilationRadiusTexels(int size) { return std::clamp(size / 128, 2, 16); }
+
+graph::TextureDesc uvDesc(const TsCharacterPlan& plan, graph::TextureFormat format) {
+    const auto side = static_cast<uint32_t>(std::max(plan.size, 1));
+    return {side, side, format};
+}
+
+void bindUvTarget(const FrameContext& frame, GLuint texture, int size) {
+    gl::Attachments attachments;
+    attachments.colour[0] = texture;
+    frame.framebuffers->bind(attachments);
+    frame.setViewport(size, size);
+}
+
+const char* const kOffScreen = "character off screen";
+
+}  // namespace
+
+gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsCharacterPlan& plan) {
+    const TextureSpaceSettings& ts = frame.scene->settings.ts;
+    gpu::TextureSpaceBlock block{};
+    block.tsmClipFromWorld = plan.tsmClipFromWorld;
+    block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
+    block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
+    block.tsm = glm::vec4(kTsThicknessPerMm, ts.tsmStrength, float(plan.tsmSize), 1.0f);
+    block.size = glm::vec4(float(plan.size), 1.0f / float(std::max(plan.size, 1)), ts.seamBlend,
+                           float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS)));
+    const glm::mat4& worldFromObject = frame.gpuScene->characters()[static_cast<size_t>(plan.character)].worldFromObject;
+    block.params = glm::vec4(float(dilationRadiusTexels(plan.size)), glm::length(glm::vec3(worldFromObject[0])), 0.0f, 0.0f);
+    for (size_t i = 0; i < plan.gaussians.size() && i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
+        block.gaussians[i] = plan.gaussians[i];
+    }
+    return block;
+}
+
+void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, const gpu::TextureSpaceBlock& block) {
+    frame.uploadObject(frame.objectBlock(static_cast<size_t>(plan.character)));
+    frame.uploadPassBlock(&block, sizeof block);
+}
+
+void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan) {
+    const auto index = static_cast<size_t>(plan.character);
+    frame.textureSpace->meshes.get(index, frame.gpuScene->characters()[index]).draw();
+}
+
+std::string tsPassName(const TsCharacterPlan& plan, const std::string& step) { return "ts " + plan.label + " " + step; }
+
+graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                graph::TextureHandle black) {
+    const auto side = static_cast<uint32_t>(std::max(plan.tsmSize, 1));
+    const std::string name = tsPassName(plan, "tsm");
+    return graph
+        .addPass<TsmData>(
+            name,
+            [&](graph::PassBuilder& builder, TsmData& d) {
+                d.tsm = builder.create(name, {side, side, graph::TextureFormat::Rgba32F});
+                d.depth = builder.create(name + " depth", {side, side, graph::TextureFormat::Depth32F});
+                builder.passThrough(d.tsm, black);
+                builder.skipIf(!plan.visible, kOffScreen);
+                builder.skipIf(!frame.scene->settings.ts.tsm, "translucent shadow map off");
+                builder.skipIf(plan.tsmLight < 0, "no shadow-casting light behind the character");
+            },
+            [&frame, plan](const graph::PassResources& resources, const TsmData& d) {
+                gl::Attachments attachments;
+                attachments.colour[0] = resources.texture(d.tsm);
+                attachments.depth = resources.texture(d.depth);
+                frame.framebuffers->bind(attachments);
+                frame.setViewport(plan.tsmSize, plan.tsmSize);
+                const float empty[4] = {1e30f, 0.0f, 0.0f, 0.0f};
+                glClearBufferfv(GL_COLOR, 0, empty);
+                const float farDepth = 1.0f;
+                glDepthMask(GL_TRUE);
+                glClearBufferfv(GL_DEPTH, 0, &farDepth);
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glDepthMask(GL_TRUE);
+                glDisable(GL_CULL_FACE);  // thin ears need both faces
+                glUseProgram(frame.programs->tsTsm.get());
+                uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
+                drawTsMesh(frame, plan);
+                glDisable(GL_DEPTH_TEST);
+            })
+        .tsm;
+}
+
+graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan) {
+    const std::string name = tsPassName(plan, "stretch");
+    return graph
+        .addPass<StretchData>(
+            name,
+            [&](graph::PassBuilder& builder, StretchData& d) {
+                d.stretch = builder.create(name, uvDesc(plan, graph::TextureFormat::Rg16F));
+                builder.skipIf(!plan.visible, kOffScreen);
+            },
+            [&frame, plan](const graph::PassResources& resources, const StretchData& d) {
+                bindUvTarget(frame, resources.texture(d.stretch), plan.size);
+                const float zero[4] = {0, 0, 0, 0};
+                glClearBufferfv(GL_COLOR, 0, zero);
+                glDisable(GL_DEPTH_TEST);
+                glDisable(GL_CULL_FACE);
+                glUseProgram(frame.programs->tsStretch.get());
+                uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
+                drawTsMesh(frame, plan);
+            })
+        .stretch;
+}
+
+graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                       const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
+                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm) {
+    const std::string name = tsPassName(plan, "irradiance");
+    return graph
+        .addPass<IrradianceData>(
+            name,
+            [&](graph::PassBuilder& builder, IrradianceData& d) {
+                d.tsm = builder.read(tsm);
+                d.ambientOcclusion = builder.read(ambientOcclusion);
+                d.depthKey = builder.read(gbuffer.depthKey);
+                for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
+                d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
+                builder.skipIf(!plan.visible, kOffScreen);
+            },
+            [&frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
+                bindUvTarget(frame, resources.texture(d.out), plan.size);
+                const float empty[4] = {0, 0, 0, 0};
+                glClearBufferfv(GL_COLOR, 0, empty);
+                glDisable(GL_DEPTH_TEST);
+                glDisable(GL_CULL_FACE);
+                glUseProgram(frame.programs->tsIrradiance.get());
+                const GpuCharacter& character = frame.gpuScene->characters()[static_cast<size_t>(plan.character)];
+                glBindTextureUnit(0, character.albedoMap.get());
+                glBindTextureUnit(1, character.normalMap.get());
+                glBindTextureUnit(2, resources.texture(d.tsm));
+                glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
+                bindShadowMaps(frame, resources, d.shadowMaps);
+                glBindTextureUnit(8, resources.texture(d.depthKey));
+                uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
+                drawTsMesh(frame, plan);
+            })
+        .out;
+}
+
+graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+                                   graph::TextureHandle irradiance) {
+    const std::string name = tsPassName(plan, "dilate");
+    return graph
+        .addPass<FilterData>(
+            name,
+            [&](graph::PassBuilder& builder, FilterData& d) {
+                d.in = builder.read(irradiance);
+                d.out = builder.create(tsPassName(plan, "g0"), uvDesc(plan, graph::TextureFormat::Rgba16F));
+                builder.skipIf(!plan.visible, kOffScreen);
+            },
+            [&frame, plan](const graph::PassResources& resources, const FilterData& d) {
+                bindUvTarget(frame, resources.texture(d.out), plan.size);
+                glUseProgram(frame.programs->tsDilate.get());
+                uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
+                glBindTextureUnit(0, resources.texture(d.in));
+                frame.drawFullscreenTriangle();
+            })
+        .out;
+}
+
+std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
+                                                const TsCharacterPlan& plan, const BlurKernel& kernel,
+                                                graph::TextureHandle stretch, graph::TextureHandle texture0) {
+    std::vector<graph::TextureHandle> textures = {texture0};
+    const size_t taps = std::min<size_t>(kernel.weights.size(), DERMIS_MAX_BLUR_TAPS);
+    const float kernelVariance = kernelVarianceSigma2(kernel);
+    for (const TsStep& step : plan.steps) {
+        const std::string name = tsPassName(plan, "g" + std::to_string(step.gaussian));
+        const graph::TextureHandle previous = textures.back();
+        // The kernel's own variance is a little over 1 sigma^2 (BlurKernel.h), so
+        // sigma is scaled for the step to blur by exactly its variance.
+        gpu::TextureSpaceBlock block = textureSpaceBlock(frame, plan);
+        for (size_t k = 0; k < taps; ++k) block.kernel[k] = glm::vec4(kernel.offsetsSigma[k], kernel.weights[k], 0.0f, 0.0f);
+        const float sigmaMm = std::sqrt(std::max(step.stepVarianceMm2, 0.0f) / kernelVariance);
+        const std::string why = !plan.visible ? std::string(kOffScreen)
+                                              : "narrower than " + std::to_string(kMinStepTexels) + " texel where the layout is densest";
+        const auto run = [&frame, plan](const graph::PassResources& resources, const FilterData& d,
+                                        const gpu::TextureSpaceBlock& b) {
+            bindUvTarget(frame, resources.texture(d.out), plan.size);
+            glUseProgram(frame.programs->tsBlur.get());
+            uploadTsBlocks(frame, plan, b);
+            glBindTextureUnit(0, resources.texture(d.in));
+            glBindTextureUnit(1, resources.texture(d.stretch));
+            frame.drawFullscreenTriangle();
+        };
+        block.blur = glm::vec4(1.0f, 0.0f, sigmaMm, float(taps));
+        const FilterData& u = graph.addPass<FilterData>(
+            name + " u",
+            [&](graph::PassBuilder& builder, FilterData& d) {
+                d.in = builder.read(previous);
+                d.stretch = builder.read(stretch);
+                d.out = builder.create(name + " u", uvDesc(plan, graph::TextureFormat::Rgba16F));
+                builder.skipIf(step.skipped, why);
+            },
+            [run, block](const graph::PassResources& resources, const FilterData& d) { run(resources, d, block); });
+        block.blur = glm::vec4(0.0f, 1.0f, sigmaMm, float(taps));
+        const FilterData& v = graph.addPass<FilterData>(
+            name + " v",
+            [&](graph::PassBuilder& builder, FilterData& d) {
+                d.in = builder.read(u.out);
+                d.stretch = builder.read(stretch);
+                d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
+                builder.passThrough(d.out, previous);
+            },
+            [run, block](const graph::PassResources& resources, const FilterData& d) { run(resources, d, block); });
+        textures.push_back(v.out);
+    }
+    return textures;
+}
+
+}  // namespace dermis

@@ -1,0 +1,69 @@
+// Texture-space step 5, the gather (seed 000 §2.8 listing 2.11; manual in
+// include/TextureSpace.glsl). For this character's pixels (depth equal to the
+// G-buffer's and the same object id) it writes, into the SSS accumulation the
+// composite reads,
+//   sum_i w_i T_i(uv) / sum_i w_i  +  the TSM terms,
+// where T_i is blurred texture i, replaced by T_0 (the local, unblurred
+// light) as a chart border comes nearer than seam_blend standard deviations
+// of Gaussian i. Like the screen-space accumulation this still carries
+// albedo^mix; the composite applies albedo^(1-mix), the outgoing energy
+// factor and the specular.
+#define DERMIS_USE_TS_BLOCK
+#include "Common.glsl"
+#include "UniformBlocks.glsl"
+#include "TextureSpace.glsl"
+
+layout(binding = 0) uniform sampler2D uBlurred[DERMIS_MAX_PROFILE_GAUSSIANS];
+layout(binding = 8) uniform sampler2D uTsm;
+layout(binding = 9) uniform sampler2D uAlbedo;  // G-buffer target 0: a = object id / 255
+
+in vec3 vWorldPositionM;
+in vec2 vUv;
+in vec3 vDPduM;
+in vec3 vDPdvM;
+in float vBorderDistanceM;
+
+layout(location = 0) out vec4 oDiffuse;
+
+void main() {
+    int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
+    if (objectId != int(uObject.material.y + 0.5)) discard;
+
+    int count = int(uTs.size.w);
+    float borderMm = vBorderDistanceM * 1000.0;
+    float seamBlend = uTs.size.z;
+    vec3 local = texture(uBlurred[0], vUv).rgb;
+    vec3 sum = vec3(0.0);
+    vec3 weightSum = vec3(0.0);
+    vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
+    for (int i = 0; i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
+        if (i >= count) break;
+        blurred[i] = texture(uBlurred[i], vUv);
+        float sigmaMm = sqrt(uTs.gaussians[i].a);
+        float trust = seamBlend > 0.0 ? smoothstep(0.0, seamBlend * sigmaMm, borderMm) : 1.0;
+        sum += uTs.gaussians[i].rgb * mix(local, blurred[i].rgb, trust);
+        weightSum += uTs.gaussians[i].rgb;
+    }
+    vec3 diffuse = sum / max(weightSum, vec3(kTiny));
+
+    if (uTs.tsmAxis.w > 0.5) {
+        vec4 tap = tsmTap(uTsm, vWorldPositionM);
+        if (tap.w > 0.0) {
+            // UV distance to the light-facing point A, in mm at this point C.
+            float mmPerUv = 0.5 * (length(vDPduM) + length(vDPdvM)) * 1000.0;
+            float distanceMm = length(vUv - tap.yz) * mmPerUv;
+            int first = max(int(uTs.tsm.w), 1);
+            for (int i = 1; i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
+                if (i >= count) break;
+                if (i < first) continue;
+                float varianceMm2 = max(uTs.gaussians[i].a, 1e-6);
+                float dMm = decodeThicknessMm(blurred[i - 1].a);
+                float fade = exp(-dMm * dMm / (2.0 * varianceMm2));
+                float apart = clamp(distanceMm / (6.0 * sqrt(varianceMm2)), 0.0, 1.0);
+                vec3 farSide = texture(uBlurred[i], tap.yz).rgb;
+                diffuse += uTs.tsm.y * uTs.gaussians[i].rgb / max(weightSum, vec3(kTiny)) * (fade * apart) * farSide;
+            }
+        }
+    }
+    oDiffuse = vec4(sanitizeColour(diffuse), 1.0);
+}

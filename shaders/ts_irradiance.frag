@@ -1,0 +1,82 @@
+// Texture-space step 2: the irradiance texture (seed 000 §2.2.3, include/TextureSpace.glsl).
+//   rgb: sum over lights of radiance x N.L x PCF shadow x (1 - rho_s rho_dt(N.L, m))
+//        (seed 000 §2.4, §2.6), plus ambient x SSAO (where the texel is the
+//        pixel the camera sees), times albedo^mix (pre-scatter, §2.2.4): the
+//        same light the lighting pass gives a pixel (lighting.frag).
+//   a:   exp(-c d), d the thickness (mm) towards the TSM light (listing 2.7),
+//        1 without a TSM; always > 0, so 0 marks an empty texel.
+#define DERMIS_USE_TS_BLOCK
+#include "Common.glsl"
+#include "UniformBlocks.glsl"
+#include "Shadows.glsl"
+#include "Lights.glsl"
+#include "EnergyConservation.glsl"
+#include "TextureSpace.glsl"
+
+layout(binding = 0) uniform sampler2D uAlbedoMap;
+layout(binding = 1) uniform sampler2D uNormalMap;
+layout(binding = 2) uniform sampler2D uTsm;
+layout(binding = 3) uniform sampler2D uAmbientOcclusion;  // screen space; 1x1 when SSAO is off
+layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
+layout(binding = 8) uniform usampler2D uDepthKey;         // G-buffer target 2
+layout(binding = 15) uniform sampler2D uEnergy;
+
+in vec3 vWorldPositionM;
+in vec3 vWorldNormal;
+in vec4 vWorldTangent;
+in vec2 vMapUv;
+
+layout(location = 0) out vec4 oIrradiance;
+
+// The SSAO of the pixel that shows this point, or 1 where no pixel does.
+float ambientOcclusion(vec3 worldPositionM) {
+    ivec2 aoSize = textureSize(uAmbientOcclusion, 0);
+    if (aoSize == ivec2(1)) return texelFetch(uAmbientOcclusion, ivec2(0), 0).r;
+    vec4 clip = uFrame.clipFromWorld * vec4(worldPositionM, 1.0);
+    if (clip.w <= kTiny) return 1.0;
+    vec2 ndc = clip.xy / clip.w;
+    if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return 1.0;
+    ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * uFrame.viewport.xy), ivec2(0), ivec2(uFrame.viewport.xy) - 1);
+    uint key = texelFetch(uDepthKey, pixel, 0).r;
+    if (isBackgroundKey(key)) return 1.0;
+    float viewDepthM = -(uFrame.viewFromWorld * vec4(worldPositionM, 1.0)).z;
+    float toleranceM = max(0.002, 0.01 * viewDepthM);
+    return abs(viewDepthFromKey(key) - viewDepthM) < toleranceM ? texelFetch(uAmbientOcclusion, pixel, 0).r : 1.0;
+}
+
+void main() {
+    vec3 geometricN = safeNormalize(vWorldNormal, vec3(0.0, 1.0, 0.0));
+    vec3 N = geometricN;
+    if (uObject.material.w > 0.5) {
+        vec3 T = vWorldTangent.xyz - N * dot(N, vWorldTangent.xyz);
+        T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
+        vec3 B = cross(N, T) * (vWorldTangent.w < 0.0 ? -1.0 : 1.0);
+        vec3 tangentNormal = texture(uNormalMap, vMapUv).xyz * 2.0 - 1.0;
+        N = safeNormalize(mat3(T, B, N) * tangentNormal, N);
+    }
+    vec3 albedo = uObject.albedoRoughness.rgb;
+    if (uObject.material.z > 0.5) albedo *= texture(uAlbedoMap, vMapUv).rgb;
+    albedo = clamp(albedo, 0.0, 1.0);
+    float roughness = uObject.albedoRoughness.w;
+    float rhoS = uObject.material.x;
+    bool conserveEnergy = uFrame.features.x > 0.5;
+
+    vec3 irradiance = uFrame.ambient.rgb * ambientOcclusion(vWorldPositionM);
+    int lightCount = int(uFrame.shading.z);
+    for (int i = 0; i < lightCount; ++i) {
+        GpuLight light = uLights.lights[i];
+        vec3 L;
+        vec3 radiance = incidentRadiance(light, vWorldPositionM, L);
+        float nDotL = dot(N, L);
+        if (nDotL <= 0.0) continue;
+        int slot = int(light.directionShadow.w);
+        float visibility = 1.0;
+        if (slot >= 0) visibility = shadowVisibility(uShadowMaps[slot], light, vWorldPositionM, N, gl_FragCoord.xy);
+        float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, nDotL, roughness, rhoS) : 1.0;
+        irradiance += radiance * (nDotL * visibility * diffuseShare);
+    }
+
+    float alpha = 1.0;
+    if (uTs.tsmAxis.w > 0.5) alpha = encodeThickness(tsmThicknessMm(uTsm, vWorldPositionM, geometricN));
+    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, uFrame.shading.y)), alpha);
+}

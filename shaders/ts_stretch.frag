@@ -1,0 +1,16 @@
+// Texture-space step 1: the stretch map (seed 000 §2.2.4 listing 2.1, seed 002
+// §II). RG16F: the world length of one UV unit along u and along v, in mm;
+// the blur spaces its taps by sigma / stretch. Interpolated per-vertex
+// derivatives, not dFdx per triangle (scene/UvLayout.h says why); a
+// degenerate triangle gives 0, which the blur treats as "do not blur here".
+#include "Common.glsl"
+
+in vec3 vDPduM;
+in vec3 vDPdvM;
+
+layout(location = 0) out vec2 oStretchMm;
+
+void main() {
+    vec2 stretchMm = vec2(length(vDPduM), length(vDPdvM)) * 1000.0;
+    oStretchMm = clamp(mix(stretchMm, vec2(0.0), isnan(stretchMm)), vec2(0.0), vec2(kHalfMax));
+}

@@ -1,0 +1,191 @@
+// dermis compare: one frame of a scene in screen-space and in texture-space
+// mode, the images, a difference heatmap and the metrics (issue 5).
+#include "Args.h"
+#include "Commands.h"
+#include "Session.h"
+
+#include "core/Image.h"
+#include "core/ImageMetrics.h"
+#include "core/Log.h"
+#include "render/Aov.h"
+#include "render/Renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace dermis::cli {
+namespace {
+
+const char* const kHelp =
+    "usage: dermis compare SCENE --out DIR [options]\n"
+    "\n"
+    "Renders one frame of SCENE in screen-space (mode ss) and in texture-space (mode ts)\n"
+    "subsurface scattering, everything else the same, and writes into DIR:\n"
+    "  ss.exr, ts.exr    the diffuse AOV, linear float: the scattered light leaving the\n"
+    "                    skin (after albedo and energy conservation, before the specular\n"
+    "                    and tone mapping), which is what the two modes compute differently\n"
+    "  ss.png, ts.png    the final tone-mapped images\n"
+    "  difference.png    max over RGB of |ss - ts| of the diffuse AOV on SSS pixels, in\n"
+    "                    false colour with a scale bar (other pixels dark grey)\n"
+    "  metrics.json      over SSS pixels (characters with a diffusion profile): relative\n"
+    "                    RMSE, RMSE, largest difference and PSNR of ts against ss; and each\n"
+    "                    mode's per-pass timings (as `dermis render --timings` writes them)\n"
+    "\n"
+    "options:\n"
+    "  --out DIR           output directory (created if missing); required\n"
+    "  --size WxH          frame size in pixels (default 640x360)\n"
+    "  --frames N          frames per mode; timings are medians over them (default 5)\n"
+    "  --set PATH=VALUE    override a scene value, checked like the file; repeatable\n"
+    "  --backend NAME      egl or osmesa (default: egl, falling back to osmesa)\n"
+    "  --gl-debug          GL debug context; driver errors fail the run\n"
+    "  --quiet             no progress messages\n"
+    "  --help              this text\n"
+    "\n"
+    "Exit status: 0 on success, 1 when the scene, the GL context or a write fails,\n"
+    "2 for bad command-line usage.\n";
+
+struct ModeResult {
+    Image finalImage;
+    Image diffuse;
+    std::string timingsJson;
+};
+
+Result<ModeResult> renderMode(Session& session, const std::string& scenePath, const std::string& mode, int width,
+                              int height, int frames) {
+    session.scene->settings.mode = mode;
+    Renderer& renderer = *session.renderer;
+    renderer.resetTimings();
+    log::info("rendering " + scenePath + " in mode " + mode);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < frames; ++i) {
+        if (const Status status = renderer.renderFrame({width, height, Aov::Final}); !status.ok()) return status.error();
+    }
+    glFinish();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    renderer.finishTimings();
+    RunInfo info = session.runInfo(scenePath, width, height, frames);
+    info.wallMsPerFrame = wallMs / frames;
+    ModeResult result;
+    result.timingsJson = renderer.timings().toJson(info);
+    auto finalImage = renderer.readOutput();
+    if (!finalImage.ok()) return finalImage.error();
+    result.finalImage = std::move(*finalImage);
+    if (const Status status = renderer.renderFrame({width, height, Aov::Diffuse}); !status.ok()) return status.error();
+    auto diffuse = renderer.readOutput();
+    if (!diffuse.ok()) return diffuse.error();
+    result.diffuse = std::move(*diffuse);
+    return result;
+}
+
+// One byte per pixel: 1 where a character with a diffusion profile is seen.
+Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
+    if (const Status status = session.renderer->renderFrame({width, height, Aov::Object}); !status.ok())
+        return status.error();
+    auto ids = session.renderer->readOutput();
+    if (!ids.ok()) return ids.error();
+    std::vector<uint8_t> mask(ids->texels.size(), 0);
+    const auto& characters = session.scene->characters;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        const long id = std::lround(ids->texels[i].r);
+        if (id >= 1 && static_cast<size_t>(id) <= characters.size())
+            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != "none" ? 1 : 0;
+    }
+    return mask;
+}
+
+Status writeText(const std::string& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file << text;
+    return file ? success() : makeError(path, "cannot write");
+}
+
+}  // namespace
+
+int runCompare(const std::vector<std::string>& rawArgs) {
+    auto args = parseArgs(rawArgs, {"out", "size", "frames", "set", "backend"}, {"gl-debug", "quiet", "help"});
+    if (!args.ok()) return usageError(args.error());
+    if (args->flags.count("help")) {
+        std::printf("%s", kHelp);
+        return 0;
+    }
+    if (args->positional.size() != 1) return usageError(makeError("compare", "expected exactly one SCENE file"));
+    if (!args->has("out")) return usageError(makeError("compare", "--out DIR is required"));
+    log::setQuiet(args->flags.count("quiet") > 0);
+    const std::string scenePath = args->positional[0];
+    const std::filesystem::path outDir = args->get("out", "");
+    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return usageError(size.error());
+    auto frames = parsePositiveInt("--frames", args->get("frames", "5"));
+    if (!frames.ok()) return usageError(frames.error());
+    auto backend = parseBackend(args->get("backend", "auto"));
+    if (!backend.ok()) return usageError(backend.error());
+
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
+
+    auto session = Session::open(scenePath, args->all("set"), *backend, args->flags.count("gl-debug") > 0);
+    if (!session.ok()) return failure(session.error());
+    const int width = size->first;
+    const int height = size->second;
+
+    auto ss = renderMode(*session, scenePath, "ss", width, height, *frames);
+    if (!ss.ok()) return failure(ss.error());
+    auto ts = renderMode(*session, scenePath, "ts", width, height, *frames);
+    if (!ts.ok()) return failure(ts.error());
+    auto mask = sssMask(*session, width, height);
+    if (!mask.ok()) return failure(mask.error());
+    if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
+
+    auto file = [&](const char* name) { return (outDir / name).string(); };
+    for (const auto& [name, image] : {std::pair<const char*, const Image*>{"ss.exr", &ss->diffuse}, {"ts.exr", &ts->diffuse},
+                                      {"ss.png", &ss->finalImage}, {"ts.png", &ts->finalImage}}) {
+        if (const Status saved = saveImage(file(name), *image); !saved.ok()) return failure(saved.error());
+    }
+
+    nlohmann::ordered_json metrics;
+    metrics["scene"] = scenePath;
+    metrics["width"] = width;
+    metrics["height"] = height;
+    metrics["frames"] = *frames;
+    metrics["compared"] = "diffuse AOV (linear), texture space (test) against screen space (reference), SSS pixels";
+    auto difference = compareImages(ss->diffuse, ts->diffuse, *mask);
+    double scaleMax = 0.0;
+    if (difference.ok()) {
+        // JSON has no infinity: a non-finite figure is written as null.
+        auto finite = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
+        metrics["sss_pixels"] = difference->pixels;
+        metrics["relative_rmse"] = finite(difference->relativeRmse);
+        metrics["rmse"] = finite(difference->rmse);
+        metrics["max_abs_difference"] = finite(difference->maxAbsDifference);
+        metrics["psnr_db"] = finite(difference->psnrDb);
+        metrics["peak"] = finite(difference->peak);
+        scaleMax = roundUpToNiceNumber(difference->maxAbsDifference);
+        metrics["heatmap_scale_max"] = finite(scaleMax);
+    } else {
+        metrics["sss_pixels"] = 0;
+        log::warn("no SSS pixel on screen: the metrics are empty");
+    }
+    metrics["timings"] = {{"ss", nlohmann::json::parse(ss->timingsJson)}, {"ts", nlohmann::json::parse(ts->timingsJson)}};
+
+    if (const Status saved = saveImage(file("difference.png"), differenceHeatmap(ss->diffuse, ts->diffuse, *mask, scaleMax));
+        !saved.ok()) {
+        return failure(saved.error());
+    }
+    if (const Status written = writeText(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok()) {
+        return failure(written.error());
+    }
+    if (!log::quiet() && difference.ok()) {
+        std::printf("%zu SSS pixels: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", difference->pixels,
+                    difference->relativeRmse, difference->maxAbsDifference, difference->psnrDb);
+    }
+    log::info("wrote " + outDir.string());
+    return 0;
+}
+
+}  // namespace dermis::cli
