@@ -1,0 +1,33 @@
+#include "viewer/AovDisplay.h"
+
+namespace dermis::viewer {
+
+const std::vector<AovChoice>& aovChoices() {
+    static const std::vector<AovChoice> kChoices = [] {
+        std::vector<AovChoice> choices;
+        const std::string list = aovNameList();
+        size_t start = 0;
+        while (start <= list.size()) {
+            size_t end = list.find('|', start);
+            if (end == std::string::npos) end = list.size();
+            const std::string name = list.substr(start, end - start);
+            if (auto aov = parseAov(name)) choices.push_back({*aov, name});
+            start = end + 1;
+        }
+        return choices;
+    }();
+    return kChoices;
+}
+
+AovMapping defaultAovMapping(Aov aov, float cameraDistanceM) {
+    switch (aov) {
+        case Aov::Final: return {DisplayTransform::AsStored, {0.0f, 1.0f}, ""};
+        case Aov::Normal: return {DisplayTransform::Range, {-1.0f, 1.0f}, ""};
+        case Aov::Depth: return {DisplayTransform::Range, {0.75f * cameraDistanceM, 1.25f * cameraDistanceM}, "m"};
+        case Aov::Ao: return {DisplayTransform::Range, {0.0f, 1.0f}, ""};
+        case Aov::Thickness: return {DisplayTransform::Range, {0.0f, 20.0f}, "mm"};
+        default: return {DisplayTransform::RangeSrgb, {0.0f, 1.0f}, ""};
+    }
+}
+
+}  // namespace dermis::viewer

@@ -1,0 +1,26 @@
+#pragma once
+// Small ImGui helpers shared by the panels. Every helper returns true when
+// the user changed the value, and keeps the value inside the range the scene
+// file format allows (content/scenes/README.md), so the renderer never sees
+// a value the loader would have refused.
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis::viewer::widgets {
+
+bool comboString(const char* label, std::string& value, const std::vector<std::string>& options);
+// An odd integer in [lo, hi] (SSS taps).
+bool sliderOdd(const char* label, int& value, int lo, int hi);
+// A float shown in millimetres, stored in metres.
+bool sliderMetresAsMm(const char* label, float& metres, float loMm, float hiMm);
+// A linear RGB colour, each channel >= 0; `hdr` allows values above 1.
+bool colourLinear(const char* label, glm::vec3& colour, bool hdr);
+// A unit direction, edited as azimuth (about +Y) and elevation angles.
+bool direction(const char* label, glm::vec3& direction);
+// "(?)" with a tooltip.
+void help(const char* text);
+
+}  // namespace dermis::viewer::widgets

@@ -1,0 +1,54 @@
+#pragma once
+// What the viewer's panels and keys change besides the scenes: the view mode,
+// the AOV and its display range, the effect switches, and requests (save,
+// reload, copy) that the frame loop carries out at the right moment.
+
+#include "render/Aov.h"
+#include "viewer/AovDisplay.h"
+#include "viewer/EffectSwitches.h"
+#include "viewer/SplitView.h"
+
+#include <string>
+
+namespace dermis::viewer {
+
+enum class EditTarget { A, B, Both };
+
+struct ViewerRequests {
+    bool screenshot = false;
+    bool saveScene = false;
+    bool reloadShaders = false;
+    bool resetCamera = false;
+    bool copyAToB = false;
+    bool copyBToA = false;
+    bool clearTimings = false;
+    bool quit = false;
+};
+
+struct ViewerState {
+    ViewMode mode = ViewMode::Single;
+    EditTarget editTarget = EditTarget::A;
+    Aov aov = Aov::Final;
+    AovMapping aovMapping;
+    float dividerFraction = 0.5f;  // of the scene area's width
+    float differenceScale = 10.0f;
+    EffectSwitches switches;
+    bool showPanels = true;
+    bool showProfiler = true;
+    bool watchShaders = true;
+
+    std::string screenshotPath = "out/viewer.png";
+    std::string sceneJsonPath = "out/viewer_scene.json";
+    std::string message;  // the latest save or reload outcome
+    bool messageIsError = false;
+    std::string shaderError;  // the latest failed shader reload; empty once they compile again
+    std::string renderError;  // the latest failed frame
+
+    ViewerRequests requests;
+
+    bool comparing() const { return mode != ViewMode::Single; }
+    void setAov(Aov aov, float cameraDistanceM);
+    void report(std::string text, bool isError);
+};
+
+}  // namespace dermis::viewer
