@@ -21,6 +21,7 @@ void info(const std::string& message) {
 }
 
 void warn(const std::string& message) {
+    if (gQuiet) return;
     std::lock_guard<std::mutex> lock(gMutex);
     std::fprintf(stderr, "warning: %s\n", message.c_str());
 }

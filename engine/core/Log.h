@@ -1,6 +1,6 @@
 #pragma once
 // Minimal logging: errors and progress go to stderr so stdout stays for tables
-// and machine-readable output.
+// and machine-readable output. Quiet mode silences info and warnings, never errors.
 
 #include <cstdio>
 #include <string>

@@ -25,6 +25,11 @@ void GlGraphBackend::endPass() {
     glPopDebugGroup();
 }
 
+void GlGraphBackend::passWrote(std::string_view passName, std::string_view textureName, graph::BackendTexture texture,
+                               const graph::TextureDesc& desc) {
+    if (mInspector) mInspector(passName, textureName, texture, desc);
+}
+
 void GlGraphBackend::endFrame() {
     for (GLuint texture : mPool.endFrame()) mFramebuffers.forget(texture);
 }

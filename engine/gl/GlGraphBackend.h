@@ -8,7 +8,13 @@
 #include "gl/TexturePool.h"
 #include "graph/GraphBackend.h"
 
+#include <functional>
+
 namespace dermis::gl {
+
+// Called with every texture a pass wrote, when set (GlGraphBackend::setInspector).
+using PassInspector = std::function<void(std::string_view pass, std::string_view texture, GLuint name,
+                                         const graph::TextureDesc& desc)>;
 
 class GlGraphBackend final : public graph::GraphBackend {
 public:
@@ -18,6 +24,9 @@ public:
     void releaseTexture(graph::BackendTexture texture, const graph::TextureDesc& desc) override;
     void beginPass(std::string_view passName) override;
     void endPass() override;
+    void passWrote(std::string_view passName, std::string_view textureName, graph::BackendTexture texture,
+                   const graph::TextureDesc& desc) override;
+    void setInspector(PassInspector inspector) { mInspector = std::move(inspector); }
 
     TexturePool& pool() { return mPool; }
     FramebufferCache& framebuffers() { return mFramebuffers; }
@@ -27,6 +36,7 @@ private:
     GpuProfiler& mProfiler;
     TexturePool mPool;
     FramebufferCache mFramebuffers;
+    PassInspector mInspector;
 };
 
 }  // namespace dermis::gl

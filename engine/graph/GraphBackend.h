@@ -26,6 +26,16 @@ public:
     // Bracket every executed pass: the one place that owns timers and labels.
     virtual void beginPass(std::string_view passName) = 0;
     virtual void endPass() = 0;
+
+    // After a pass ran, once per texture it wrote (debug inspection, e.g.
+    // counting non-finite texels). The default does nothing.
+    virtual void passWrote(std::string_view passName, std::string_view textureName, BackendTexture texture,
+                           const TextureDesc& desc) {
+        (void)passName;
+        (void)textureName;
+        (void)texture;
+        (void)desc;
+    }
 };
 
 }  // namespace dermis::graph

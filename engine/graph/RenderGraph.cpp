@@ -231,6 +231,10 @@ void RenderGraph::execute(GraphBackend& backend) {
         backend.beginPass(pass.name);
         pass.pass->run(resources);
         backend.endPass();
+        for (uint32_t written : pass.writes) {
+            const ResourceNode& resource = mResources[mVersions[written].resource];
+            backend.passWrote(pass.name, resource.name, resource.texture, resource.desc);
+        }
         for (ResourceNode& resource : mResources) {
             if (!resource.imported && resource.lastPass == p) {
                 backend.releaseTexture(resource.texture, resource.desc);

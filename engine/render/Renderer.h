@@ -46,6 +46,8 @@ public:
     // The last frame's output texture (RGBA8 for Aov::Final, RGBA32F
     // otherwise), for a viewer to draw without a CPU read-back.
     GLuint outputTexture() const { return mOutput.get(); }
+    // Inspect every texture each pass writes (gl/NonFiniteCounter.h); slow.
+    void setPassInspector(gl::PassInspector inspector) { mBackend.setInspector(std::move(inspector)); }
     // Recompiles every shader from disk. On an error the old programs stay
     // in use and the error (file and compiler log) is returned.
     Status reloadShaders();

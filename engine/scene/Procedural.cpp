@@ -4,6 +4,9 @@
 #include "scene/ProceduralShapes.h"
 #include "scene/ProceduralTextures.h"
 
+#include <memory>
+#include <mutex>
+
 namespace dermis {
 namespace {
 
@@ -30,7 +33,14 @@ Model modelOf(MeshData mesh) {
 std::vector<std::string> proceduralModelNames() { return {"head", "plane", "sphere", "wedge"}; }
 
 Result<Model> makeProceduralModel(const std::string& name) {
-    if (name == "head") return makeHeadModel();
+    if (name == "head") {
+        // Seconds to generate and deterministic: made once per process, copied after.
+        static std::mutex sMutex;
+        static std::unique_ptr<Model> sHead;
+        std::lock_guard<std::mutex> lock(sMutex);
+        if (!sHead) sHead = std::make_unique<Model>(makeHeadModel());
+        return *sHead;
+    }
     if (name == "plane") return modelOf(makePlaneMesh());
     if (name == "sphere") return modelOf(makeSphereMesh());
     if (name == "wedge") return modelOf(makeWedgeMesh());

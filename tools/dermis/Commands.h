@@ -14,6 +14,7 @@ struct Command {
 };
 
 int runRender(const std::vector<std::string>& args);
+int runStress(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
 int runBakeLean(const std::vector<std::string>& args);

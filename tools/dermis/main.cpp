@@ -11,6 +11,7 @@ namespace dermis::cli {
 const std::vector<Command>& commands() {
     static const std::vector<Command> kCommands = {
         {"render", "render a scene headlessly to PNG/EXR and report per-pass GPU timings", runRender},
+        {"stress", "fuzz scenes and settings; count non-finite texels in every pass's targets", runStress},
         {"compare", "render one frame in screen-space and texture-space SSS: images, heatmap, metrics", runCompare},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
