@@ -91,6 +91,20 @@ double roundUpToNiceNumber(double x) {
     return 10.0 * decade;
 }
 
+double differencePercentile(const Image& reference, const Image& test, const std::vector<uint8_t>& mask,
+                            double fraction) {
+    if (reference.texels.size() != test.texels.size() || (!mask.empty() && mask.size() != reference.texels.size()))
+        return 0.0;
+    std::vector<double> differences;
+    for (size_t i = 0; i < reference.texels.size(); ++i) {
+        if (inMask(mask, i)) differences.push_back(texelDifference(reference.texels[i], test.texels[i]));
+    }
+    if (differences.empty()) return 0.0;
+    const auto k = static_cast<size_t>(std::clamp(fraction, 0.0, 1.0) * double(differences.size() - 1));
+    std::nth_element(differences.begin(), differences.begin() + static_cast<std::ptrdiff_t>(k), differences.end());
+    return differences[k];
+}
+
 Result<ImageDifference> compareImages(const Image& reference, const Image& test, const std::vector<uint8_t>& mask) {
     if (reference.width != test.width || reference.height != test.height || reference.texels.size() != test.texels.size())
         return makeError("image comparison", std::to_string(reference.width) + "x" + std::to_string(reference.height) +

@@ -36,6 +36,12 @@ Result<ImageDifference> compareImages(const Image& reference, const Image& test,
 Image differenceHeatmap(const Image& reference, const Image& test, const std::vector<uint8_t>& mask,
                         double scaleMax = 0.0);
 
+// The given fraction (0..1) of the per-pixel differences max_c |reference_c -
+// test_c| over the mask lies at or below the returned value (non-finite
+// differences count as the largest). 0 when the inputs do not match.
+double differencePercentile(const Image& reference, const Image& test, const std::vector<uint8_t>& mask,
+                            double fraction);
+
 // The smallest 1, 2 or 5 x 10^k at or above x (x > 0); 1 for x <= 0.
 double roundUpToNiceNumber(double x);
 

@@ -134,8 +134,8 @@ graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, FrameConte
         const graph::TextureHandle tsm = addTsmPass(graph, frame, plan, black);
         const graph::TextureHandle stretch = addTsStretchPass(graph, frame, plan);
         const graph::TextureHandle raw = addIrradiancePass(graph, frame, plan, gbuffer, shadowMaps, ambientOcclusion, tsm);
-        const graph::TextureHandle texture0 = addDilatePass(graph, frame, plan, raw);
-        const std::vector<graph::TextureHandle> blurred = addBlurPasses(graph, frame, plan, *kernel, stretch, texture0);
+        const graph::TextureHandle dilated = addDilatePass(graph, frame, plan, raw);
+        const std::vector<graph::TextureHandle> blurred = addBlurPasses(graph, frame, plan, *kernel, stretch, dilated);
         accumulated = addGatherPass(graph, frame, plan, gbuffer, blurred, tsm, accumulated);
     }
     return accumulated;

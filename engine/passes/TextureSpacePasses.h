@@ -9,8 +9,9 @@
 //   ts <c> tsm                 its modified translucent shadow map (seed 000 §2.5)
 //   ts <c> stretch             stretch map in its UV layout (§2.2.4, listing 2.1)
 //   ts <c> irradiance          irradiance texture in its UV layout (§2.2.3)
-//   ts <c> dilate              chart gutters filled: texture 0
-//   ts <c> g<i> u, g<i> v      texture i = texture i-1 blurred by v_i - v_(i-1) (§2.2.4)
+//   ts <c> dilate              chart gutters filled
+//   ts <c> g<i> u, g<i> v      texture i = texture i-1 blurred by v_i - v_(i-1) (§2.2.4);
+//                              Gaussian 0 is skipped (the irradiance itself) but in close-ups
 //   ts <c> gather              its pixels of the accumulation (§2.8)
 //
 // A character off screen has every one of its passes skipped by predicate;

@@ -28,9 +28,10 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& 
                                        graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm);
 graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
                                    graph::TextureHandle irradiance);
-// Texture 0 and one texture per Gaussian step (a skipped step's texture is the previous one).
+// One texture per Gaussian step, the first blurred from `dilated` (a skipped
+// step's texture is the previous one).
 std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
                                                 const TsCharacterPlan& plan, const BlurKernel& kernel,
-                                                graph::TextureHandle stretch, graph::TextureHandle texture0);
+                                                graph::TextureHandle stretch, graph::TextureHandle dilated);
 
 }  // namespace dermis

@@ -174,7 +174,7 @@ graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& fram
             name,
             [&](graph::PassBuilder& builder, FilterData& d) {
                 d.in = builder.read(irradiance);
-                d.out = builder.create(tsPassName(plan, "g0"), uvDesc(plan, graph::TextureFormat::Rgba16F));
+                d.out = builder.create(tsPassName(plan, "dilated"), uvDesc(plan, graph::TextureFormat::Rgba16F));
                 builder.skipIf(!plan.visible, kOffScreen);
             },
             [&frame, plan](const graph::PassResources& resources, const FilterData& d) {
@@ -189,13 +189,13 @@ graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& fram
 
 std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
                                                 const TsCharacterPlan& plan, const BlurKernel& kernel,
-                                                graph::TextureHandle stretch, graph::TextureHandle texture0) {
-    std::vector<graph::TextureHandle> textures = {texture0};
+                                                graph::TextureHandle stretch, graph::TextureHandle dilated) {
+    std::vector<graph::TextureHandle> textures;
     const size_t taps = std::min<size_t>(kernel.weights.size(), DERMIS_MAX_BLUR_TAPS);
     const float kernelVariance = kernelVarianceSigma2(kernel);
     for (const TsStep& step : plan.steps) {
         const std::string name = tsPassName(plan, "g" + std::to_string(step.gaussian));
-        const graph::TextureHandle previous = textures.back();
+        const graph::TextureHandle previous = textures.empty() ? dilated : textures.back();
         // The kernel's own variance is a little over 1 sigma^2 (BlurKernel.h), so
         // sigma is scaled for the step to blur by exactly its variance.
         gpu::TextureSpaceBlock block = textureSpaceBlock(frame, plan);
@@ -230,6 +230,7 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, Frame
                 d.stretch = builder.read(stretch);
                 d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
                 builder.passThrough(d.out, previous);
+                builder.skipIf(step.skipped, why);
             },
             [run, block](const graph::PassResources& resources, const FilterData& d) { run(resources, d, block); });
         textures.push_back(v.out);

@@ -86,10 +86,11 @@ void planGaussians(TsCharacterPlan& plan, const SssSettings& sss, float denseMmP
     }
     const float texelsPerMm = denseMmPerUv > 0.0f ? float(plan.size) / denseMmPerUv : 0.0f;
     plan.steps.clear();
-    for (int i = 1; i < used; ++i) {
+    for (int i = 0; i < used; ++i) {
         TsStep step;
         step.gaussian = i;
-        step.stepVarianceMm2 = plan.gaussians[static_cast<size_t>(i)].a - plan.gaussians[static_cast<size_t>(i - 1)].a;
+        const float previous = i == 0 ? 0.0f : plan.gaussians[static_cast<size_t>(i - 1)].a;
+        step.stepVarianceMm2 = plan.gaussians[static_cast<size_t>(i)].a - previous;
         step.widthTexels = std::sqrt(plan.gaussians[static_cast<size_t>(i)].a) * texelsPerMm;
         step.skipped = !plan.visible || step.stepVarianceMm2 <= 0.0f || step.widthTexels < kMinStepTexels;
         plan.steps.push_back(step);

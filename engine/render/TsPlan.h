@@ -9,14 +9,16 @@
 //  - size: the irradiance texture's side, the power of two nearest to one
 //    texel per screen pixel at the character's nearest point, within
 //    [ts.min_size, ts.max_size].
-//  - Gaussians: Gaussian 0 is the irradiance texture itself (seed 000
-//    §2.2.4: the narrowest Gaussian changes nothing); step i >= 1 blurs
-//    texture i-1 by v_i - v_(i-1) into texture i, so a six-Gaussian profile
-//    takes five blurs. sss.gaussians and sss.width_scale mean what they mean
-//    in screen space (render/SssPlan.h): the widest Gaussians are dropped
-//    with their weights folded into the widest kept; widths are scaled. A
-//    step whose Gaussian is narrower than half a texel where the layout is
-//    densest is skipped (its texture is the previous one).
+//  - Gaussians: step i blurs texture i-1 by v_i - v_(i-1) into texture i
+//    (texture -1 is the irradiance texture, v_(-1) = 0). A step whose
+//    Gaussian is narrower than half a texel where the layout is densest is
+//    skipped: its texture is the previous one. At ordinary sizes that is
+//    always Gaussian 0 (0.0064 mm^2 for skin), which seed 000 §2.2.4 takes
+//    as the irradiance itself, so a six-Gaussian profile takes five blurs;
+//    only close-ups where it spans texels blur it. sss.gaussians and
+//    sss.width_scale mean what they mean in screen space (render/SssPlan.h):
+//    the widest Gaussians are dropped with their weights folded into the
+//    widest kept; widths are scaled.
 //  - TSM: the shadow-casting light behind the character (as the camera sees
 //    it) whose modified translucent shadow map carries light through thin
 //    regions (seed 000 §2.5), with a projection fitted to the character.
@@ -45,7 +47,7 @@ struct TsCharacterInput {
 };
 
 struct TsStep {
-    int gaussian = 1;              // index into the profile's Gaussians, >= 1
+    int gaussian = 0;              // index into the profile's Gaussians
     float stepVarianceMm2 = 0.0f;  // blur of this step: (v_i - v_(i-1)) x width_scale^2
     float widthTexels = 0.0f;      // std dev of Gaussian i in texels where the layout is densest
     bool skipped = false;
@@ -61,7 +63,7 @@ struct TsCharacterPlan {
     // One per Gaussian used: rgb the weight (after folding), a the variance
     // (mm^2, width-scaled). Index i is blurred texture i.
     std::vector<glm::vec4> gaussians;
-    std::vector<TsStep> steps;  // Gaussians 1 .. gaussians.size() - 1
+    std::vector<TsStep> steps;  // one per Gaussian used, from the narrowest
     int tsmLight = -1;          // index into Scene::lights; -1: no translucent shadow map
     int tsmSize = 0;            // its side, texels
     glm::mat4 tsmClipFromWorld{1.0f};

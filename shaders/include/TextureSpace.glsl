@@ -17,13 +17,15 @@
 //     3. dilate      empty texels next to a chart take the nearest chart
 //                    texel, so taps past a chart's edge read plausible light,
 //                    never black.
-//     4. blurs       Gaussian 0 is texture 0 itself; texture i is texture i-1
-//                    blurred by v_i - v_(i-1), U then V, with N taps spaced by
-//                    the stretch map (§2.2.4, listing 2.2). Alpha is blurred
+//     4. blurs       texture i is texture i-1 blurred by v_i - v_(i-1), U
+//                    then V, with N taps spaced by the stretch map (§2.2.4,
+//                    listing 2.2); Gaussian 0 is the irradiance itself unless
+//                    it spans texels (render/TsPlan.h). Alpha is blurred
 //                    along, so the thickness is smooth (§2.5).
 //     5. gather      in screen space, for the character's pixels:
 //                    sum_i w_i T_i(uv) / sum_i w_i, each T_i giving way to
-//                    T_0 near a chart border, plus the TSM terms; the
+//                    T_0 (the narrowest, "local" light) near a chart border,
+//                    plus the TSM terms; the
 //                    composite then applies albedo^(1-mix), the outgoing
 //                    energy and the specular, as in screen-space mode.
 //

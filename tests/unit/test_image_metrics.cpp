@@ -71,6 +71,15 @@ TEST(ImageMetrics, NonFiniteTexelsAreInfinitelyWrong) {
     EXPECT_EQ(d->psnrDb, 0.0);
 }
 
+TEST(ImageMetrics, PercentileOfDifferences) {
+    const Image reference = solid(10, 10, 0.0f);
+    Image test = reference;
+    for (size_t i = 0; i < test.texels.size(); ++i) test.texels[i].g = float(i) / 100.0f;
+    EXPECT_NEAR(differencePercentile(reference, test, {}, 0.5), 0.49, 1e-6);
+    EXPECT_NEAR(differencePercentile(reference, test, {}, 1.0), 0.99, 1e-6);
+    EXPECT_EQ(differencePercentile(reference, solid(2, 2, 0.0f), {}, 0.5), 0.0);
+}
+
 TEST(ImageMetrics, NiceNumbersRoundUp) {
     EXPECT_DOUBLE_EQ(roundUpToNiceNumber(0.03), 0.05);
     EXPECT_DOUBLE_EQ(roundUpToNiceNumber(0.05), 0.05);

@@ -47,16 +47,21 @@ TEST(TsPlan, VisibleSkinHeadTakesFiveIncrementalBlurs) {
     EXPECT_TRUE(head.visible);
     EXPECT_EQ(head.label, "head");
     ASSERT_EQ(head.gaussians.size(), 6u);
-    ASSERT_EQ(head.steps.size(), 5u);
+    ASSERT_EQ(head.steps.size(), 6u);
     const auto& skin = skinProfile().gaussians();
     float total = 0.0f;
+    int blurred = 0;
     for (size_t i = 0; i < head.steps.size(); ++i) {
-        EXPECT_EQ(head.steps[i].gaussian, int(i) + 1);
-        EXPECT_FLOAT_EQ(head.steps[i].stepVarianceMm2, skin[i + 1].varianceMm2 - skin[i].varianceMm2);
+        EXPECT_EQ(head.steps[i].gaussian, int(i));
+        EXPECT_FLOAT_EQ(head.steps[i].stepVarianceMm2, skin[i].varianceMm2 - (i == 0 ? 0.0f : skin[i - 1].varianceMm2));
         total += head.steps[i].stepVarianceMm2;
+        blurred += head.steps[i].skipped ? 0 : 1;
     }
-    // The incremental steps add up to the widest Gaussian (seed 000 §2.2.4).
-    EXPECT_NEAR(total + skin[0].varianceMm2, skin[5].varianceMm2, 1e-5f);
+    // The incremental steps add up to the widest Gaussian (seed 000 §2.2.4),
+    // and Gaussian 0 is the irradiance itself: five blurs.
+    EXPECT_NEAR(total, skin[5].varianceMm2, 1e-5f);
+    EXPECT_TRUE(head.steps[0].skipped);
+    EXPECT_EQ(blurred, 5);
     EXPECT_GE(head.size, 256);
     EXPECT_LE(head.size, 2048);
     EXPECT_EQ(head.size & (head.size - 1), 0);
@@ -92,7 +97,7 @@ TEST(TsPlan, DroppedGaussiansFoldIntoTheWidestKept) {
     const TsPlan p = plan(defaultScene({"sss.gaussians=3", "sss.width_scale=2"}));
     const TsCharacterPlan& head = p.characters[0];
     ASSERT_EQ(head.gaussians.size(), 3u);
-    ASSERT_EQ(head.steps.size(), 2u);
+    ASSERT_EQ(head.steps.size(), 3u);
     glm::vec3 sum(0.0f);
     for (const glm::vec4& g : head.gaussians) sum += glm::vec3(g);
     EXPECT_NEAR(sum.r, 1.0f, 1e-5f);
@@ -112,6 +117,19 @@ TEST(TsPlan, NarrowGaussiansAreSkippedAtLowResolution) {
     }
     EXPECT_LT(blurred, 5);
     EXPECT_FALSE(head.steps.back().skipped);
+}
+
+TEST(TsPlan, CloseUpsBlurGaussianZeroToo) {
+    // 40 mm of skin filling a 360-pixel-high view at 2048 texels: 0.02 mm a texel.
+    Scene scene = defaultScene({"ts.min_size=2048"});
+    const Bounds small{glm::vec3(-0.02f, -0.001f, -0.02f), glm::vec3(0.02f, 0.001f, 0.02f)};
+    scene.camera.positionM = glm::vec3(0.0f, 0.0f, 0.05f);
+    scene.camera.targetM = glm::vec3(0.0f);
+    std::vector<TsCharacterInput> inputs(1, {small, 40.0f, 40.0f});
+    auto p = planTextureSpace(scene, inputs, makeViewParams(scene.camera, 640, 360), LightSetup{});
+    ASSERT_TRUE(p.ok());
+    EXPECT_FALSE(p->characters[0].steps[0].skipped);
+    EXPECT_GT(p->characters[0].steps[0].widthTexels, 3.0f);
 }
 
 TEST(TsPlan, TranslucentShadowMapUsesTheShadowedBackLight) {

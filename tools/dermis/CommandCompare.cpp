@@ -31,7 +31,8 @@ const char* const kHelp =
     "                    and tone mapping), which is what the two modes compute differently\n"
     "  ss.png, ts.png    the final tone-mapped images\n"
     "  difference.png    max over RGB of |ss - ts| of the diffuse AOV on SSS pixels, in\n"
-    "                    false colour with a scale bar (other pixels dark grey)\n"
+    "                    false colour with a scale bar up to the 99th percentile rounded\n"
+    "                    up (larger differences saturate; other pixels dark grey)\n"
     "  metrics.json      over SSS pixels (characters with a diffusion profile): relative\n"
     "                    RMSE, RMSE, largest difference and PSNR of ts against ss; and each\n"
     "                    mode's per-pass timings (as `dermis render --timings` writes them)\n"
@@ -165,7 +166,11 @@ int runCompare(const std::vector<std::string>& rawArgs) {
         metrics["max_abs_difference"] = finite(difference->maxAbsDifference);
         metrics["psnr_db"] = finite(difference->psnrDb);
         metrics["peak"] = finite(difference->peak);
-        scaleMax = roundUpToNiceNumber(difference->maxAbsDifference);
+        // The heatmap's scale tops out at the 99th percentile, so that a few
+        // outliers do not leave the rest black; larger differences saturate.
+        const double p99 = differencePercentile(ss->diffuse, ts->diffuse, *mask, 0.99);
+        metrics["difference_p99"] = finite(p99);
+        scaleMax = roundUpToNiceNumber(p99);
         metrics["heatmap_scale_max"] = finite(scaleMax);
     } else {
         metrics["sss_pixels"] = 0;

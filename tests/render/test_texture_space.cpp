@@ -1,0 +1,330 @@
+// Texture-space SSS (mode "ts") against closed forms and against the
+// screen-space mode: the stretch map on the UV sphere, the furnace through
+// the five blurs, the analytic edge, agreement on edge.json, light through
+// the ears, and what runs.
+#include "RenderFixture.h"
+#include "TestSupport.h"
+
+#include "core/ImageMetrics.h"
+#include "gl/GlGraphBackend.h"
+#include "passes/TextureSpacePasses.h"
+#include "render/ScreenFootprint.h"
+#include "scene/ProceduralShapes.h"
+#include "scene/SceneLoader.h"
+#include "sss/DiffusionProfile.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace dermis;
+
+namespace {
+
+class TextureSpace : public test::RenderFixture {};
+
+gl::Buffer uniformBuffer(size_t bytes) {
+    gl::Buffer buffer = gl::createBuffer();
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    return buffer;
+}
+
+// The analytic-edge set-up of test_sss.cpp: a 40 mm skin plane seen straight
+// down, its albedo a hard black|white step at x = 0, all albedo pre-scatter
+// (mix = 1), so the diffuse AOV is the blurred step.
+constexpr double kEdgeFovDeg = 30.0;
+constexpr double kEdgeHeightM = 0.0336;
+
+std::string writeEdgeScene(const test::TempDir& dir) {
+    Image step;
+    step.width = 4096;
+    step.height = 4;
+    step.colourSpace = ColourSpace::Linear;
+    for (int y = 0; y < step.height; ++y) {
+        for (int x = 0; x < step.width; ++x) {
+            const float v = x < step.width / 2 ? 0.0f : 1.0f;
+            step.texels.push_back(glm::vec4(v, v, v, 1.0f));
+        }
+    }
+    EXPECT_TRUE(saveImage(dir.file("step.png"), step).ok());
+    char json[2048];
+    std::snprintf(json, sizeof json, R"({
+      "camera": {"position_m": [0, %.6f, 0], "target_m": [0, 0, 0], "up": [0, 0, -1],
+                 "vertical_fov_deg": %.1f, "near_m": 0.005, "far_m": 1},
+      "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1, "shadow": false}],
+      "characters": [{"name": "step", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.04},
+                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0, 0, 0], "energy_conservation": false, "ssao": {"enabled": false},
+                   "transmittance": {"enabled": false}, "sss": {"mix": 1}}
+    })",
+                  kEdgeHeightM, kEdgeFovDeg);
+    test::writeTextFile(dir.file("edge.json"), json);
+    return dir.file("edge.json");
+}
+
+struct EdgeError {
+    double max = 0.0;
+    double rms = 0.0;
+};
+
+EdgeError edgeError(const Image& image, int width, int height) {
+    const DiffusionProfile& skin = skinProfile();
+    const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / height;
+    EdgeError e;
+    double sumSquares = 0.0;
+    int samples = 0;
+    const int row = height / 2;
+    for (int x = 0; x < width; ++x) {
+        const double xMm = (x + 0.5 - width / 2.0) * mmPerPixel;
+        const glm::vec3 expected = skin.edgeResponse(static_cast<float>(xMm));
+        for (int c = 0; c < 3; ++c) {
+            const double error = std::abs(double(image.at(x, row)[c]) - expected[c]);
+            e.max = std::max(e.max, error);
+            sumSquares += error * error;
+            ++samples;
+        }
+    }
+    e.rms = std::sqrt(sumSquares / samples);
+    return e;
+}
+
+int executedWithPrefix(const std::vector<PassSummary>& passes, const std::string& prefix) {
+    int n = 0;
+    for (const PassSummary& s : passes) n += s.name.rfind(prefix, 0) == 0 && s.executed ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+TEST_F(TextureSpace, StretchMapOnTheUvSphereMatchesTheClosedForm) {
+    // The stretch pass alone, on the procedural UV sphere (u = longitude / 2 pi,
+    // v = polar angle / pi, radius r): |dP/du| = 2 pi r sin(theta), |dP/dv| = pi r.
+    auto scene = parseScene(R"({"characters": [{"name": "ball", "mesh": {"procedural": "sphere"}}]})", "sphere.json");
+    ASSERT_TRUE(scene.ok());
+    auto gpuScene = GpuScene::create(*scene);
+    ASSERT_TRUE(gpuScene.ok());
+    auto programs = Programs::build();
+    ASSERT_TRUE(programs.ok()) << programs.error().message();
+    gl::GpuProfiler profiler;
+    gl::GlGraphBackend backend(profiler);
+    const gl::Buffer objectUniforms = uniformBuffer(sizeof(gpu::ObjectBlock));
+    const gl::Buffer passUniforms = uniformBuffer(kMaxPassBlockBytes);
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_OBJECT, objectUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, passUniforms.get());
+    FrameContext frame;
+    frame.scene = &*scene;
+    frame.gpuScene = &*gpuScene;
+    frame.programs = &*programs;
+    frame.framebuffers = &backend.framebuffers();
+    frame.objectUniforms = objectUniforms.get();
+    frame.passUniforms = passUniforms.get();
+    frame.textureSpace = std::make_shared<TextureSpaceState>();
+
+    TsCharacterPlan plan;
+    plan.label = "ball";
+    plan.visible = true;
+    plan.size = 512;
+    graph::RenderGraph graph;
+    const graph::TextureHandle stretch = addTsStretchPass(graph, frame, plan);
+    std::vector<glm::vec2> texels(static_cast<size_t>(plan.size * plan.size));
+    struct ReadData {
+        graph::TextureHandle in;
+    };
+    graph.addPass<ReadData>(
+        "read back",
+        [&](graph::PassBuilder& builder, ReadData& d) {
+            d.in = builder.read(stretch);
+            builder.sideEffect();
+        },
+        [&](const graph::PassResources& resources, const ReadData& d) {
+            glGetTextureImage(resources.texture(d.in), 0, GL_RG, GL_FLOAT,
+                              static_cast<GLsizei>(texels.size() * sizeof(glm::vec2)), texels.data());
+        });
+    ASSERT_TRUE(graph.compile().ok());
+    profiler.beginFrame(0);
+    graph.execute(backend);
+
+    const double rMm = 1000.0 * kSphereRadiusM;
+    double worstU = 0.0;
+    double worstV = 0.0;
+    int checked = 0;
+    int nonFinite = 0;
+    for (int y = 0; y < plan.size; ++y) {
+        for (int x = 0; x < plan.size; ++x) {
+            const glm::vec2 s = texels[static_cast<size_t>(y * plan.size + x)];
+            if (!std::isfinite(s.x) || !std::isfinite(s.y)) ++nonFinite;
+            const double theta = glm::pi<double>() * (y + 0.5) / plan.size;
+            if (theta < glm::radians(35.0) || theta > glm::radians(145.0)) continue;  // away from the poles
+            worstU = std::max(worstU, std::abs(s.x / (2.0 * glm::pi<double>() * rMm * std::sin(theta)) - 1.0));
+            worstV = std::max(worstV, std::abs(s.y / (glm::pi<double>() * rMm) - 1.0));
+            ++checked;
+        }
+    }
+    std::printf("stretch map, %d texels between 35 and 145 deg: worst error %.2f%% along u, %.2f%% along v\n", checked,
+                100.0 * worstU, 100.0 * worstV);
+    EXPECT_EQ(nonFinite, 0);
+    EXPECT_GT(checked, 100000);
+    EXPECT_LT(worstU, 0.05);
+    EXPECT_LT(worstV, 0.05);
+}
+
+TEST_F(TextureSpace, FurnaceStaysUniformThroughTheFiveBlurs) {
+    // A 5 cm skin plane under one light fills the view; at 512 texels (0.1 mm
+    // each) every one of skin's Gaussians 1-5 is wide enough to be blurred.
+    const std::vector<std::string> common = {"characters.0.transform.scale=0.05", "camera.position_m=[0,0.03,0]",
+                                             "ts.min_size=512"};
+    std::vector<std::string> ts = common;
+    ts.push_back("mode=ts");
+    load("furnace.json", ts);
+    const Image image = render(Aov::Diffuse, 160, 90);
+    int blurs = 0;
+    for (const PassSummary& s : summary()) {
+        const bool blur = s.name.rfind("ts plane g", 0) == 0 && (s.name.back() == 'u' || s.name.back() == 'v');
+        blurs += blur && s.executed ? 1 : 0;
+    }
+    EXPECT_GE(blurs, 10) << "at least Gaussians 1-5, U and V";
+    EXPECT_TRUE(pass("ts plane g1 u")->executed);
+    EXPECT_TRUE(pass("ts plane g5 v")->executed);
+    std::vector<std::string> unblurred = common;
+    unblurred.push_back("sss.enabled=false");
+    load("furnace.json", unblurred);
+    const Image reference = render(Aov::Diffuse, 160, 90);
+    ASSERT_EQ(test::countNonFinite(image), 0u);
+    // The ratio to the unblurred light must be the same everywhere. Its level
+    // may differ from 1 by the G-buffer's 8-bit sRGB albedo, which the
+    // screen-space pre-scatter albedo^mix goes through and the texture-space
+    // one does not (up to 0.7% on llvmpipe, whose sRGB encoding rounds down).
+    glm::dvec3 lowest(INFINITY);
+    glm::dvec3 highest(-INFINITY);
+    for (size_t i = 0; i < image.texels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_GT(reference.texels[i][c], 0.05f);
+            const double ratio = double(image.texels[i][c]) / reference.texels[i][c];
+            lowest[c] = std::min(lowest[c], ratio);
+            highest[c] = std::max(highest[c], ratio);
+        }
+    }
+    double spread = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        spread = std::max(spread, highest[c] / lowest[c] - 1.0);
+        EXPECT_NEAR(lowest[c], 1.0, 0.01) << "channel " << c;
+    }
+    std::printf("texture-space furnace: ratio to the unblurred light %.4f..%.4f (R) %.4f..%.4f (G) %.4f..%.4f (B); "
+                "largest spread %.5f\n",
+                lowest.r, highest.r, lowest.g, highest.g, lowest.b, highest.b, spread);
+    EXPECT_LT(spread, 0.005);
+}
+
+TEST_F(TextureSpace, AnalyticEdgeMatchesSumOfGaussianCdfsInBothModes) {
+    test::TempDir dir;
+    const std::string scene = writeEdgeScene(dir);
+    const int width = 640;
+    const int height = 360;
+    load(scene, {"sss.min_width_px=0"});
+    const Image ss = render(Aov::Diffuse, width, height);
+    load(scene, {"mode=ts"});
+    const Image ts = render(Aov::Diffuse, width, height);
+    const EdgeError ssError = edgeError(ss, width, height);
+    const EdgeError tsError = edgeError(ts, width, height);
+    auto agreement = compareImages(ss, ts);
+    ASSERT_TRUE(agreement.ok());
+    std::printf("analytic edge: ss max %.4f RMS %.4f; ts max %.4f RMS %.4f; ts against ss: max %.4f, relative RMSE %.4f\n",
+                ssError.max, ssError.rms, tsError.max, tsError.rms, agreement->maxAbsDifference,
+                agreement->relativeRmse);
+    EXPECT_LT(tsError.max, 0.1);
+    EXPECT_LT(tsError.rms, 0.01);
+    EXPECT_LT(agreement->maxAbsDifference, 0.1);
+    EXPECT_LT(agreement->relativeRmse, 0.02);
+}
+
+TEST_F(TextureSpace, EdgeSceneAgreesWithScreenSpace) {
+    // content/scenes/edge.json: a skin plane with a shadow edge across it.
+    const int width = 320;
+    const int height = 180;
+    load("edge.json");
+    const Image ss = render(Aov::Diffuse, width, height);
+    load("edge.json", {"mode=ts"});
+    const Image ts = render(Aov::Diffuse, width, height);
+    const Image ids = render(Aov::Object, width, height);
+    std::vector<uint8_t> skin(ids.texels.size());
+    for (size_t i = 0; i < skin.size(); ++i) skin[i] = std::lround(ids.texels[i].r) == 1 ? 1 : 0;
+    auto d = compareImages(ss, ts, skin);
+    ASSERT_TRUE(d.ok()) << d.error().message();
+    std::printf("edge.json, %zu skin pixels: ts against ss relative RMSE %.4f, max difference %.4f (peak %.3f), PSNR %.1f dB\n",
+                d->pixels, d->relativeRmse, d->maxAbsDifference, d->peak, d->psnrDb);
+    EXPECT_GT(d->pixels, 10000u);
+    EXPECT_LT(d->relativeRmse, 0.03);
+    EXPECT_LT(d->maxAbsDifference, 0.1 * d->peak);
+}
+
+TEST_F(TextureSpace, EarsTransmitABackLight) {
+    // The default head seen from its left, with the default's spot light
+    // behind the left ear: the ear's outer face is in the light's shadow, and
+    // only the translucent shadow map brings light through.
+    const std::vector<std::string> view = {"mode=ts", "camera.position_m=[-0.36,0.02,0.34]", "camera.target_m=[-0.06,0,0]",
+                                           "ts.max_size=512"};
+    std::vector<std::string> withTsm = view;
+    load("default.json", withTsm);
+    const Image lit = render(Aov::Diffuse, 320, 180);
+    EXPECT_TRUE(pass("ts head tsm")->executed);
+    std::vector<std::string> withoutTsm = view;
+    withoutTsm.push_back("ts.tsm=false");
+    load("default.json", withoutTsm);
+    const Image unlit = render(Aov::Diffuse, 320, 180);
+    ASSERT_EQ(test::countNonFinite(lit), 0u);
+
+    // The ear's screen box: the left ear plate's centre, projected.
+    const glm::vec3 earM(-0.087f, 0.002f, -0.016f);
+    const ViewParams v = makeViewParams(mScene->camera, 320, 180);
+    const glm::vec4 clip = v.clipFromView * v.viewFromWorld * glm::vec4(earM, 1.0f);
+    const int cx = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * 320.0f);
+    const int cy = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * 180.0f);
+    double earWith = 0.0;
+    double earWithout = 0.0;
+    double elsewhereChange = 0.0;
+    int earPixels = 0;
+    for (int y = 0; y < 180; ++y) {
+        for (int x = 0; x < 320; ++x) {
+            const double with = lit.at(x, y).r;
+            const double without = unlit.at(x, y).r;
+            if (std::abs(x - cx) <= 12 && std::abs(y - cy) <= 16) {
+                earWith += with;
+                earWithout += without;
+                ++earPixels;
+            } else if (std::abs(x - cx) > 40) {
+                elsewhereChange = std::max(elsewhereChange, with - without);
+            }
+        }
+    }
+    std::printf("ear box (%d px around %d,%d): red %.4f with the TSM, %.4f without (x%.2f); elsewhere at most +%.4f\n",
+                earPixels, cx, cy, earWith / earPixels, earWithout / earPixels, earWith / std::max(earWithout, 1e-9),
+                elsewhereChange);
+    EXPECT_GT(earWith, 1.5 * earWithout);
+}
+
+TEST_F(TextureSpace, OffScreenCharacterRunsNoTextureSpacePass) {
+    load("default.json", {"mode=ts", "camera.target_m=[0,0,5]"});
+    render(Aov::Final, 160, 90);
+    int declared = 0;
+    for (const PassSummary& s : summary()) {
+        if (s.name.rfind("ts ", 0) != 0) continue;
+        ++declared;
+        EXPECT_FALSE(s.executed) << s.name;
+        if (s.name.rfind("ts head", 0) == 0) EXPECT_EQ(s.culledBecause, "predicate: character off screen") << s.name;
+    }
+    EXPECT_GT(declared, 10);
+}
+
+TEST_F(TextureSpace, ScreenSpaceModeRunsNoTextureSpacePassAndViceVersa) {
+    load("default.json");
+    render(Aov::Final, 160, 90);
+    EXPECT_EQ(executedWithPrefix(summary(), "ts "), 0);
+    EXPECT_GT(executedWithPrefix(summary(), "sss "), 0);
+    load("default.json", {"mode=ts"});
+    render(Aov::Final, 160, 90);
+    EXPECT_EQ(executedWithPrefix(summary(), "sss "), 0);
+    EXPECT_GT(executedWithPrefix(summary(), "ts head"), 8);
+    EXPECT_FALSE(pass("transmittance")->executed) << "the TSM replaces the screen-space transmittance";
+}
