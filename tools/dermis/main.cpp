@@ -1,5 +1,6 @@
 // dermis: the command-line front end. Each subcommand lives in its own
 // Command*.cpp and is listed in commands().
+#include "CommandReference.h"
 #include "Commands.h"
 
 #include <cstdio>
@@ -13,6 +14,7 @@ const std::vector<Command>& commands() {
         {"render", "render a scene headlessly to PNG/EXR and report per-pass GPU timings", runRender},
         {"stress", "fuzz scenes and settings; count non-finite texels in every pass's targets", runStress},
         {"compare", "render one frame in screen-space and texture-space SSS: images, heatmap, metrics", runCompare},
+        {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };

@@ -1,0 +1,60 @@
+#pragma once
+// A bounding-volume hierarchy over world-space triangles for the CPU
+// reference: closest hits for primary rays, any hits for shadow rays. Binned
+// surface-area-heuristic build (Wald 2007, "On fast construction of SAH-based
+// bounding volume hierarchies"), Moller-Trumbore triangle tests (1997).
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace dermis::reference {
+
+struct Ray {
+    glm::vec3 origin{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // need not be unit length; t is in its units
+};
+
+struct BvhHit {
+    float t = 0.0f;
+    uint32_t triangle = 0;  // index in the order the triangles were given
+    float u = 0.0f;         // barycentric weight of the triangle's second vertex
+    float v = 0.0f;         // and of its third
+};
+
+class Bvh {
+public:
+    // Three corners per triangle, in order. Degenerate triangles are kept but never hit.
+    static Bvh build(const std::vector<glm::vec3>& cornersM);
+
+    // The nearest hit with tMin < t < tMax, if any.
+    bool closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) const;
+    // Whether anything lies along the ray with tMin < t < tMax.
+    bool anyHit(const Ray& ray, float tMin, float tMax) const;
+
+    size_t triangleCount() const { return mTriangleIds.size(); }
+    size_t nodeCount() const { return mNodes.size(); }
+
+private:
+    struct Node {
+        glm::vec3 boundsMin{0.0f};
+        uint32_t firstOrChild = 0;  // leaf: first triangle slot; inner: index of the left child (right = left + 1)
+        glm::vec3 boundsMax{0.0f};
+        uint32_t count = 0;  // triangles in a leaf; 0 for an inner node
+    };
+    struct Triangle {
+        glm::vec3 v0;
+        glm::vec3 edge1;
+        glm::vec3 edge2;
+    };
+
+    template <bool kAnyHit>
+    bool traverse(const Ray& ray, float tMin, float tMax, BvhHit* hit) const;
+
+    std::vector<Node> mNodes;
+    std::vector<Triangle> mTriangles;     // in leaf order
+    std::vector<uint32_t> mTriangleIds;  // leaf slot -> original index
+};
+
+}  // namespace dermis::reference

@@ -1,0 +1,56 @@
+#pragma once
+// One character's surface in world space (metres) with its material, as the
+// G-buffer pass sees it (shaders/gbuffer.vert, gbuffer.frag): albedo = tint x
+// albedo map (decoded to linear), clamped to [0, 1]; the interpolated normal,
+// flipped on back faces and perturbed by the tangent-space normal map.
+
+#include "core/Result.h"
+#include "scene/Model.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dermis::reference {
+
+struct SurfacePoint {
+    glm::vec3 positionM{0.0f};
+    glm::vec3 geometricNormal{0.0f, 0.0f, 1.0f};  // unit; the counter-clockwise side is the front
+    glm::vec3 shadingNormal{0.0f, 0.0f, 1.0f};    // unit
+    glm::vec3 albedo{0.0f};                        // linear
+    float roughness = 0.3f;
+    float rhoS = 0.0f;
+};
+
+class CharacterSurface {
+public:
+    // Takes the model in object units and places it with the character's transform.
+    static Result<CharacterSurface> create(const Character& character, Model model);
+
+    const std::string& name() const { return mName; }
+    size_t triangleCount() const { return mIndices.size() / 3; }
+    glm::vec3 corner(size_t triangle, int which) const { return mPositionsM[mIndices[3 * triangle + size_t(which)]]; }
+    // The point at barycentric weights (b1, b2) of the triangle's second and third
+    // corners. `backFacing` flips the normal before the normal map, as gl_FrontFacing does.
+    SurfacePoint pointAt(size_t triangle, float b1, float b2, bool backFacing = false) const;
+    glm::vec3 positionAt(size_t triangle, float b1, float b2) const;
+    double areaM2() const;
+
+private:
+    std::string mName;
+    std::vector<glm::vec3> mPositionsM;
+    std::vector<glm::vec3> mNormals;   // normal matrix applied, not normalised (interpolated first, as on the GPU)
+    std::vector<glm::vec4> mTangents;  // xyz world tangent, w bitangent sign
+    std::vector<glm::vec2> mUvs;       // flipV already applied
+    std::vector<uint32_t> mIndices;
+    Image mAlbedoMap;  // linear; empty: none
+    Image mNormalMap;  // empty: none
+    glm::vec3 mAlbedoTint{1.0f};
+    float mRoughness = 0.3f;
+    float mRhoS = 0.0f;
+};
+
+}  // namespace dermis::reference

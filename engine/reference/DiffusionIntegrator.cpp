@@ -1,0 +1,147 @@
+#include "reference/DiffusionIntegrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dermis::reference {
+namespace {
+
+constexpr float kMmPerM = 1000.0f;
+constexpr float kMm2PerM2 = 1e6f;
+constexpr float kPi = 3.14159265358979f;
+// exp(-40) = 4e-18: a Gaussian this far below its peak adds nothing a float sum keeps.
+constexpr float kNegligibleExponent = 40.0f;
+
+}  // namespace
+
+glm::vec3 albedoPower(const glm::vec3& albedo, float exponent) {
+    if (exponent <= 0.0f) return glm::vec3(1.0f);
+    if (exponent == 1.0f) return glm::max(albedo, glm::vec3(0.0f));
+    if (exponent == 0.5f) return glm::sqrt(glm::max(albedo, glm::vec3(0.0f)));
+    return glm::pow(glm::max(albedo, glm::vec3(0.0f)), glm::vec3(exponent));
+}
+
+DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const ReferenceLighting& lighting,
+                                         const DiffusionProfile& profile, float mix, const QuadratureSettings& quadrature)
+    : mSurface(&surface), mLighting(&lighting), mProfile(&profile), mMix(mix), mQuadrature(quadrature) {
+    for (const ProfileGaussian& g : profile.gaussians()) {
+        mSigmasMm.push_back(std::sqrt(g.varianceMm2));
+        mTerms.push_back(Term{0.5f / g.varianceMm2, g.weight / (2.0f * kPi * g.varianceMm2)});
+    }
+    // An equilateral sample cell of edge h has area (sqrt 3 / 4) h^2 = s^2 / density.
+    mEdgePerSigma = std::sqrt(4.0f / (std::sqrt(3.0f) * std::max(quadrature.density, 1e-6f)));
+    mQueryRadiusMm = kQueryCutoffSigmas * mSigmasMm.back();
+
+    // Base cells: acceptable as they are for the widest Gaussian, whose samples
+    // (the children) may be mEdgePerSigma s_max apart.
+    const float baseEdgeM = 2.0f * mEdgePerSigma * mSigmasMm.back() / kMmPerM;
+    mBaseCells = tessellate(surface, 0.999f * baseEdgeM);  // margin: every base cell passes the widest test
+    std::vector<glm::vec3> centroids;
+    centroids.reserve(mBaseCells.size());
+    mBaseShapes.reserve(mBaseCells.size());
+    for (const Cell& cell : mBaseCells) {
+        const CellShape shape = cellShape(surface, cell);
+        mBaseShapes.push_back(shape);
+        centroids.push_back(shape.centroidM);
+        mMaxBaseBoundMm = std::max(mMaxBaseBoundMm, shape.boundRadiusM * kMmPerM);
+    }
+    mGrid = CellGrid(centroids, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM);
+}
+
+float DiffusionIntegrator::neededEdgeMm(float dMinMm) const {
+    for (float sigmaMm : mSigmasMm) {
+        if (dMinMm < mQuadrature.refineCutoffSigmas * sigmaMm) return 2.0f * mEdgePerSigma * sigmaMm;
+    }
+    return 2.0f * mEdgePerSigma * mSigmasMm.back();
+}
+
+void DiffusionIntegrator::markNeeded(const glm::vec3& pointM, std::vector<uint8_t>& needed) const {
+    mGrid.forEachNear(pointM, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM, [&](uint32_t index) { needed[index] = 1; });
+}
+
+DiffusionIntegrator::Shaded DiffusionIntegrator::shade(const Cell& cell, float childAreaMm2) const {
+    const glm::vec2 b = cellCentroid(cell);
+    const SurfacePoint point = mSurface->pointAt(cell.triangle, b.x, b.y);
+    Shaded shaded;
+    shaded.sample.positionM = point.positionM;
+    shaded.sample.areaMm2 = childAreaMm2;
+    shaded.sample.value = mLighting->irradiance(point, &shaded.visibility) * albedoPower(point.albedo, mMix);
+    return shaded;
+}
+
+template <class Emit>
+void DiffusionIntegrator::shadeCell(const Cell& cell, float areaMm2, int edgeLevels, const Shaded* knownCentre,
+                                    Emit&& emit) const {
+    const std::array<Cell, 4> children = splitCell(cell);
+    const float childAreaMm2 = 0.25f * areaMm2;
+    std::array<Shaded, 4> shaded;
+    for (size_t c = 0; c < 4; ++c) {
+        // The middle child's centroid is the parent's: reuse it when the parent was shaded.
+        if (c == 3 && knownCentre) {
+            shaded[c] = *knownCentre;
+            shaded[c].sample.areaMm2 = childAreaMm2;
+        } else {
+            shaded[c] = shade(children[c], childAreaMm2);
+        }
+    }
+    bool edge = false;
+    for (size_t i = 0; i < 4 && !edge; ++i) {
+        for (size_t j = i + 1; j < 4; ++j) edge = edge || shaded[i].visibility.disagreesWith(shaded[j].visibility);
+    }
+    if (edge && edgeLevels > 0) {
+        for (size_t c = 0; c < 4; ++c) shadeCell(children[c], childAreaMm2, edgeLevels - 1, &shaded[c], emit);
+        return;
+    }
+    for (const Shaded& s : shaded) emit(s.sample);
+}
+
+std::vector<Sample> DiffusionIntegrator::shadeBaseCell(size_t index) const {
+    std::vector<Sample> samples;
+    shadeCell(mBaseCells[index], mBaseShapes[index].areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr,
+              [&](const Sample& s) { samples.push_back(s); });
+    return samples;
+}
+
+// DiffusionProfile::radialProfile's sum (seed 000 §2.1.4), in float, for the inner loop.
+glm::vec3 DiffusionIntegrator::profileAt(float radiusSquaredMm2) const {
+    glm::vec3 sum(0.0f);
+    for (const Term& term : mTerms) {
+        const float exponent = term.exponentPerMm2 * radiusSquaredMm2;
+        if (exponent < kNegligibleExponent) sum += term.peak * std::exp(-exponent);
+    }
+    return sum;
+}
+
+void DiffusionIntegrator::accumulate(const Sample& s, const glm::vec3& pointM, glm::dvec3& sum) const {
+    const glm::vec3 dMm = (s.positionM - pointM) * kMmPerM;
+    sum += glm::dvec3(profileAt(glm::dot(dMm, dMm)) * (s.value * s.areaMm2));
+}
+
+void DiffusionIntegrator::integrateCell(const Cell& cell, const glm::vec3& pointM, int level, glm::dvec3& sum) const {
+    const CellShape shape = cellShape(*mSurface, cell);
+    const float dMinMm = std::max(0.0f, glm::length(shape.centroidM - pointM) - shape.boundRadiusM) * kMmPerM;
+    if (dMinMm > mQueryRadiusMm) return;
+    if (shape.maxEdgeM * kMmPerM > neededEdgeMm(dMinMm) && level < kMaxSplitLevels) {
+        for (const Cell& child : splitCell(cell)) integrateCell(child, pointM, level + 1, sum);
+        return;
+    }
+    shadeCell(cell, shape.areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr,
+              [&](const Sample& s) { accumulate(s, pointM, sum); });
+}
+
+glm::vec3 DiffusionIntegrator::integrate(const glm::vec3& pointM, const std::vector<std::vector<Sample>>& baseSamples) const {
+    glm::dvec3 sum(0.0);
+    mGrid.forEachNear(pointM, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM, [&](uint32_t index) {
+        const CellShape& shape = mBaseShapes[index];
+        const float dMinMm = std::max(0.0f, glm::length(shape.centroidM - pointM) - shape.boundRadiusM) * kMmPerM;
+        if (dMinMm > mQueryRadiusMm) return;
+        if (shape.maxEdgeM * kMmPerM <= neededEdgeMm(dMinMm)) {
+            for (const Sample& s : baseSamples[index]) accumulate(s, pointM, sum);
+        } else {
+            for (const Cell& child : splitCell(mBaseCells[index])) integrateCell(child, pointM, 1, sum);
+        }
+    });
+    return glm::vec3(sum);
+}
+
+}  // namespace dermis::reference

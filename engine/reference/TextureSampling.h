@@ -1,0 +1,23 @@
+#pragma once
+// Texture reads as the GPU makes them for the renderer's maps: bilinear, GL_REPEAT,
+// texel centres at (i + 0.5) / size, row 0 at v = 0 (engine/render/GpuScene.cpp
+// uploads images top row first, so texture(uv) follows glTF's convention). No
+// mip levels: the reference's samples are finer than any texel footprint it uses.
+
+#include "core/Image.h"
+
+#include <glm/glm.hpp>
+
+namespace dermis::reference {
+
+// The sRGB transfer function's inverse (IEC 61966-2-1), as an sRGB texture format decodes.
+float srgbToLinear(float encoded);
+
+// A copy with RGB decoded to linear (alpha kept), marked ColourSpace::Linear; an
+// image already linear is returned unchanged.
+Image decodeToLinear(const Image& image);
+
+// Bilinear read at uv (repeat wrapping). An empty image reads as `fallback`.
+glm::vec4 sampleBilinear(const Image& image, const glm::vec2& uv, const glm::vec4& fallback);
+
+}  // namespace dermis::reference
