@@ -4,11 +4,24 @@
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s
 //   target 2       R32UI: profile slot and view depth packed, the key that
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
+// With GBUFFER_LEAN defined (variants lcb and lbb, render/SssVariant.h):
+//   target 3       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
+//   target 4       R16F: LEAN M'.xy
+//   (include/Lean.glsl: the space, the projection and the packing). The
+//   normal is then the LEAN mean normal, so the normal map is not read.
+// Material maps are sampled with the mip bias uFrame.features.w (0 but in tests).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
+#ifdef GBUFFER_LEAN
+#include "Lean.glsl"
+#endif
 
 layout(binding = 0) uniform sampler2D uAlbedoMap;
 layout(binding = 1) uniform sampler2D uNormalMap;
+#ifdef GBUFFER_LEAN
+layout(binding = 2) uniform sampler2D uLean1;  // (B.x, B.y, M.xx, M.yy), tangent space
+layout(binding = 3) uniform sampler2D uLean2;  // (M.xy, base variance)
+#endif
 
 in vec3 vViewNormal;
 in vec4 vViewTangent;
@@ -17,25 +30,59 @@ in vec2 vUv;
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
 layout(location = 2) out uint oDepthKey;
+#ifdef GBUFFER_LEAN
+layout(location = 3) out vec4 oLeanMoments;
+layout(location = 4) out float oLeanCross;
+#endif
 
 in vec3 vViewPositionM;
 
+// The tangent frame (columns T, B, N) around the geometric normal N.
+mat3 tangentFrame(vec3 N) {
+    vec3 T = vViewTangent.xyz - N * dot(N, vViewTangent.xyz);
+    T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
+    vec3 B = cross(N, T) * (vViewTangent.w < 0.0 ? -1.0 : 1.0);
+    return mat3(T, B, N);
+}
+
 void main() {
+    float mipBias = uFrame.features.w;
     vec3 albedo = uObject.albedoRoughness.rgb;
-    if (uObject.material.z > 0.5) albedo *= texture(uAlbedoMap, vUv).rgb;
+    if (uObject.material.z > 0.5) albedo *= texture(uAlbedoMap, vUv, mipBias).rgb;
+    bool hasMaps = uObject.material.w > 0.5;
+    float roughness = uObject.albedoRoughness.w;
 
     vec3 N = safeNormalize(vViewNormal, vec3(0.0, 0.0, 1.0));
     if (!gl_FrontFacing) N = -N;
-    if (uObject.material.w > 0.5) {
-        vec3 T = vViewTangent.xyz - N * dot(N, vViewTangent.xyz);
-        T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
-        vec3 B = cross(N, T) * (vViewTangent.w < 0.0 ? -1.0 : 1.0);
-        vec3 tangentNormal = texture(uNormalMap, vUv).xyz * 2.0 - 1.0;
-        N = safeNormalize(mat3(T, B, N) * tangentNormal, N);
+#ifdef GBUFFER_LEAN
+    mat3 TBN = tangentFrame(N);
+    vec2 bump = vec2(0.0);
+    vec3 moments = vec3(0.0);
+    // Beckmann m as a slope variance per axis, m^2 / 2 (Lean.glsl).
+    float baseVariance = 0.5 * roughness * roughness;
+    if (hasMaps) {
+        vec4 lean1 = texture(uLean1, vUv, mipBias);
+        vec2 lean2 = texture(uLean2, vUv, mipBias).xy;
+        bump = lean1.xy;
+        moments = vec3(lean1.zw, lean2.x);
+        baseVariance += lean2.y;
+        N = safeNormalize(leanMeanNormal(bump, TBN), N);
     }
+    vec2 viewBump;
+    vec3 viewMoments;
+    leanProject(bump, moments, baseVariance, TBN, safeNormalize(-vViewPositionM, vec3(0.0, 0.0, 1.0)), viewBump,
+                viewMoments);
+    oLeanMoments = vec4(viewBump, viewMoments.xy);
+    oLeanCross = viewMoments.z;
+#else
+    if (hasMaps) {
+        vec3 tangentNormal = texture(uNormalMap, vUv, mipBias).xyz * 2.0 - 1.0;
+        N = safeNormalize(tangentFrame(N) * tangentNormal, N);
+    }
+#endif
 
     oAlbedo = vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0);
-    oNormalMaterial = vec4(encodeNormal(N), uObject.albedoRoughness.w, uObject.material.x);
+    oNormalMaterial = vec4(encodeNormal(N), roughness, uObject.material.x);
     int objectId = int(uObject.material.y + 0.5);
     int slot = int(uCharacters.characters[objectId].params.x + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);

@@ -4,6 +4,10 @@
 //      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (seed 000 §2.6);
 //      the ambient term by the SSAO.
 //   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur.
+//   2: the shadow visibility of each shadowed light, channel = its shadow
+//      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
+//      which would otherwise filter every shadow map again. Bound only in the
+//      LEAN variants (passes/LightingPass.h); unbound, the write is dropped.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "Shadows.glsl"
@@ -22,6 +26,11 @@ layout(binding = 15) uniform sampler2D uEnergy;
 in vec2 vUv;
 layout(location = 0) out vec4 oIrradiance;
 layout(location = 1) out vec4 oSpecular;
+layout(location = 2) out vec4 oVisibility;
+
+#if DERMIS_MAX_SHADOWED_LIGHTS > 4
+#error "oVisibility holds one shadowed light per channel: at most 4"
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -29,6 +38,7 @@ void main() {
     if (depth >= 1.0) {
         oIrradiance = vec4(0.0);
         oSpecular = vec4(0.0);
+        oVisibility = vec4(0.0);
         return;
     }
     vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
@@ -44,6 +54,7 @@ void main() {
 
     vec3 irradiance = uFrame.ambient.rgb * texture(uAmbientOcclusion, vUv).r;
     vec3 specular = vec3(0.0);
+    vec4 shadowed = vec4(0.0);
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
@@ -53,7 +64,10 @@ void main() {
         if (nDotL <= 0.0) continue;
         int slot = int(light.directionShadow.w);
         float visibility = 1.0;
-        if (slot >= 0) visibility = shadowVisibility(uShadowMaps[slot], light, worldPositionM, N, gl_FragCoord.xy);
+        if (slot >= 0) {
+            visibility = shadowVisibility(uShadowMaps[slot], light, worldPositionM, N, gl_FragCoord.xy);
+            shadowed[slot] = visibility;
+        }
         float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, nDotL, roughness, rhoS) : 1.0;
         irradiance += radiance * (nDotL * visibility * diffuseShare);
         specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
@@ -62,4 +76,5 @@ void main() {
     float mixRatio = uFrame.shading.y;
     oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), 1.0);
     oSpecular = vec4(sanitizeColour(specular), 1.0);
+    oVisibility = shadowed;
 }

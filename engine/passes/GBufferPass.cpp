@@ -12,12 +12,20 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
             g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
+            if (frame.lean) {
+                g.leanMoments = builder.create("lean moments", {w, h, graph::TextureFormat::Rgba16F});
+                g.leanCross = builder.create("lean cross moment", {w, h, graph::TextureFormat::R16F});
+            }
         },
         [&frame](const graph::PassResources& resources, const GBuffer& g) {
             gl::Attachments attachments;
             attachments.colour[0] = resources.texture(g.albedo);
             attachments.colour[1] = resources.texture(g.normalMaterial);
             attachments.colour[2] = resources.texture(g.depthKey);
+            if (g.hasLean()) {
+                attachments.colour[3] = resources.texture(g.leanMoments);
+                attachments.colour[4] = resources.texture(g.leanCross);
+            }
             attachments.depth = resources.texture(g.depthStencil);
             attachments.depthHasStencil = true;
             frame.framebuffers->bind(attachments);
@@ -27,6 +35,10 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             glClearBufferfv(GL_COLOR, 1, zero);
             const GLuint backgroundKey[4] = {DERMIS_BACKGROUND_KEY, 0, 0, 0};
             glClearBufferuiv(GL_COLOR, 2, backgroundKey);
+            if (g.hasLean()) {
+                glClearBufferfv(GL_COLOR, 3, zero);
+                glClearBufferfv(GL_COLOR, 4, zero);
+            }
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
             // The albedo target is sRGB: without this GL stores the linear value
             // unencoded and every later read decodes it a second time.
@@ -38,7 +50,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             glStencilMask(0xFF);
             glDisable(GL_CULL_FACE);
-            glUseProgram(frame.programs->gbuffer.get());
+            glUseProgram(g.hasLean() ? frame.programs->gbufferLean.get() : frame.programs->gbuffer.get());
             const auto& characters = frame.gpuScene->characters();
             for (size_t index = 0; index < characters.size(); ++index) {
                 const GpuCharacter& character = characters[index];
@@ -46,6 +58,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
                 glStencilFunc(GL_ALWAYS, frame.sss.slotOfCharacter[index], 0xFF);
                 glBindTextureUnit(0, character.albedoMap.get());
                 glBindTextureUnit(1, character.normalMap.get());
+                glBindTextureUnit(2, character.leanMap1.get());
+                glBindTextureUnit(3, character.leanMap2.get());
                 glBindVertexArray(character.mesh.vertexArray.get());
                 glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
             }

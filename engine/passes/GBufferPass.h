@@ -1,9 +1,13 @@
 #pragma once
 // Pass 2: the G-buffer (layout in shaders/gbuffer.frag). The stencil holds
-// each pixel's SSS profile slot so later blurs can be confined to skin.
+// each pixel's SSS profile slot so later blurs can be confined to skin. In the
+// LEAN variants (render/SssVariant.h) it also holds the view-plane LEAN
+// moments (shaders/include/Lean.glsl); in variant c they do not exist.
 
 #include "graph/RenderGraph.h"
 #include "render/FrameContext.h"
+
+#include <vector>
 
 namespace dermis {
 
@@ -12,6 +16,14 @@ struct GBuffer {
     graph::TextureHandle albedo;          // RGBA8 sRGB; alpha = object id / 255
     graph::TextureHandle normalMaterial;  // RGBA16F: octahedral view normal, roughness m, rho_s
     graph::TextureHandle depthKey;        // R32UI: profile slot and view depth (UniformBlocks.glsl)
+    graph::TextureHandle leanMoments;     // RGBA16F (B'.x, B'.y, M'.xx, M'.yy); invalid in variant c
+    graph::TextureHandle leanCross;       // R16F M'.xy; invalid in variant c
+
+    bool hasLean() const { return leanMoments.isValid(); }
+    // The targets the SSS chain blurs with the irradiance: none in variant c.
+    std::vector<graph::TextureHandle> leanTargets() const {
+        return hasLean() ? std::vector<graph::TextureHandle>{leanMoments, leanCross} : std::vector<graph::TextureHandle>{};
+    }
 };
 
 GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame);

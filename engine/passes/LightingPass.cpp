@@ -19,7 +19,8 @@ void bindShadowMaps(const FrameContext& frame, const graph::PassResources& resou
 }
 
 Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                         const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion) {
+                         const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion,
+                         bool shadowVisibility) {
     const auto w = static_cast<uint32_t>(frame.width);
     const auto h = static_cast<uint32_t>(frame.height);
     return graph
@@ -33,11 +34,13 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 d.out.irradiance = builder.create("irradiance", {w, h, graph::TextureFormat::Rgba16F});
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
+                if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
             },
             [&frame](const graph::PassResources& resources, const LightingData& d) {
                 gl::Attachments attachments;
                 attachments.colour[0] = resources.texture(d.out.irradiance);
                 attachments.colour[1] = resources.texture(d.out.specular);
+                if (d.out.visibility.isValid()) attachments.colour[2] = resources.texture(d.out.visibility);
                 frame.framebuffers->bind(attachments);
                 frame.setViewport(frame.width, frame.height);
                 glUseProgram(frame.programs->lighting.get());

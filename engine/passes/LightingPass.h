@@ -14,10 +14,14 @@ namespace dermis {
 struct Lighting {
     graph::TextureHandle irradiance;  // RGBA16F
     graph::TextureHandle specular;    // RGBA16F
+    graph::TextureHandle visibility;  // RGBA8: shadow visibility per shadow slot; only when asked for
 };
 
+// shadowVisibility: also write each shadowed light's visibility, for a later
+// pass that shades with the same shadows (the LEAN specular pass).
 Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                         const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion);
+                         const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion,
+                         bool shadowVisibility = false);
 
 // Binds shadow maps to units 4.. (every unit gets a texture: sampler arrays must be complete).
 void bindShadowMaps(const FrameContext& frame, const graph::PassResources& resources,

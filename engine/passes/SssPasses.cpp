@@ -1,7 +1,9 @@
 #include "passes/SssPasses.h"
 
+#include "render/SssVariant.h"
 #include "sss/BlurKernel.h"
 
+#include <cassert>
 #include <cstdio>
 #include <string>
 
@@ -10,10 +12,18 @@ namespace {
 
 struct InitData {
     graph::TextureHandle irradiance, depthKey, accumulated;
+    std::vector<graph::TextureHandle> extras, extrasAccumulated;
 };
 struct BlurData {
     graph::TextureHandle colour, depthKey, stencil, accumulatedIn, out, accumulatedOut;
+    std::vector<graph::TextureHandle> extras, extrasAccumulatedIn, extrasOut, extrasAccumulatedOut;
 };
+
+void bindBlurInputs(const graph::PassResources& resources, const BlurData& d) {
+    glBindTextureUnit(0, resources.texture(d.colour));
+    glBindTextureUnit(1, resources.texture(d.depthKey));
+    for (size_t k = 0; k < d.extras.size(); ++k) glBindTextureUnit(static_cast<GLuint>(2 + k), resources.texture(d.extras[k]));
+}
 
 gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel, const SssGaussianStep& step,
                             int slot, bool horizontal) {
@@ -26,7 +36,8 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
     // its offsets are scaled for the step to blur by exactly stepVarianceMm2.
     const float sigmaMm = std::sqrt(step.stepVarianceMm2 / kernelVarianceSigma2(kernel));
     block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(kernel.weights.size()));
-    const float mode = settings.blur == "control" ? 1.0f : settings.blur == "fetch-only" ? 2.0f : 0.0f;
+    const std::string edges = sssBlurEdges(settings);
+    const float mode = edges == "control" ? 1.0f : edges == "fetch-only" ? 2.0f : 0.0f;
     block.edges = glm::vec4(mode, settings.bilateralDepthMm,
                             settings.controlDepthScalePerMm, float(slot));
     return block;
@@ -76,43 +87,57 @@ ScopedSssState::~ScopedSssState() {
     glDepthMask(GL_TRUE);
 }
 
-graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                  graph::TextureHandle irradiance) {
+SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
     const auto w = static_cast<uint32_t>(frame.width);
     const auto h = static_cast<uint32_t>(frame.height);
     const graph::TextureDesc colourDesc{w, h, graph::TextureFormat::Rgba16F};
     const bool anyVisible = frame.sss.anyVisible();
+    assert(extras.empty() || extras.size() == kLeanSssTargets);
+    const size_t extraCount = extras.size();
+    const Programs& programs = *frame.programs;
+    const GLuint initProgram = extras.empty() ? programs.sssInit.get() : programs.sssInitLean.get();
+    const GLuint blurProgram = extras.empty() ? programs.sssBlur.get() : programs.sssBlurLean.get();
 
-    graph::TextureHandle accumulated =
-        graph
-            .addPass<InitData>(
-                "sss init",
-                [&](graph::PassBuilder& builder, InitData& d) {
-                    d.irradiance = builder.read(irradiance);
-                    d.depthKey = builder.read(gbuffer.depthKey);
-                    d.accumulated = builder.create("sss accumulated", colourDesc);
-                    builder.passThrough(d.accumulated, irradiance);
-                    builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
-                    builder.skipIf(!anyVisible, "no SSS pixel on screen");
-                },
-                [&frame](const graph::PassResources& resources, const InitData& d) {
-                    gl::Attachments attachments;
-                    attachments.colour[0] = resources.texture(d.accumulated);
-                    frame.framebuffers->bind(attachments);
-                    frame.setViewport(frame.width, frame.height);
-                    glUseProgram(frame.programs->sssInit.get());
-                    glBindTextureUnit(0, resources.texture(d.irradiance));
-                    glBindTextureUnit(1, resources.texture(d.depthKey));
-                    frame.drawFullscreenTriangle();
-                })
-            .accumulated;
+    const InitData& init = graph.addPass<InitData>(
+        "sss init",
+        [&](graph::PassBuilder& builder, InitData& d) {
+            d.irradiance = builder.read(irradiance);
+            d.depthKey = builder.read(gbuffer.depthKey);
+            d.accumulated = builder.create("sss accumulated", colourDesc);
+            builder.passThrough(d.accumulated, irradiance);
+            for (size_t k = 0; k < extraCount; ++k) {
+                d.extras.push_back(builder.read(extras[k]));
+                d.extrasAccumulated.push_back(
+                    builder.create(graph.textureName(extras[k]) + " accumulated", builder.desc(extras[k])));
+                builder.passThrough(d.extrasAccumulated[k], extras[k]);
+            }
+            builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
+            builder.skipIf(!anyVisible, "no SSS pixel on screen");
+        },
+        [&frame, initProgram](const graph::PassResources& resources, const InitData& d) {
+            gl::Attachments attachments;
+            attachments.colour[0] = resources.texture(d.accumulated);
+            for (size_t k = 0; k < d.extras.size(); ++k) attachments.colour[1 + k] = resources.texture(d.extrasAccumulated[k]);
+            frame.framebuffers->bind(attachments);
+            frame.setViewport(frame.width, frame.height);
+            glUseProgram(initProgram);
+            glBindTextureUnit(0, resources.texture(d.irradiance));
+            glBindTextureUnit(1, resources.texture(d.depthKey));
+            for (size_t k = 0; k < d.extras.size(); ++k) {
+                glBindTextureUnit(static_cast<GLuint>(2 + k), resources.texture(d.extras[k]));
+            }
+            frame.drawFullscreenTriangle();
+        });
+    SssChain chain{init.accumulated, init.extrasAccumulated};
 
     auto kernel = makeGaussianKernel(frame.scene->settings.sss.taps);
-    if (!kernel.ok()) return accumulated;  // the scene loader validates taps; nothing to blur with
+    if (!kernel.ok()) return chain;  // the scene loader validates taps; nothing to blur with
     const BlurKernel taps = *kernel;  // copied into each pass: it outlives this function
 
     for (const SssSlotPlan& slot : frame.sss.slots) {
         graph::TextureHandle current = irradiance;
+        std::vector<graph::TextureHandle> currentExtras = extras;
         const std::string prefix = "sss " + slot.profile->name() + " g";
         for (const SssGaussianStep& step : slot.steps) {
             const std::string name = prefix + std::to_string(step.gaussian);
@@ -127,22 +152,27 @@ graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame
                     d.depthKey = builder.read(gbuffer.depthKey);
                     d.stencil = builder.read(gbuffer.depthStencil);
                     d.out = builder.create(name + " h", colourDesc);
+                    for (size_t k = 0; k < extraCount; ++k) {
+                        d.extras.push_back(builder.read(currentExtras[k]));
+                        d.extrasOut.push_back(builder.create(name + " h " + graph.textureName(extras[k]),
+                                                             builder.desc(currentExtras[k])));
+                    }
                     builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
                     builder.skipIf(step.skipped, why);
                 },
-                [&frame, taps, step, slotIndex = slot.slot, scissor = slot.scissor](
+                [&frame, taps, step, blurProgram, slotIndex = slot.slot, scissor = slot.scissor](
                     const graph::PassResources& resources, const BlurData& d) {
                     gl::Attachments attachments;
                     attachments.colour[0] = resources.texture(d.out);
+                    for (size_t k = 0; k < d.extrasOut.size(); ++k) attachments.colour[1 + k] = resources.texture(d.extrasOut[k]);
                     attachments.depth = resources.texture(d.stencil);
                     attachments.depthHasStencil = true;
                     frame.framebuffers->bind(attachments);
                     frame.setViewport(frame.width, frame.height);
                     const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, true);
                     frame.uploadPassBlock(&block, sizeof block);
-                    glUseProgram(frame.programs->sssBlur.get());
-                    glBindTextureUnit(0, resources.texture(d.colour));
-                    glBindTextureUnit(1, resources.texture(d.depthKey));
+                    glUseProgram(blurProgram);
+                    bindBlurInputs(resources, d);
                     const ScopedSssState state(frame, scissor, slotIndex);
                     frame.drawFullscreenTriangle();
                 });
@@ -152,37 +182,62 @@ graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame
                     d.colour = builder.read(horizontal.out);
                     d.depthKey = builder.read(gbuffer.depthKey);
                     d.stencil = builder.read(gbuffer.depthStencil);
-                    d.accumulatedIn = builder.read(accumulated);
+                    d.accumulatedIn = builder.read(chain.diffuse);
                     d.out = builder.create(name + " v", colourDesc);
-                    d.accumulatedOut = builder.write(accumulated);
+                    d.accumulatedOut = builder.write(chain.diffuse);
                     builder.passThrough(d.out, current);
+                    for (size_t k = 0; k < extraCount; ++k) {
+                        d.extras.push_back(builder.read(horizontal.extrasOut[k]));
+                        d.extrasAccumulatedIn.push_back(builder.read(chain.extras[k]));
+                        d.extrasOut.push_back(builder.create(name + " v " + graph.textureName(extras[k]),
+                                                             builder.desc(currentExtras[k])));
+                        d.extrasAccumulatedOut.push_back(builder.write(chain.extras[k]));
+                        builder.passThrough(d.extrasOut[k], currentExtras[k]);
+                    }
                 },
-                [&frame, taps, step, slotIndex = slot.slot, scissor = slot.scissor](
+                [&frame, taps, step, blurProgram, slotIndex = slot.slot, scissor = slot.scissor](
                     const graph::PassResources& resources, const BlurData& d) {
+                    const size_t extraTargets = d.extrasOut.size();
                     gl::Attachments attachments;
                     attachments.colour[0] = resources.texture(d.out);
-                    attachments.colour[1] = resources.texture(d.accumulatedOut);
+                    for (size_t k = 0; k < extraTargets; ++k) attachments.colour[1 + k] = resources.texture(d.extrasOut[k]);
+                    attachments.colour[1 + extraTargets] = resources.texture(d.accumulatedOut);
+                    for (size_t k = 0; k < extraTargets; ++k) {
+                        attachments.colour[2 + extraTargets + k] = resources.texture(d.extrasAccumulatedOut[k]);
+                    }
                     attachments.depth = resources.texture(d.stencil);
                     attachments.depthHasStencil = true;
                     frame.framebuffers->bind(attachments);
                     frame.setViewport(frame.width, frame.height);
                     const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, false);
                     frame.uploadPassBlock(&block, sizeof block);
-                    glUseProgram(frame.programs->sssBlur.get());
-                    glBindTextureUnit(0, resources.texture(d.colour));
-                    glBindTextureUnit(1, resources.texture(d.depthKey));
+                    glUseProgram(blurProgram);
+                    bindBlurInputs(resources, d);
                     const ScopedSssState state(frame, scissor, slotIndex);
-                    glEnablei(GL_BLEND, 1);
-                    glBlendFunci(1, GL_CONSTANT_COLOR, GL_ONE);
-                    glBlendColor(step.weight.r, step.weight.g, step.weight.b, 0.0f);
+                    // Irradiance: += w_i (RGB) x value; moments: += mean(w_i) x value (SssVariant.h).
+                    const auto accumulation = static_cast<GLuint>(1 + extraTargets);
+                    glEnablei(GL_BLEND, accumulation);
+                    glBlendFunci(accumulation, GL_CONSTANT_COLOR, GL_ONE);
+                    for (size_t k = 0; k < extraTargets; ++k) {
+                        glEnablei(GL_BLEND, accumulation + 1 + static_cast<GLuint>(k));
+                        glBlendFunci(accumulation + 1 + static_cast<GLuint>(k), GL_CONSTANT_ALPHA, GL_ONE);
+                    }
+                    glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
                     frame.drawFullscreenTriangle();
-                    glDisablei(GL_BLEND, 1);
+                    for (size_t k = 0; k <= extraTargets; ++k) glDisablei(GL_BLEND, accumulation + static_cast<GLuint>(k));
                 });
             current = vertical.out;
-            accumulated = vertical.accumulatedOut;
+            currentExtras = vertical.extrasOut;
+            chain.diffuse = vertical.accumulatedOut;
+            chain.extras = vertical.extrasAccumulatedOut;
         }
     }
-    return accumulated;
+    return chain;
+}
+
+graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                                  graph::TextureHandle irradiance) {
+    return addSssChain(graph, frame, gbuffer, irradiance, {}).diffuse;
 }
 
 }  // namespace dermis

@@ -6,6 +6,9 @@
 //   sss <profile> gN h  horizontal step of Gaussian N      \ per profile slot, per Gaussian;
 //   sss <profile> gN v  vertical step, += w_N x result      / each skipped by predicate when too narrow
 //
+// In the LEAN variants the same passes also blur the G-buffer's LEAN moments
+// (addSssChain); in variant c they are neither declared nor blurred.
+//
 // Every blur runs under the stencil test (its slot) and the slot's scissor.
 // With no SSS pixel on screen every pass is skipped and readers of the
 // result get the irradiance itself (passThrough).
@@ -13,12 +16,28 @@
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
 #include "render/FrameContext.h"
+#include "render/SssVariant.h"
+
+#include <vector>
 
 namespace dermis {
 
 // Returns the accumulated diffuse irradiance (what the composite reads).
 graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
                                   graph::TextureHandle irradiance);
+
+struct SssChain {
+    graph::TextureHandle diffuse;               // accumulated irradiance
+    std::vector<graph::TextureHandle> extras;   // accumulated extra targets, in the order given
+};
+
+// The same chain with extra targets (none, or the kLeanSssTargets LEAN
+// moments) blurred in the same passes with the same taps through multiple
+// render targets, and accumulated with one scalar weight per Gaussian
+// (include/SssBlur.glsl, "EXTRA TARGETS"). Pixels no blur touches keep their
+// values; with nothing to blur, readers get the inputs themselves.
+SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 
 constexpr int kAnySssPixel = -1;
 

@@ -44,6 +44,7 @@ struct FrameContext {
     int width = 0;
     int height = 0;
     Aov aov = Aov::Final;
+    bool lean = false;  // this frame carries LEAN moments (render/SssVariant.h, frameUsesLean); set by the renderer
 
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;

@@ -1,6 +1,7 @@
 #include "render/GpuScene.h"
 
 #include "core/Log.h"
+#include "lean/LeanBake.h"
 #include "scene/ModelLoader.h"
 
 #include <algorithm>
@@ -72,6 +73,22 @@ gl::Texture uploadImage(const Image& image) {
     return texture;
 }
 
+gl::Texture uploadMipChain(const std::vector<Image>& levels, GLenum internalFormat) {
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.get(), static_cast<GLsizei>(levels.size()), internalFormat, levels[0].width,
+                       levels[0].height);
+    for (size_t level = 0; level < levels.size(); ++level) {
+        const Image& image = levels[level];
+        glTextureSubImage2D(texture.get(), static_cast<GLint>(level), 0, 0, image.width, image.height, GL_RGBA,
+                            GL_FLOAT, image.texels.data());
+    }
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
 Result<GpuScene> GpuScene::create(const Scene& scene) {
     GpuScene gpuScene;
     for (const Character& character : scene.characters) {
@@ -83,7 +100,13 @@ Result<GpuScene> GpuScene::create(const Scene& scene) {
         gpu.name = character.name;
         gpu.mesh = uploadMesh(model->mesh);
         if (!model->albedoMap.empty()) gpu.albedoMap = uploadImage(model->albedoMap);
-        if (!model->normalMap.empty()) gpu.normalMap = uploadImage(model->normalMap);
+        if (!model->normalMap.empty()) {
+            gpu.normalMap = uploadImage(model->normalMap);
+            auto lean = bakeLeanMaps(model->normalMap);
+            if (!lean.ok()) return makeError(character.name, lean.error().what);
+            gpu.leanMap1 = uploadMipChain(lean->lean1, GL_RGBA16F);
+            gpu.leanMap2 = uploadMipChain(lean->lean2, GL_RG16F);
+        }
         gpu.source = &character;
         gpuScene.mCharacters.push_back(std::move(gpu));
     }

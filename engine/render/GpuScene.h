@@ -28,6 +28,11 @@ struct GpuCharacter {
     GpuMesh mesh;
     gl::Texture albedoMap;  // empty when the material has none
     gl::Texture normalMap;
+    // LEAN maps baked from the normal map (lean/LeanBake.h), empty without
+    // one: (B.x, B.y, M.xx, M.yy) RGBA16F and (M.xy, base variance) RG16F,
+    // with the baked mip chain.
+    gl::Texture leanMap1;
+    gl::Texture leanMap2;
     glm::mat4 worldFromObject{1.0f};
     Bounds worldBounds;
     const Character* source = nullptr;
@@ -51,5 +56,9 @@ private:
 
 // Uploads with a full mip chain; sRGB images get an sRGB internal format.
 gl::Texture uploadImage(const Image& image);
+
+// Uploads the given mip levels (level 0 first, each half the previous) as
+// they are, with trilinear filtering and wrapping like uploadImage.
+gl::Texture uploadMipChain(const std::vector<Image>& levels, GLenum internalFormat);
 
 }  // namespace dermis

@@ -1,6 +1,7 @@
 #include "render/Programs.h"
 
 #include "render/BeckmannTable.h"
+#include "render/SssVariant.h"
 
 #include <string>
 
@@ -35,6 +36,28 @@ Result<Programs> Programs::build() {
     Programs programs;
     for (const Entry& e : entries) {
         auto program = gl::buildProgram({e.vertex, e.fragment, defines});
+        if (!program.ok()) return program.error();
+        programs.*(e.member) = std::move(*program);
+    }
+    // The LEAN variants (render/SssVariant.h): the same shaders with their
+    // LEAN outputs, and the LEAN specular pass.
+    struct LeanEntry {
+        gl::Program Programs::*member;
+        const char* vertex;
+        const char* fragment;
+        gl::ShaderDefine define;
+    };
+    const std::string leanTargets = std::to_string(kLeanSssTargets);
+    const LeanEntry leanEntries[] = {
+        {&Programs::gbufferLean, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_LEAN", "1"}},
+        {&Programs::sssInitLean, "fullscreen.vert", "sss_init.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
+        {&Programs::sssBlurLean, "fullscreen.vert", "sss_blur.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
+        {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
+    };
+    for (const LeanEntry& e : leanEntries) {
+        std::vector<gl::ShaderDefine> leanDefines = defines;
+        if (!e.define.name.empty()) leanDefines.push_back(e.define);
+        auto program = gl::buildProgram({e.vertex, e.fragment, leanDefines});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }

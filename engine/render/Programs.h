@@ -26,6 +26,11 @@ struct Programs {
     gl::Program tsBlur;
     gl::Program tsGather;
 
+    gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
+    gl::Program sssInitLean;    // SSS chain with the moments as extra targets
+    gl::Program sssBlurLean;
+    gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp
+
     static Result<Programs> build();
 };
 

@@ -5,6 +5,7 @@
 #include "passes/AovPass.h"
 #include "passes/CompositePass.h"
 #include "passes/GBufferPass.h"
+#include "passes/LeanSpecularPass.h"
 #include "passes/LightingPass.h"
 #include "passes/ShadowPass.h"
 #include "passes/SsaoPass.h"
@@ -12,6 +13,7 @@
 #include "passes/TextureSpacePasses.h"
 #include "passes/TransmittancePass.h"
 #include "render/BeckmannTable.h"
+#include "render/SssVariant.h"
 #include "sss/EnergyTable.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -109,6 +111,7 @@ Status Renderer::planFrame(const FrameRequest& request) {
     mFrameContext.width = request.width;
     mFrameContext.height = request.height;
     mFrameContext.aov = request.aov;
+    mFrameContext.lean = frameUsesLean(mScene.settings);
     mFrameContext.sss = std::move(*plan);
     mFrameContext.lights = setupLights(mScene.lights, mGpuScene.worldBounds(), mScene.settings.shadow);
     // A shadowed light is a back light when it is behind some visible SSS character.
@@ -142,7 +145,7 @@ void Renderer::uploadFrameUniforms(const FrameRequest& request) {
     frame.shading = glm::vec4(settings.exposure, settings.sss.mix, float(mFrameContext.lights.lightCount),
                               float(int(request.aov)));
     frame.features = glm::vec4(settings.energyConservation ? 1.0f : 0.0f, mView.pixelsPerMetreAtUnitDepth(),
-                               settings.ssao.strength, 0.0f);
+                               settings.ssao.strength, request.materialMipBias);
     glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
     glNamedBufferSubData(mLightUniforms.get(), 0, sizeof(gpu::LightsBlock), &mFrameContext.lights.block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_FRAME, mFrameUniforms.get());
@@ -163,8 +166,9 @@ void Renderer::uploadSssUniforms() {
         const Character& character = mScene.characters[c];
         const float radiusM = character.ssao.radiusM > 0.0f ? character.ssao.radiusM : ssao.radiusM;
         const int samples = character.ssao.samples > 0 ? character.ssao.samples : ssao.samples;
+        const bool lean = c < mGpuScene.characters().size() && mGpuScene.characters()[c].leanMap1.isValid();
         characters.characters[c + 1].params =
-            glm::vec4(float(mFrameContext.sss.slotOfCharacter[c]), radiusM, float(samples), 0.0f);
+            glm::vec4(float(mFrameContext.sss.slotOfCharacter[c]), radiusM, float(samples), lean ? 1.0f : 0.0f);
     }
     glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
 
@@ -200,18 +204,31 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
     const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, frame, mShadowCache);
     const GBuffer gbuffer = addGBufferPass(graph, frame);
     const graph::TextureHandle ambientOcclusion = addSsaoPasses(graph, frame, gbuffer, white);
-    const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion);
+    const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion, gbuffer.hasLean());
 
-    if (request.aov == Aov::Final || request.aov == Aov::Diffuse) {
+    // In the LEAN variants the specular comes after the SSS chain, which blurs the moments.
+    if (request.aov == Aov::Final || request.aov == Aov::Diffuse || (request.aov == Aov::Specular && gbuffer.hasLean())) {
         const graph::TextureHandle irradiance =
             addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
-        const graph::TextureHandle diffuse =
-            mScene.settings.mode == "ts"
-                ? addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance)
-                : addSssPasses(graph, frame, gbuffer, irradiance);
+        graph::TextureHandle diffuse;
+        graph::TextureHandle specular = lighting.specular;
+        if (mScene.settings.mode == "ts") {
+            diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance);
+        } else {
+            const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());
+            diffuse = chain.diffuse;
+            if (gbuffer.hasLean()) {
+                specular = addLeanSpecularPass(
+                    graph, frame, {gbuffer, chain.extras[0], chain.extras[1], lighting.visibility, lighting.specular});
+            }
+        }
         if (request.aov == Aov::Final) {
-            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular);
+            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, specular);
             graph.markOutput(addTonemapPass(graph, frame, hdr, output));
+            return;
+        }
+        if (request.aov == Aov::Specular) {
+            graph.markOutput(addAovPass(graph, frame, {gbuffer, {}, specular, {}}, output));
             return;
         }
         graph.markOutput(addAovPass(graph, frame, {gbuffer, diffuse, {}, {}}, output));

@@ -26,6 +26,9 @@ struct FrameRequest {
     int width = 640;
     int height = 360;
     Aov aov = Aov::Final;
+    // Added to the mip level of material maps (albedo, normal, LEAN); tests
+    // force level 0 with a large negative bias for supersampled references.
+    float materialMipBias = 0.0f;
 };
 
 // Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).

@@ -2,7 +2,7 @@
 
 namespace dermis {
 
-bool sssUsesLean(const SssSettings& settings) { return settings.variant != "c"; }
+bool frameUsesLean(const RenderSettings& settings) { return settings.mode == "ss" && settings.sss.variant != "c"; }
 
 std::string sssBlurEdges(const SssSettings& settings) {
     if (settings.blur != "variant") return settings.blur;

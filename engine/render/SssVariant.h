@@ -14,12 +14,18 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <string>
 
 namespace dermis {
 
-// Whether the frame carries LEAN moments (G-buffer targets, their blur, the LEAN specular pass).
-bool sssUsesLean(const SssSettings& settings);
+// The LEAN moments the SSS chain blurs with the irradiance as extra targets:
+// the G-buffer's "lean moments" (RGBA16F) and "lean cross moment" (R16F).
+constexpr size_t kLeanSssTargets = 2;
+
+// Whether the frame carries LEAN moments (G-buffer targets, their blur, the
+// LEAN specular pass): variants lcb and lbb of the screen-space mode.
+bool frameUsesLean(const RenderSettings& settings);
 
 // The blur's edge handling: "bilateral", "control" or "fetch-only".
 std::string sssBlurEdges(const SssSettings& settings);

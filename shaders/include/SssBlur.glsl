@@ -24,7 +24,30 @@
 //      engine/sss/BlurKernel.cpp), the direction, this step's standard
 //      deviation in mm, the edge mode and the profile slot.
 //   4. Bind the colour input to unit 0 and the depth key (G-buffer target 2,
-//      R32UI) to unit 1.
+//      R32UI) to unit 1, and extra target k to unit 2 + k.
+//   5. Outputs: location 0 the blurred colour, 1..E the blurred extra targets
+//      (E = SSS_EXTRA_TARGETS), E + 1 the colour's accumulation, E + 2 ..
+//      2E + 1 the extra targets' accumulations. A horizontal pass attaches
+//      0..E only; a vertical one all 2E + 2, blending the extra
+//      accumulations with glBlendFunci(i, GL_CONSTANT_ALPHA, GL_ONE) and the
+//      per-Gaussian scalar weight in the blend colour's alpha.
+//
+// EXTRA TARGETS (the LEAN moments, include/Lean.glsl)
+//   Every extra target is blurred with the very taps and weights of the
+//   colour, in the same draw (seed 001 blurred four textures in four passes,
+//   about 4x the cost of the control blur; here the taps' depth keys and
+//   weights are computed once). Their accumulation weight per Gaussian is one
+//   scalar, the mean of the Gaussian's RGB weights (engine/render/SssVariant.h),
+//   because:
+//   - the profile's weights are normalised per channel, so the means also
+//     sum to one with the identity weight: the accumulated moments are a
+//     convex combination of moments, i.e. the moments of a mixture, whose
+//     covariance M - B B^T is positive semi-definite (a per-channel or
+//     per-target weight would not be: B and M must come from one mixture);
+//   - every step above is itself convex (bilateral: renormalised weights;
+//     control: a lerp towards the centre), so nothing leaves that set;
+//   - the specular lobe is white: no channel of the profile has a claim on
+//     it, and the mean is the profile's average reach.
 //
 // WIDTH (seed 000 §2.2.4; DESIGN.md pass 5)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
@@ -57,7 +80,8 @@
 //
 // CONFIGURATION (define before including)
 //   SSS_EXTRA_TARGETS  number of additional RGBA targets blurred with the
-//                      same taps (LEAN moments); 0..3, default 0.
+//                      same taps (LEAN moments); 0..3, default 0. (Up to 8
+//                      attachments: 2 + 2 x 3.)
 #ifndef DERMIS_SSS_BLUR_GLSL
 #define DERMIS_SSS_BLUR_GLSL
 
@@ -68,12 +92,31 @@
 #error "SSS_EXTRA_TARGETS must be 0..3"
 #endif
 
-// The blurred value of `colour` at `pixel` along uSssBlur.step.xy. Returns
-// the centre when the pixel is not on this profile (stencil keeps that from
-// happening; this is the belt to its braces).
-vec4 sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
+#define SSS_VALUES (1 + SSS_EXTRA_TARGETS)
+#if SSS_EXTRA_TARGETS > 0
+layout(binding = 2) uniform sampler2D uSssExtra[SSS_EXTRA_TARGETS];
+#endif
+
+// The colour ([0]) and the extra targets ([1..]) at one pixel.
+struct SssValues {
+    vec4 v[SSS_VALUES];
+};
+
+SssValues sssFetch(sampler2D colour, ivec2 pixel) {
+    SssValues values;
+    values.v[0] = texelFetch(colour, pixel, 0);
+#if SSS_EXTRA_TARGETS > 0
+    for (int k = 0; k < SSS_EXTRA_TARGETS; ++k) values.v[k + 1] = texelFetch(uSssExtra[k], pixel, 0);
+#endif
+    return values;
+}
+
+// The blurred values at `pixel` along uSssBlur.step.xy. Returns the centre
+// when the pixel is not on this profile (stencil keeps that from happening;
+// this is the belt to its braces).
+SssValues sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
-    vec4 centre = texelFetch(colour, pixel, 0);
+    SssValues centre = sssFetch(colour, pixel);
     uint centreKey = texelFetch(depthKey, pixel, 0).r;
     float viewDepthM = viewDepthFromKey(centreKey);
     if (slotFromKey(centreKey) != int(uSssBlur.edges.w) || viewDepthM <= 0.0) return centre;
@@ -86,14 +129,17 @@ vec4 sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
     float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
     float controlScale = uSssBlur.edges.z;
 
-    vec4 sum = vec4(0.0);
+    SssValues sum;
+    for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
     float weightSum = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = direction * (uSssBlur.kernel[i].x * sigmaPx);
         ivec2 tapPixel = clamp(pixel + ivec2(round(offset)), ivec2(0), size - 1);
         float weight = uSssBlur.kernel[i].y;
         if (fetchOnly) {
-            sum += weight * vec4(texelFetch(colour, tapPixel, 0).rgb, float(texelFetch(depthKey, tapPixel, 0).r & 255u));
+            SssValues tap = sssFetch(colour, tapPixel);
+            tap.v[0].a = float(texelFetch(depthKey, tapPixel, 0).r & 255u);
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * tap.v[k];
             weightSum += weight;
             continue;
         }
@@ -102,16 +148,30 @@ vec4 sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
         if (bilateral) {
             if (!sameProfile) continue;
             weight *= exp(-distanceMm * distanceMm * inverseTwoSigmaSquared);
-            sum += weight * texelFetch(colour, tapPixel, 0);
+            SssValues tap = sssFetch(colour, tapPixel);
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * tap.v[k];
             weightSum += weight;
         } else {
-            vec4 tap = sameProfile ? texelFetch(colour, tapPixel, 0) : centre;
             float toCentre = min(controlScale * distanceMm, 1.0);
-            sum += weight * (toCentre >= 1.0 ? centre : mix(tap, centre, toCentre));
+            if (sameProfile && toCentre < 1.0) {
+                SssValues tap = sssFetch(colour, tapPixel);
+                for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * mix(tap.v[k], centre.v[k], toCentre);
+            } else {
+                for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * centre.v[k];
+            }
             weightSum += weight;
         }
     }
-    return weightSum > 0.0 ? sum / weightSum : centre;
+    if (!(weightSum > 0.0)) return centre;
+    for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] /= weightSum;
+    return sum;
+}
+
+// Keeps a signed value (a LEAN moment) storable in fp16 and free of NaN, so
+// one bad texel cannot spread through the chain.
+vec4 sssSanitizeSigned(vec4 value) {
+    value = mix(value, vec4(0.0), isnan(value));
+    return clamp(value, vec4(-kHalfMax), vec4(kHalfMax));
 }
 
 #endif

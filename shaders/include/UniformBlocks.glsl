@@ -62,7 +62,7 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance
     vec4 shading;           // x: exposure, y: pre-scatter mix ratio, z: light count, w: output AOV id
-    vec4 features;          // x: energy conservation on (1/0), y: pixels per metre at 1 m view depth (vertical), z: SSAO strength
+    vec4 features;          // x: energy conservation on (1/0), y: pixels per metre at 1 m view depth (vertical), z: SSAO strength, w: mip bias of material maps
 } DERMIS_BLOCK_END(uFrame)
 
 struct GpuLight {
@@ -89,7 +89,7 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).
 struct CharacterParams {
-    vec4 params;  // x: profile slot (0 = none), y: SSAO radius (m), z: SSAO samples, w: unused
+    vec4 params;  // x: profile slot (0 = none), y: SSAO radius (m), z: SSAO samples, w: has LEAN maps (1/0): the LEAN variants take its specular from passes/LeanSpecularPass
 };
 
 DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {

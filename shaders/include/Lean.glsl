@@ -1,0 +1,183 @@
+// Lean.glsl: LEAN mapping through the deferred SSS (seed 001; Olano & Baker
+// 2010). This header is its own manual.
+//
+// WHAT IT DOES
+//   A LEAN map texel holds the bump centre B = n.xy / n.z and the second
+//   moments M = (B.x^2, B.y^2, B.x B.y) of a tangent-space normal map
+//   (engine/lean/LeanBake.h). Both are linear, so any average of texels (mip
+//   levels, trilinear filtering, a blur) is exact, and the slope covariance of
+//   what was averaged is Sigma = M - B B^T (Olano & Baker eq. 9). Adding the
+//   base roughness (Beckmann m: slope variance m^2/2 per axis) gives a 2-D
+//   Gaussian of microfacet slopes; evaluated at the half vector's slope and
+//   normalised like Beckmann it is the specular lobe (Olano & Baker §3.2).
+//
+// ONE SPACE (seed 001 §4.3.1 and §4.3.3)
+//   The blur averages the moments of neighbouring pixels, whose tangent
+//   planes differ, so the G-buffer stores them relative to one common plane:
+//   the view plane (seed 001 §4.3.1), taken per pixel perpendicular to the eye
+//   ray. The frame of pixel p is the rotation of view space that takes +z onto
+//   V (the unit vector to the eye) by the smallest angle:
+//     X = (1 - V.x^2/(1+V.z), -V.x V.y/(1+V.z), -V.x)
+//     Y = (-V.x V.y/(1+V.z), 1 - V.y^2/(1+V.z), -V.y)        Z = V
+//   (Rodrigues' formula for the rotation from +z to V). For an orthographic
+//   camera, and at the image centre, this is exactly the view plane. Why not
+//   view z everywhere: with perspective, a visible facet has n.V > 0 but can
+//   have n.z <= 0 near an off-axis silhouette, and every half vector has
+//   h.V > 0 but not always h.z > 0, so slopes against z are infinite or
+//   undefined exactly where rim lights put their highlights; against V they
+//   are finite. Neighbouring frames differ by the pixels' angular spacing
+//   (under a degree across the widest skin Gaussian at 1280x720), a slope
+//   error of about 0.01, well below the lobes' widths. The composite rebuilds
+//   the same frame from the pixel's position, so both ends agree (§4.3.3).
+//
+// THE PROJECTION (G-buffer, leanProject)
+//   A tangent slope b is the facet normal n(b) = b.x T + b.y Bt + N (view
+//   space, T/Bt/N the tangent frame). In the pixel frame its slope is
+//     s(b) = (n.X, n.Y) / (n.V),
+//   a projective map, not a linear one, so the moments are carried through
+//   its first-order expansion at the mean (the delta method):
+//     B' = s(B),   J = ds/db at B = [a.xy - B' a.z, c.xy - B' c.z] / (n(B).V)
+//   with a = T and c = Bt in frame coordinates, and
+//     Sigma' = J (Sigma_t + base) J^T,   M' = Sigma' + B' B'^T.
+//   The base roughness is added before the projection, in the tangent plane
+//   where it is defined, so a flat tilted surface projects to the Beckmann
+//   lobe of that tilt. n(B).V is kept >= kLeanMinCos |n(B)|, so a mean
+//   normal facing away (interpolated normals at silhouettes) stays finite.
+//
+// THE LOBE (leanSpecular)
+//   With P(s) = exp(-(s-B')^T Sigma'^-1 (s-B') / 2) / (2 pi sqrt(det Sigma'))
+//   the slope density, the density of facet normals per solid angle is
+//   P(s_h) / (h.V)^3 (slope-to-solid-angle Jacobian), so the distribution
+//   normalised over the mean plane N_m = normalize(B'.x, B'.y, 1) is
+//     D(h) = P(s_h) / ((h.V)^3 (h.N_m)),   integral of D (h.N_m) dw = 1.
+//   For a flat surface facing the camera this is Beckmann exactly. The BRDF
+//   times the cosine is the Kelemen/Szirmay-Kalos form of include/Specular.glsl,
+//   rho_s pi D F / |L + V|^2 (N_m.L), with Schlick's Fresnel (F0 = 0.028), so
+//   LEAN and KS agree on a flat surface and differ only where bumps are
+//   filtered. (N_m.L)/(h.N_m) <= |L + V| <= 2 because N_m.V > 0 always.
+//
+// THE CLAMP (leanClampCovariance)
+//   Filtering in fp16 and averaging across pixels can leave Sigma slightly
+//   indefinite; a bad texel can be NaN or Inf. Sigma is rebuilt from its
+//   eigen-decomposition with both eigenvalues clamped to
+//   [kLeanMinVariance, kLeanMaxVariance]; a non-finite or absurd entry
+//   gives the widest lobe (variance kLeanMaxVariance, nearly no highlight),
+//   a non-finite B gives a slope of 0. The lobe is then finite and >= 0 for
+//   every input.
+//
+// G-BUFFER PACKING (engine/passes/GBufferPass.h)
+//   lean moments  RGBA16F  (B'.x, B'.y, M'.xx, M'.yy)
+//   lean cross    R16F     M'.xy
+//   fp16 keeps Sigma' to about 1e-3 of M'; Sigma' grows with the tilt as
+//   fast as B'B'^T does, so the relative error stays small.
+//
+// LIMITS
+//   kLeanMinVariance  eigenvalue floor, slope^2 (1e-4: Beckmann m = 0.014,
+//                     smoother than any skin; keeps 1/sqrt(det) finite)
+//   kLeanMaxVariance  eigenvalue ceiling, slope^2 (1e4; fp16 holds M')
+//   kLeanMinCos       floor on the mean normal's n.V / |n| (1/16, the bake's
+//                     n.z floor too), so |B'| <= ~16
+#ifndef DERMIS_LEAN_GLSL
+#define DERMIS_LEAN_GLSL
+
+#include "Specular.glsl"
+
+const float kLeanMinVariance = 1e-4;
+const float kLeanMaxVariance = 1e4;
+const float kLeanMinCos = 0.0625;
+const float kLeanMaxSlope = sqrt(1.0 - kLeanMinCos * kLeanMinCos) / kLeanMinCos;
+
+// The pixel's frame: rows X, Y, V, so frame * w = (w.X, w.Y, w.V).
+mat3 leanFrame(vec3 V) {
+    float k = 1.0 / (1.0 + max(V.z, -0.999));
+    vec3 X = vec3(1.0 - V.x * V.x * k, -V.x * V.y * k, -V.x);
+    vec3 Y = vec3(-V.x * V.y * k, 1.0 - V.y * V.y * k, -V.y);
+    return transpose(mat3(X, Y, V));
+}
+
+// Covariance (xx, yy, xy) from first and second moments.
+vec3 leanCovariance(vec2 B, vec3 M) { return vec3(M.x - B.x * B.x, M.y - B.y * B.y, M.z - B.x * B.y); }
+
+// Symmetric 2x2 (xx, yy, xy) with both eigenvalues clamped into
+// [kLeanMinVariance, kLeanMaxVariance]; non-finite or absurd entries give
+// the widest isotropic lobe.
+vec3 leanClampCovariance(vec3 S) {
+    // abs(NaN) <= x and abs(Inf) <= x are false: one test catches both.
+    if (!all(lessThanEqual(abs(S), vec3(1e6)))) return vec3(kLeanMaxVariance, kLeanMaxVariance, 0.0);
+    float mean = 0.5 * (S.x + S.y);
+    float halfDifference = 0.5 * (S.x - S.y);
+    float radius = sqrt(halfDifference * halfDifference + S.z * S.z);
+    // (cos 2t, sin 2t) of the major axis; any axis when isotropic.
+    vec2 axis = radius > 1e-12 ? vec2(halfDifference, S.z) / radius : vec2(1.0, 0.0);
+    float major = clamp(mean + radius, kLeanMinVariance, kLeanMaxVariance);
+    float minor = clamp(mean - radius, kLeanMinVariance, kLeanMaxVariance);
+    float centre = 0.5 * (major + minor);
+    float spread = 0.5 * (major - minor);
+    return vec3(centre + spread * axis.x, centre - spread * axis.x, spread * axis.y);
+}
+
+// A slope with NaN replaced by 0 and the magnitude kept below kLeanMaxSlope.
+vec2 leanSafeSlope(vec2 B) {
+    B = mix(B, vec2(0.0), isnan(B));
+    return clamp(B, vec2(-kLeanMaxSlope), vec2(kLeanMaxSlope));
+}
+
+// Tangent-space moments (B, M = (xx, yy, xy)) plus the base slope variance,
+// to the pixel frame of V. TBN columns: view-space tangent, bitangent,
+// normal. Outputs are what the G-buffer stores.
+void leanProject(vec2 B, vec3 M, float baseVariance, mat3 TBN, vec3 V, out vec2 viewB, out vec3 viewM) {
+    B = leanSafeSlope(B);
+    vec3 S = leanClampCovariance(leanCovariance(B, M) + vec3(baseVariance, baseVariance, 0.0));
+    mat3 frame = leanFrame(V) * TBN;  // columns: T, Bt, N in frame coordinates
+    vec3 n = frame * vec3(B, 1.0);
+    float lengthN = length(n);
+    float depth = max(n.z, kLeanMinCos * lengthN);
+    viewB = n.xy / depth;
+    mat2 J = mat2((frame[0].xy - viewB * frame[0].z) / depth, (frame[1].xy - viewB * frame[1].z) / depth);
+    mat2 projected = J * mat2(S.x, S.z, S.z, S.y) * transpose(J);
+    vec3 viewS = leanClampCovariance(vec3(projected[0][0], projected[1][1], projected[0][1]));
+    viewB = leanSafeSlope(viewB);
+    viewM = viewS + vec3(viewB * viewB, viewB.x * viewB.y);
+}
+
+// The mean view-space normal of tangent-space moments: the facet normal at B.
+vec3 leanMeanNormal(vec2 B, mat3 TBN) { return TBN * vec3(leanSafeSlope(B), 1.0); }
+
+// LEAN specular times N_m.L for pixel-frame moments (B, M), unit view-space L
+// and V, specular intensity rhoS: rho_s pi D F / |L + V|^2 (N_m.L), >= 0 and
+// finite for every input.
+float leanSpecular(vec2 B, vec3 M, vec3 L, vec3 V, float rhoS) {
+    B = leanSafeSlope(B);
+    vec3 S = leanClampCovariance(leanCovariance(B, M));
+    vec3 l = leanFrame(V) * L;  // the pixel frame: v = (0, 0, 1)
+    vec3 h = l + vec3(0.0, 0.0, 1.0);
+    float hLengthSquared = dot(h, h);
+    if (hLengthSquared < 1e-6) return 0.0;
+    vec3 H = h * inversesqrt(hLengthSquared);
+    vec3 meanNormal = normalize(vec3(B, 1.0));
+    float nDotL = dot(meanNormal, l);
+    float nDotH = dot(meanNormal, H);
+    if (nDotL <= 0.0 || nDotH < 1e-3) return 0.0;
+    // Back to the mean plane: its frame (rows T_m, B_m, N_m) is the smallest
+    // rotation from the pixel frame's z onto N_m, and K = ds/du at u = 0 is
+    // the Jacobian of the slope map from that plane to the view plane, the
+    // inverse of the G-buffer's linearisation when nothing was blurred.
+    mat3 toMean = leanFrame(meanNormal);
+    mat3 axes = transpose(toMean);  // columns T_m, B_m, N_m in the pixel frame
+    mat2 K = mat2((axes[0].xy - B * axes[0].z) / meanNormal.z, (axes[1].xy - B * axes[1].z) / meanNormal.z);
+    mat2 inverseK = inverse(K);  // det K = 1 / N_m.z^3 >= 1: always invertible
+    mat2 meanCovariance = inverseK * mat2(S.x, S.z, S.z, S.y) * transpose(inverseK);
+    vec3 Sm = leanClampCovariance(vec3(meanCovariance[0][0], meanCovariance[1][1], meanCovariance[0][1]));
+    vec3 hm = toMean * H;  // hm.z = nDotH
+    vec2 u = hm.xy / hm.z;
+    float determinant = max(Sm.x * Sm.y - Sm.z * Sm.z, kLeanMinVariance * kLeanMinVariance);
+    float exponent = (u.x * u.x * Sm.y - 2.0 * u.x * u.y * Sm.z + u.y * u.y * Sm.x) / determinant;
+    float density = exp(-0.5 * max(exponent, 0.0)) / (2.0 * kPi * sqrt(determinant));
+    float nDotH2 = nDotH * nDotH;
+    float D = density / (nDotH2 * nDotH2);
+    float F = fresnelSchlick(H, vec3(0.0, 0.0, 1.0), kSkinF0);
+    float value = rhoS * kPi * D * F / hLengthSquared * nDotL;
+    return value >= 0.0 && value <= kHalfMax ? value : (value > kHalfMax ? kHalfMax : 0.0);
+}
+
+#endif
