@@ -32,6 +32,9 @@ const char* const kHelp =
     "  --timings FILE      also write the timings as JSON\n"
     "  --mode ss|ts        screen-space or texture-space subsurface scattering: the same as\n"
     "                      --set mode=ss|ts\n"
+    "  --variant c|lcb|lbb seed 001's variants of the screen-space frame: c (Jimenez: control\n"
+    "                      blur, KS specular), lcb (LEAN, control blur), lbb (LEAN, bilateral\n"
+    "                      blur): the same as --set sss.variant=V --set sss.blur=variant\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable.\n"
     "                      PATH is dot-separated from the root, or from \"settings\" when\n"
     "                      it does not start with a root key: --set sss.taps=13\n"
@@ -48,7 +51,7 @@ const char* const kHelp =
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode"},
+    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode", "variant"},
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
@@ -79,6 +82,15 @@ int runRender(const std::vector<std::string>& rawArgs) {
         const std::string mode = args->get("mode", "");
         if (mode != "ss" && mode != "ts") return usageError(makeError("--mode " + mode, "expected ss or ts"));
         overrides.push_back("mode=" + mode);
+    }
+    if (args->has("variant")) {
+        const std::string variant = args->get("variant", "");
+        if (variant != "c" && variant != "lcb" && variant != "lbb") {
+            return usageError(makeError("--variant " + variant, "expected c, lcb or lbb"));
+        }
+        // The variant's blur too, whatever the scene file names.
+        overrides.push_back("sss.variant=" + variant);
+        overrides.push_back("sss.blur=variant");
     }
     auto session = Session::open(scenePath, overrides, *backend, args->flags.count("gl-debug") > 0);
     if (!session.ok()) return failure(session.error());
