@@ -147,7 +147,7 @@ TEST_F(Lean, SubPixelBumpsKeepTheSupersampledHighlight) {
     const std::string scene = writeBumpyPlaneScene(dir);
 
     load(scene, {"sss.variant=c"});
-    mRenderer->renderFrame({kWidth * kSupersample, kHeight * kSupersample, Aov::Specular, -16.0f});
+    ASSERT_TRUE(mRenderer->renderFrame({kWidth * kSupersample, kHeight * kSupersample, Aov::Specular, -16.0f}).ok());
     auto supersampled = mRenderer->readOutput();
     ASSERT_TRUE(supersampled.ok());
     const Image reference = boxDownsample(*supersampled, kSupersample);
@@ -189,4 +189,130 @@ TEST_F(Lean, FlatSurfaceMatchesTheKelemenSzirmayKalosLobe) {
     std::printf("[ measured ] flat plane, LEAN vs KS: relative L1 %.4f, peak ratio %.3f, energy ratio %.3f\n",
                 c.relativeL1, c.peakRatio, c.sumRatio);
     EXPECT_LT(c.relativeL1, 0.05);
+}
+
+namespace {
+
+// A LEAN map texture made of 8x8-texel cells of hostile values, uploaded as
+// 32-bit floats so NaN and Inf survive (image loading would sanitise them).
+gl::Texture hostileLeanTexture(bool first) {
+    constexpr int kSize = 64;
+    const float nan = std::nanf("");
+    const float inf = INFINITY;
+    // (B.x, B.y, M.xx, M.yy) / (M.xy, base variance): NaN, Inf, -Inf, huge,
+    // negative variance, indefinite (|M.xy| > sqrt(M.xx M.yy)), a steep but
+    // valid slope, and ordinary values.
+    const glm::vec4 cells1[] = {{nan, 0.1f, 0.2f, nan},  {inf, -inf, inf, 1.0f}, {0.0f, 0.0f, -inf, -5.0f},
+                                {1e30f, -1e30f, 1e30f, 1e30f}, {0.5f, 0.5f, -2.0f, 0.1f}, {0.0f, 0.0f, 1.0f, 1.0f},
+                                {40.0f, -40.0f, 1600.0f, 1600.0f}, {0.1f, -0.2f, 0.02f, 0.05f}};
+    const glm::vec4 cells2[] = {{nan, nan, 0.0f, 1.0f}, {inf, -1.0f, 0.0f, 1.0f},  {-inf, 0.0f, 0.0f, 1.0f},
+                                {1e30f, 1e30f, 0.0f, 1.0f}, {0.0f, -3.0f, 0.0f, 1.0f}, {50.0f, 0.0f, 0.0f, 1.0f},
+                                {-1600.0f, 0.0f, 0.0f, 1.0f}, {-0.02f, 0.01f, 0.0f, 1.0f}};
+    std::vector<glm::vec4> texels(static_cast<size_t>(kSize * kSize));
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const size_t cell = static_cast<size_t>((x / 8 + y / 8) % 8);
+            texels[static_cast<size_t>(y * kSize + x)] = first ? cells1[cell] : cells2[cell];
+        }
+    }
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.get(), 1, GL_RGBA32F, kSize, kSize);
+    glTextureSubImage2D(texture.get(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, texels.data());
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
+// Two skin planes 2 mm apart in depth, half overlapping, seen from above: the
+// blur crosses the depth edge (the bilateral weight there is exp(-2) of a
+// flat tap's) and mixes hostile moments with ordinary ones.
+std::string writeDepthEdgeScene(const test::TempDir& dir) {
+    Image flat;
+    flat.width = flat.height = 4;
+    flat.texels.assign(16, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+    EXPECT_TRUE(saveImage(dir.file("flat.png"), flat).ok());
+    test::writeTextFile(dir.file("edge.json"), R"({
+      "camera": {"position_m": [0, 0.25, 0.08], "target_m": [0, 0, 0], "vertical_fov_deg": 30, "near_m": 0.01, "far_m": 2},
+      "lights": [{"type": "directional", "direction": [0.3, -1, -0.4], "intensity": 2, "shadow": true},
+                 {"type": "point", "position_m": [0.05, 0.1, 0.05], "intensity": 0.05, "shadow": false}],
+      "characters": [
+        {"name": "hostile", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.1},
+         "material": {"normal_map": "flat.png", "roughness": 0.2, "rho_s": 1, "profile": "skin"}},
+        {"name": "near", "mesh": {"procedural": "plane"}, "transform": {"translation_m": [0.05, 0.002, 0], "scale": 0.1},
+         "material": {"normal_map": "flat.png", "roughness": 0.2, "rho_s": 1, "profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0.1, 0.1, 0.1], "sss": {"width_scale": 4}}
+    })");
+    return dir.file("edge.json");
+}
+
+struct TargetAudit {
+    size_t nonFinite = 0;
+    size_t leanTargetsWritten = 0;
+    std::string firstBad;
+};
+
+// Reads back every float texture every pass writes and counts non-finite texels.
+void auditEveryTarget(Renderer& renderer, TargetAudit& audit) {
+    renderer.setPassInspector([&audit](std::string_view pass, std::string_view texture, GLuint name,
+                                       const graph::TextureDesc& desc) {
+        if (texture.find("lean") != std::string_view::npos) ++audit.leanTargetsWritten;
+        if (isDepthFormat(desc.format) || isIntegerFormat(desc.format)) return;
+        std::vector<glm::vec4> texels(static_cast<size_t>(desc.width) * desc.height);
+        glGetTextureImage(name, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)),
+                          texels.data());
+        for (const glm::vec4& t : texels) {
+            if (std::isfinite(t.r) && std::isfinite(t.g) && std::isfinite(t.b) && std::isfinite(t.a)) continue;
+            if (audit.nonFinite++ == 0) audit.firstBad = std::string(pass) + " -> " + std::string(texture);
+        }
+    });
+}
+
+}  // namespace
+
+// DESIGN.md, "Numerical stability": a LEAN covariance that is not positive
+// definite after filtering, NaN and Inf texels, and the blur across depth
+// edges must never make a NaN, an Inf or a negative lobe anywhere.
+TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
+    test::TempDir dir;
+    const std::string scene = writeDepthEdgeScene(dir);
+    for (const char* variant : {"lbb", "lcb"}) {
+        load(scene, {std::string("sss.variant=") + variant});
+        GpuCharacter& hostile = mRenderer->gpuScene().characters()[0];
+        hostile.leanMap1 = hostileLeanTexture(true);
+        hostile.leanMap2 = hostileLeanTexture(false);
+        TargetAudit audit;
+        auditEveryTarget(*mRenderer, audit);
+        for (Aov aov : {Aov::Final, Aov::Specular, Aov::Diffuse}) {
+            const Image image = render(aov, 160, 90);
+            EXPECT_EQ(test::countNonFinite(image), 0u) << variant << " " << aovName(aov);
+            float lowest = 0.0f, highest = 0.0f;
+            for (const glm::vec4& t : image.texels) {
+                lowest = std::min({lowest, t.r, t.g, t.b});
+                highest = std::max({highest, t.r, t.g, t.b});
+            }
+            EXPECT_GE(lowest, 0.0f) << variant << " " << aovName(aov);
+            if (aov == Aov::Specular) {
+                std::printf("[ measured ] %s, hostile moments: specular in [%g, %g]\n", variant, lowest, highest);
+                EXPECT_GT(highest, 0.0f);  // the ordinary cells still shine
+            }
+        }
+        EXPECT_EQ(audit.nonFinite, 0u) << variant << ": first in " << audit.firstBad;
+        EXPECT_GT(audit.leanTargetsWritten, 0u);
+    }
+}
+
+// Variant c is the control: the graph declares no LEAN target, so none is
+// allocated, written or blurred.
+TEST_F(Lean, ControlVariantWritesNoLeanTarget) {
+    test::TempDir dir;
+    load(writeDepthEdgeScene(dir), {"sss.variant=c"});
+    TargetAudit audit;
+    auditEveryTarget(*mRenderer, audit);
+    const Image image = render(Aov::Final, 160, 90);
+    EXPECT_EQ(test::countNonFinite(image), 0u);
+    EXPECT_EQ(audit.leanTargetsWritten, 0u);
+    EXPECT_EQ(pass("lean specular"), nullptr);
 }
