@@ -118,6 +118,8 @@ HighlightComparison compareHighlights(const Image& image, const Image& reference
 // About 32 texels of the 2048^2 bump map per pixel (8-16 texel periods:
 // several bumps in every pixel, smooth enough that bilinear reconstruction
 // keeps their slopes); the reference is 1280x720.
+double luminanceOf(const glm::vec4& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
 constexpr int kWidth = 160;
 constexpr int kHeight = 90;
 constexpr int kSupersample = 8;
@@ -315,4 +317,104 @@ TEST_F(Lean, ControlVariantWritesNoLeanTarget) {
     EXPECT_EQ(test::countNonFinite(image), 0u);
     EXPECT_EQ(audit.leanTargetsWritten, 0u);
     EXPECT_EQ(pass("lean specular"), nullptr);
+}
+
+namespace {
+
+// The procedural head facing the camera in front of a bright skin backdrop
+// 4 cm behind its widest section. Only a backdrop of the same profile can
+// leak: another profile, an opaque object or the empty background is
+// rejected by the depth key's slot in every blur.
+std::string writeBackdropScene(const test::TempDir& dir) {
+    test::writeTextFile(dir.file("backdrop.json"), R"({
+      "camera": {"position_m": [0, 0.02, 0.5], "target_m": [0, 0.02, 0], "vertical_fov_deg": 35, "near_m": 0.05, "far_m": 5},
+      "lights": [{"type": "directional", "direction": [-0.3, -0.2, -1], "intensity": 2, "shadow": true}],
+      "characters": [
+        {"name": "head", "mesh": {"procedural": "head"}, "material": {"procedural": true, "profile": "skin"}},
+        {"name": "backdrop", "mesh": {"procedural": "plane"},
+         "transform": {"translation_m": [0, 0, -0.04], "rotation_deg": [90, 0, 0], "scale": 0.8},
+         "material": {"albedo": [1, 1, 1], "roughness": 0.5, "rho_s": 0, "profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0, 0, 0], "ssao": {"enabled": false}, "transmittance": {"enabled": false}}
+    })");
+    return dir.file("backdrop.json");
+}
+
+}  // namespace
+
+// Seed 001 §5.1.1: Jimenez's blur (C) lets the background bleed into the
+// object and leaves a halo; the bilateral blur (LBB) does not. The leak is
+// the backdrop's share of the head's silhouette pixels: the diffuse with the
+// backdrop white minus with it black (the blur is linear), over the head's
+// unblurred diffuse there. Unblurred, it is exactly 0. C uses Jimenez's lerp
+// strength: SeparableSSS (2012) lerps a tap to the centre by
+// saturate(300 sssWidth d_proj |dz|), about 0.01 per mm for his 0.012 m
+// width at this field of view (d_proj = 1 / tan(17.5 deg)); the engine's
+// default control scale, 0.5 per mm, is printed for comparison.
+TEST_F(Lean, BilateralBlurLeaksClearlyLessBackdropLightThanTheControl) {
+    test::TempDir dir;
+    constexpr int kW = 320, kH = 180;
+    load(writeBackdropScene(dir), {"sss.enabled=false"});
+    // The renderer reads settings and materials every frame: one load serves all.
+    SssSettings& sss = mScene->settings.sss;
+    glm::vec3& backdropAlbedo = mScene->characters[1].material.albedo;
+
+    const Image ids = render(Aov::Object, kW, kH);
+    const Image unblurred = render(Aov::Diffuse, kW, kH);
+    // Head pixels with a backdrop pixel within 4 px.
+    std::vector<size_t> silhouette;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            if (ids.at(x, y).r != 1.0f) continue;
+            bool nearBackdrop = false;
+            for (int dy = -4; dy <= 4 && !nearBackdrop; ++dy) {
+                for (int dx = -4; dx <= 4 && !nearBackdrop; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    nearBackdrop = u >= 0 && v >= 0 && u < kW && v < kH && ids.at(u, v).r == 2.0f;
+                }
+            }
+            if (nearBackdrop) silhouette.push_back(static_cast<size_t>(y) * kW + static_cast<size_t>(x));
+        }
+    }
+    ASSERT_GT(silhouette.size(), 100u);
+    double own = 0.0;
+    for (size_t i : silhouette) own += luminanceOf(unblurred.texels[i]);
+
+    struct Leak {
+        double mean = 0.0;  // backdrop light over the silhouette's own unblurred light
+        double worst = 0.0;  // largest in one pixel, over the silhouette's mean own light
+    };
+    auto leakOf = [&](bool enabled, const char* variant, float controlScalePerMm) {
+        sss.enabled = enabled;
+        sss.variant = variant;
+        sss.controlDepthScalePerMm = controlScalePerMm;
+        backdropAlbedo = glm::vec3(1.0f);
+        const Image bright = render(Aov::Diffuse, kW, kH);
+        backdropAlbedo = glm::vec3(0.0f);
+        const Image dark = render(Aov::Diffuse, kW, kH);
+        Leak leak;
+        for (size_t i : silhouette) {
+            const double extra = luminanceOf(bright.texels[i]) - luminanceOf(dark.texels[i]);
+            leak.mean += extra;
+            leak.worst = std::max(leak.worst, extra);
+        }
+        leak.mean /= own;
+        leak.worst /= own / double(silhouette.size());
+        return leak;
+    };
+    const Leak none = leakOf(false, "lbb", 0.5f);
+    const Leak control = leakOf(true, "c", 0.01f);
+    const Leak bilateral = leakOf(true, "lbb", 0.5f);
+    const Leak defaultControl = leakOf(true, "c", 0.5f);
+    std::printf("[ measured ] backdrop light in the head's %zu silhouette pixels, as a share of their own unblurred "
+                "diffuse (mean / worst pixel): unblurred %.4f%% / %.4f%%; C with Jimenez's 0.01/mm %.2f%% / %.1f%%; "
+                "LBB %.4f%% / %.4f%%; C with the default 0.5/mm %.4f%% / %.4f%%\n",
+                silhouette.size(), 100.0 * none.mean, 100.0 * none.worst, 100.0 * control.mean, 100.0 * control.worst,
+                100.0 * bilateral.mean, 100.0 * bilateral.worst, 100.0 * defaultControl.mean,
+                100.0 * defaultControl.worst);
+    EXPECT_NEAR(none.mean, 0.0, 1e-6);
+    EXPECT_GT(control.mean, 0.01);  // C visibly bleeds the backdrop in
+    EXPECT_GT(control.worst, 0.1);
+    EXPECT_LT(bilateral.mean, 0.05 * control.mean);  // LBB: at least twenty times less
+    EXPECT_LT(bilateral.worst, 0.01);
 }
