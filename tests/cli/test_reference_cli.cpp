@@ -1,0 +1,71 @@
+// `dermis reference` as a user runs it: a small run writes a linear EXR of the
+// diffuse AOV; bad input gives one error line, a non-zero exit and no file.
+#include "TestSupport.h"
+
+#include "core/Image.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using dermis::test::ProcessResult;
+using dermis::test::runProcess;
+using dermis::test::TempDir;
+
+namespace {
+
+const std::string kDermis = DERMIS_BINARY;
+
+std::string furnaceScene() { return dermis::test::contentDir() + "/scenes/furnace.json"; }
+
+size_t errorLines(const std::string& err) {
+    size_t count = 0;
+    for (size_t at = err.find("error: "); at != std::string::npos; at = err.find("error: ", at + 1)) ++count;
+    return count;
+}
+
+}  // namespace
+
+TEST(ReferenceCli, WritesTheDiffuseAovOfTheFurnace) {
+    TempDir dir;
+    const ProcessResult r = runProcess(kDermis + " reference " + furnaceScene() + " --size 8x6 --density 2 --threads 2 --out " +
+                                       dir.file("ref.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto image = dermis::loadImage(dir.file("ref.exr"), dermis::ColourSpace::Linear);
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    ASSERT_EQ(image->width, 8);
+    ASSERT_EQ(image->height, 6);
+    // The furnace plane fills the view: albedo (0.8, 0.6, 0.5) under unit light, less the
+    // specular's share on the way out (rho_s 0.18).
+    for (const glm::vec4& texel : image->texels) {
+        EXPECT_EQ(texel.a, 1.0f);
+        EXPECT_NEAR(texel.r, 0.8f * 0.97f, 0.01f);
+        EXPECT_NEAR(texel.b, 0.5f * 0.97f, 0.01f);
+    }
+}
+
+TEST(ReferenceCli, BadInputFailsCleanly) {
+    TempDir dir;
+    const std::string out = dir.file("ref.exr");
+    struct Case {
+        std::string arguments;
+        int exitCode;
+        std::string mention;
+    };
+    const Case cases[] = {
+        {furnaceScene() + " --out " + out + " --density 0", 2, "--density"},
+        {furnaceScene() + " --out " + out + " --aov specular", 2, "--aov"},
+        {furnaceScene() + " --out " + dir.file("ref.png"), 2, ".exr"},
+        {furnaceScene() + " --out " + out + " --set sss.mix=7", 1, "mix"},
+        {dir.file("missing.json") + " --out " + out, 1, "missing.json"},
+        {furnaceScene() + " --out " + dir.file("no/such/dir/ref.exr"), 1, "no such directory"},
+    };
+    for (const Case& c : cases) {
+        const ProcessResult r = runProcess(kDermis + " reference " + c.arguments);
+        EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.err;
+        EXPECT_EQ(errorLines(r.err), 1u) << c.arguments << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.mention), std::string::npos) << c.arguments << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out));
+        EXPECT_FALSE(std::filesystem::exists(dir.file("ref.png")));
+    }
+}
