@@ -58,7 +58,7 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
     const uint32_t i2 = mIndices[3 * triangle + 2];
     const float b0 = 1.0f - b1 - b2;
     SurfacePoint point;
-    point.positionM = b0 * mPositionsM[i0] + b1 * mPositionsM[i1] + b2 * mPositionsM[i2];
+    point.positionM = positionAt(triangle, b1, b2);  // the same rounding as every other position query
     // Not safeNormalize: a 1 mm triangle's cross product is 1e-6 m^2, far below its unit-vector threshold.
     const glm::vec3 faceNormal = glm::cross(mPositionsM[i1] - mPositionsM[i0], mPositionsM[i2] - mPositionsM[i0]);
     const float faceLength = glm::length(faceNormal);

@@ -12,6 +12,9 @@ constexpr float kPi = 3.14159265358979f;
 // exp(-40) = 4e-18: a Gaussian this far below its peak adds nothing a float sum keeps.
 constexpr float kNegligibleExponent = 40.0f;
 
+// An equilateral sample cell of edge h has area (sqrt 3 / 4) h^2 = s^2 / density.
+float edgePerSigma(float density) { return std::sqrt(4.0f / (std::sqrt(3.0f) * std::max(density, 1e-6f))); }
+
 }  // namespace
 
 glm::vec3 albedoPower(const glm::vec3& albedo, float exponent) {
@@ -23,19 +26,15 @@ glm::vec3 albedoPower(const glm::vec3& albedo, float exponent) {
 
 DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const ReferenceLighting& lighting,
                                          const DiffusionProfile& profile, float mix, const QuadratureSettings& quadrature)
-    : mSurface(&surface), mLighting(&lighting), mProfile(&profile), mMix(mix), mQuadrature(quadrature) {
+    : mSurface(&surface), mLighting(&lighting), mMix(mix), mQuadrature(quadrature) {
     for (const ProfileGaussian& g : profile.gaussians()) {
         mSigmasMm.push_back(std::sqrt(g.varianceMm2));
         mTerms.push_back(Term{0.5f / g.varianceMm2, g.weight / (2.0f * kPi * g.varianceMm2)});
     }
-    // An equilateral sample cell of edge h has area (sqrt 3 / 4) h^2 = s^2 / density.
-    mEdgePerSigma = std::sqrt(4.0f / (std::sqrt(3.0f) * std::max(quadrature.density, 1e-6f)));
+    mEdgePerSigma = edgePerSigma(quadrature.density);
     mQueryRadiusMm = kQueryCutoffSigmas * mSigmasMm.back();
 
-    // Base cells: acceptable as they are for the widest Gaussian, whose samples
-    // (the children) may be mEdgePerSigma s_max apart.
-    const float baseEdgeM = 2.0f * mEdgePerSigma * mSigmasMm.back() / kMmPerM;
-    mBaseCells = tessellate(surface, 0.999f * baseEdgeM);  // margin: every base cell passes the widest test
+    mBaseCells = tessellate(surface, baseCellEdgeM(profile, quadrature));
     std::vector<glm::vec3> centroids;
     centroids.reserve(mBaseCells.size());
     mBaseShapes.reserve(mBaseCells.size());
@@ -46,6 +45,12 @@ DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const 
         mMaxBaseBoundMm = std::max(mMaxBaseBoundMm, shape.boundRadiusM * kMmPerM);
     }
     mGrid = CellGrid(centroids, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM);
+}
+
+float DiffusionIntegrator::baseCellEdgeM(const DiffusionProfile& profile, const QuadratureSettings& quadrature) {
+    // Acceptable as they are for the widest Gaussian, whose samples (the children) may be edgePerSigma s_max
+    // apart; the 0.999 keeps every base cell within that test despite rounding.
+    return 0.999f * 2.0f * edgePerSigma(quadrature.density) * std::sqrt(profile.gaussians().back().varianceMm2) / kMmPerM;
 }
 
 float DiffusionIntegrator::neededEdgeMm(float dMinMm) const {

@@ -49,9 +49,12 @@ glm::vec3 albedoPower(const glm::vec3& albedo, float exponent);
 
 class DiffusionIntegrator {
 public:
-    // `surface`, `lighting` and `profile` must outlive the integrator.
+    // `surface` and `lighting` must outlive the integrator; the profile is copied.
     DiffusionIntegrator(const CharacterSurface& surface, const ReferenceLighting& lighting,
                         const DiffusionProfile& profile, float mix, const QuadratureSettings& quadrature);
+
+    // The largest edge of a base cell: (just under) two sample spacings of the widest Gaussian.
+    static float baseCellEdgeM(const DiffusionProfile& profile, const QuadratureSettings& quadrature);
 
     size_t baseCellCount() const { return mBaseCells.size(); }
     float queryRadiusMm() const { return mQueryRadiusMm; }
@@ -79,7 +82,6 @@ private:
 
     const CharacterSurface* mSurface;
     const ReferenceLighting* mLighting;
-    const DiffusionProfile* mProfile;
     float mMix;
     QuadratureSettings mQuadrature;
     std::vector<float> mSigmasMm;  // ascending

@@ -17,6 +17,7 @@ int resolveThreadCount(int requested) {
 
 void parallelFor(size_t count, int threads, const std::function<void(size_t)>& work, const std::string& progressLabel) {
     std::unique_ptr<log::Progress> progress;
+    if (count == 0) return;
     if (!progressLabel.empty()) progress = std::make_unique<log::Progress>(progressLabel, count);
     std::atomic<size_t> next{0};
     auto worker = [&] {

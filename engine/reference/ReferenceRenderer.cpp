@@ -10,6 +10,19 @@
 #include <cmath>
 
 namespace dermis::reference {
+namespace {
+
+// About 90 bytes each with their samples: 1.8 GB.
+constexpr size_t kMaxBaseCells = 20'000'000;
+
+// NaN becomes 0, like the renderer's sanitizeColour (the reference keeps values above fp16's range).
+glm::vec3 sanitize(const glm::vec3& c) {
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = std::isnan(c[i]) ? 0.0f : c[i];
+    return out;
+}
+
+}  // namespace
 
 Result<ReferenceRenderer> ReferenceRenderer::load(const Scene& scene, const ReferenceOptions& options) {
     std::vector<Model> models;
@@ -54,7 +67,6 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     const SssSettings& sss = scene.settings.sss;
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
-        renderer.mProfiles.emplace_back();
         renderer.mIntegrators.emplace_back();
         if (!sss.enabled || character.material.profile == "none") continue;
         auto profile = findProfile(character.material.profile);
@@ -64,9 +76,15 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
         for (ProfileGaussian& g : scaled) g.varianceMm2 *= sss.widthScale * sss.widthScale;
         auto scaledProfile = DiffusionProfile::create((*profile)->name(), std::move(scaled));
         if (!scaledProfile.ok()) return makeError("character '" + character.name + "'", scaledProfile.error().what);
-        renderer.mProfiles.back() = std::make_unique<DiffusionProfile>(std::move(*scaledProfile));
+        const size_t cells = countTessellationCells(
+            *renderer.mSurfaces[c], DiffusionIntegrator::baseCellEdgeM(*scaledProfile, quadrature));
+        if (cells > kMaxBaseCells) {
+            return makeError("character '" + character.name + "'",
+                             "the reference would need " + std::to_string(cells) + " base cells (at most " +
+                                 std::to_string(kMaxBaseCells) + "): lower the density");
+        }
         renderer.mIntegrators.back() = std::make_unique<DiffusionIntegrator>(
-            *renderer.mSurfaces[c], *renderer.mLighting, *renderer.mProfiles.back(), sss.mix, options.quadrature);
+            *renderer.mSurfaces[c], *renderer.mLighting, *scaledProfile, sss.mix, options.quadrature);
         renderer.mStats.baseCells += renderer.mIntegrators.back()->baseCellCount();
     }
     return renderer;
@@ -112,7 +130,7 @@ glm::vec4 ReferenceRenderer::shadeHit(const Hit& hit, const Ray& ray,
         diffuse = mLighting->irradiance(point) * albedoPower(point.albedo, mix) * albedoPower(point.albedo, 1.0f - mix);
     }
     diffuse *= mLighting->outgoingFactor(point, towardsViewer);
-    return glm::vec4(diffuse, 1.0f);
+    return glm::vec4(sanitize(diffuse), 1.0f);
 }
 
 std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray>& rays, float tMin, float tMax) {

@@ -81,8 +81,7 @@ private:
     std::vector<uint32_t> mFirstTriangle;  // per character, into the BVH's triangle order; plus the total
     std::unique_ptr<Bvh> mBvh;
     std::unique_ptr<ReferenceLighting> mLighting;
-    std::vector<std::unique_ptr<DiffusionProfile>> mProfiles;         // width-scaled, per character (null: local)
-    std::vector<std::unique_ptr<DiffusionIntegrator>> mIntegrators;  // per character (null: local)
+    std::vector<std::unique_ptr<DiffusionIntegrator>> mIntegrators;  // per character, width-scaled profile (null: local)
     ReferenceStats mStats;
 };
 

@@ -9,6 +9,14 @@ namespace {
 // Grids larger than this (in grid cells) get coarser cells instead.
 constexpr size_t kMaxGridCells = size_t(1) << 22;
 
+// Divisions per side of the triangle for cells of at most maxEdgeM; 0 for a zero-area triangle.
+int divisions(const CharacterSurface& surface, size_t t, float maxEdgeM) {
+    const glm::vec3 p0 = surface.corner(t, 0), p1 = surface.corner(t, 1), p2 = surface.corner(t, 2);
+    if (!(glm::length(glm::cross(p1 - p0, p2 - p0)) > 0.0f)) return 0;
+    const float longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
+    return static_cast<int>(std::clamp(std::ceil(longest / std::max(maxEdgeM, 1e-9f)), 1.0f, float(kMaxBaseDivisions)));
+}
+
 }  // namespace
 
 glm::vec2 cellCentroid(const Cell& cell) { return (cell.corners[0] + cell.corners[1] + cell.corners[2]) / 3.0f; }
@@ -37,14 +45,20 @@ std::array<Cell, 4> splitCell(const Cell& cell) {
     return {Cell{t, {a, ab, ca}}, Cell{t, {ab, b, bc}}, Cell{t, {ca, bc, c}}, Cell{t, {bc, ca, ab}}};
 }
 
+size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM) {
+    size_t count = 0;
+    for (size_t t = 0; t < surface.triangleCount(); ++t) {
+        const auto n = size_t(divisions(surface, t, maxEdgeM));
+        count += n * n;
+    }
+    return count;
+}
+
 std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM) {
     std::vector<Cell> cells;
     for (size_t t = 0; t < surface.triangleCount(); ++t) {
-        const glm::vec3 p0 = surface.corner(t, 0), p1 = surface.corner(t, 1), p2 = surface.corner(t, 2);
-        if (!(glm::length(glm::cross(p1 - p0, p2 - p0)) > 0.0f)) continue;
-        const float longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
-        const float divisions = std::ceil(longest / std::max(maxEdgeM, 1e-9f));
-        const int n = static_cast<int>(std::clamp(divisions, 1.0f, float(kMaxBaseDivisions)));
+        const int n = divisions(surface, t, maxEdgeM);
+        if (n == 0) continue;
         const float step = 1.0f / float(n);
         const auto triangle = static_cast<uint32_t>(t);
         // Lattice point (i, j) has weights (i / n, j / n); each lattice square gives an

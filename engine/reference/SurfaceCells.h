@@ -39,6 +39,8 @@ std::array<Cell, 4> splitCell(const Cell& cell);
 // cell edge <= maxEdgeM (n capped at kMaxBaseDivisions). Zero-area triangles give no cells.
 constexpr int kMaxBaseDivisions = 4096;
 std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM);
+// The number of cells tessellate() would make, without making them.
+size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM);
 
 // A uniform grid over cell centroids for "cells near this point" queries.
 class CellGrid {
