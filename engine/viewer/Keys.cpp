@@ -13,7 +13,14 @@ namespace {
 constexpr float kLightStepDeg = 5.0f;
 constexpr float kCharacterStepDeg = 5.0f;
 
-bool pressed(int key, bool repeat = false) { return ImGui::IsKeyPressed(key, repeat); }
+// How many times `key` went down (counting auto-repeats when `repeat`).
+int pressed(const std::vector<KeyPress>& presses, int key, bool repeat = false) {
+    int count = 0;
+    for (const KeyPress& press : presses) {
+        if (press.key == key && (repeat || !press.repeat)) ++count;
+    }
+    return count;
+}
 
 void rotateLight(Light& light, const glm::vec3& axis, float degrees, const glm::vec3& pivot) {
     const glm::mat3 rotation(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), axis));
@@ -30,7 +37,7 @@ void cycleAov(ViewerState& state, int step, float cameraDistanceM) {
     for (int i = 0; i < count; ++i) {
         if (choices[static_cast<size_t>(i)].aov == state.aov) index = i;
     }
-    state.setAov(choices[static_cast<size_t>((index + step + count) % count)].aov, cameraDistanceM);
+    state.setAov(choices[static_cast<size_t>(((index + step) % count + count) % count)].aov, cameraDistanceM);
 }
 
 }  // namespace
@@ -68,33 +75,29 @@ const std::vector<KeyHelp>& mouseHelp() {
     return kMouse;
 }
 
-void handleKeys(ViewerState& state, const Camera& camera, const std::vector<Scene*>& scenes) {
+void handleKeys(const std::vector<KeyPress>& presses, ViewerState& state, const Camera& camera,
+                const std::vector<Scene*>& scenes) {
     if (ImGui::GetIO().WantTextInput) return;
+    auto toggled = [&](int key) { return pressed(presses, key) % 2 == 1; };
     const float distance = glm::length(camera.positionM - camera.targetM);
     EffectSwitches& switches = state.switches;
     for (int digit = 0; digit <= 9; ++digit) {
-        if (pressed(GLFW_KEY_0 + digit)) switches.toggleLight(static_cast<size_t>(digit));
+        if (toggled(GLFW_KEY_0 + digit)) switches.toggleLight(static_cast<size_t>(digit));
     }
-    if (pressed(GLFW_KEY_Z)) switches.specular = !switches.specular;
-    if (pressed(GLFW_KEY_O)) switches.shadows = !switches.shadows;
-    if (pressed(GLFW_KEY_B)) switches.sss = !switches.sss;
-    if (pressed(GLFW_KEY_Y)) switches.transmittance = !switches.transmittance;
-    if (pressed(GLFW_KEY_E)) switches.ambient = !switches.ambient;
-    if (pressed(GLFW_KEY_Q)) switches.ssao = !switches.ssao;
+    if (toggled(GLFW_KEY_Z)) switches.specular = !switches.specular;
+    if (toggled(GLFW_KEY_O)) switches.shadows = !switches.shadows;
+    if (toggled(GLFW_KEY_B)) switches.sss = !switches.sss;
+    if (toggled(GLFW_KEY_Y)) switches.transmittance = !switches.transmittance;
+    if (toggled(GLFW_KEY_E)) switches.ambient = !switches.ambient;
+    if (toggled(GLFW_KEY_Q)) switches.ssao = !switches.ssao;
 
     const glm::vec3 up = glm::normalize(camera.up);
     const glm::vec3 forward = glm::normalize(camera.targetM - camera.positionM);
     const glm::vec3 right = glm::normalize(glm::cross(forward, up));
-    float lightYaw = 0.0f;
-    float lightPitch = 0.0f;
-    if (pressed(GLFW_KEY_A, true)) lightYaw -= kLightStepDeg;
-    if (pressed(GLFW_KEY_D, true)) lightYaw += kLightStepDeg;
-    if (pressed(GLFW_KEY_W, true)) lightPitch += kLightStepDeg;
-    if (pressed(GLFW_KEY_S, true)) lightPitch -= kLightStepDeg;
-    float turnY = 0.0f;
-    float turnX = 0.0f;
-    if (pressed(GLFW_KEY_H, true)) turnY += kCharacterStepDeg;
-    if (pressed(GLFW_KEY_J, true)) turnX += kCharacterStepDeg;
+    const float lightYaw = kLightStepDeg * float(pressed(presses, GLFW_KEY_D, true) - pressed(presses, GLFW_KEY_A, true));
+    const float lightPitch = kLightStepDeg * float(pressed(presses, GLFW_KEY_W, true) - pressed(presses, GLFW_KEY_S, true));
+    const float turnY = kCharacterStepDeg * float(pressed(presses, GLFW_KEY_H, true));
+    const float turnX = kCharacterStepDeg * float(pressed(presses, GLFW_KEY_J, true));
     for (Scene* scene : scenes) {
         if (!scene->lights.empty() && (lightYaw != 0.0f || lightPitch != 0.0f)) {
             Light& light = scene->lights[0];
@@ -107,18 +110,18 @@ void handleKeys(ViewerState& state, const Camera& camera, const std::vector<Scen
         }
     }
 
-    if (pressed(GLFW_KEY_V)) {
+    for (int i = pressed(presses, GLFW_KEY_V); i > 0; --i) {
         state.mode = state.mode == ViewMode::Single  ? ViewMode::Split
                      : state.mode == ViewMode::Split ? ViewMode::Difference
                                                      : ViewMode::Single;
     }
-    if (pressed(GLFW_KEY_N)) cycleAov(state, -1, distance);
-    if (pressed(GLFW_KEY_M)) cycleAov(state, 1, distance);
-    if (pressed(GLFW_KEY_R)) state.requests.resetCamera = true;
-    if (pressed(GLFW_KEY_P)) state.requests.screenshot = true;
-    if (pressed(GLFW_KEY_F5)) state.requests.reloadShaders = true;
-    if (pressed(GLFW_KEY_TAB)) state.showPanels = !state.showPanels;
-    if (pressed(GLFW_KEY_ESCAPE)) state.requests.quit = true;
+    const int aovStep = pressed(presses, GLFW_KEY_M) - pressed(presses, GLFW_KEY_N);
+    if (aovStep != 0) cycleAov(state, aovStep, distance);
+    if (pressed(presses, GLFW_KEY_R)) state.requests.resetCamera = true;
+    if (pressed(presses, GLFW_KEY_P)) state.requests.screenshot = true;
+    if (pressed(presses, GLFW_KEY_F5)) state.requests.reloadShaders = true;
+    if (toggled(GLFW_KEY_TAB)) state.showPanels = !state.showPanels;
+    if (pressed(presses, GLFW_KEY_ESCAPE)) state.requests.quit = true;
 }
 
 }  // namespace dermis::viewer

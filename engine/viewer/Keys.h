@@ -5,6 +5,7 @@
 
 #include "scene/Scene.h"
 #include "viewer/ViewerState.h"
+#include "viewer/ViewerWindow.h"
 
 #include <vector>
 
@@ -18,9 +19,10 @@ struct KeyHelp {
 const std::vector<KeyHelp>& keyHelp();
 const std::vector<KeyHelp>& mouseHelp();
 
-// Reads this frame's key presses. Light and character movements are applied
-// to every scene in `scenes` (A and B stay comparable); `camera` gives the
-// axes they move about.
-void handleKeys(ViewerState& state, const Camera& camera, const std::vector<Scene*>& scenes);
+// Acts on the key presses since the last frame. Light and character
+// movements are applied to every scene in `scenes` (A and B stay
+// comparable); `camera` gives the axes they move about.
+void handleKeys(const std::vector<KeyPress>& presses, ViewerState& state, const Camera& camera,
+                const std::vector<Scene*>& scenes);
 
 }  // namespace dermis::viewer

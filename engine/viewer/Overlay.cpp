@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -11,7 +12,9 @@ namespace {
 const ImU32 kTextColour = IM_COL32(240, 240, 240, 255);
 const ImU32 kLabelBackground = IM_COL32(0, 0, 0, 160);
 const ImU32 kErrorColour = IM_COL32(255, 110, 90, 255);
+const ImU32 kOkColour = IM_COL32(140, 230, 140, 255);
 constexpr float kPad = 6.0f;
+constexpr std::chrono::seconds kMessageShown{6};
 
 void label(ImDrawList* list, ImVec2 at, const std::string& text, ImU32 colour = kTextColour) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
@@ -64,8 +67,14 @@ void drawOverlay(const UiRect& area, const ViewerState& state, const std::vector
         label(list, ImVec2(area.x + kPad * 2.0f, bottom), "difference A - B; " + describeB(differences));
         colourScale(list, area, state.differenceScale);
     }
+    // Errors and the latest message stack at the top left; a message fades after a few seconds.
+    float top = area.y + kPad * 2.0f;
     if (!state.renderError.empty()) {
-        label(list, ImVec2(area.x + kPad * 2.0f, area.y + kPad * 2.0f), "render error: " + state.renderError, kErrorColour);
+        label(list, ImVec2(area.x + kPad * 2.0f, top), "render error: " + state.renderError, kErrorColour);
+        top += line;
+    }
+    if (!state.message.empty() && std::chrono::steady_clock::now() - state.messageTime < kMessageShown) {
+        label(list, ImVec2(area.x + kPad * 2.0f, top), state.message, state.messageIsError ? kErrorColour : kOkColour);
     }
 }
 

@@ -48,17 +48,17 @@ bool colourLinear(const char* label, glm::vec3& colour, bool hdr) {
 
 bool direction(const char* label, glm::vec3& dir) {
     const glm::vec3 unit = glm::length(dir) > 0.0f ? glm::normalize(dir) : glm::vec3(0.0f, 0.0f, -1.0f);
-    float angles[2] = {glm::degrees(std::atan2(unit.x, unit.z)), glm::degrees(std::asin(std::clamp(unit.y, -1.0f, 1.0f)))};
+    float azimuth = glm::degrees(std::atan2(unit.x, unit.z));
+    float elevation = glm::degrees(std::asin(std::clamp(unit.y, -1.0f, 1.0f)));
     ImGui::PushID(label);
-    bool changed = ImGui::SliderFloat2("##angles", angles, -180.0f, 180.0f, "%.1f deg");
-    ImGui::SameLine();
-    ImGui::TextUnformatted(label);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("azimuth about +Y, elevation above the horizontal");
+    bool changed = ImGui::SliderFloat("azimuth", &azimuth, -180.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp);
+    help("The direction the light travels: its angle about +Y (0 = towards +Z).");
+    changed |= ImGui::SliderFloat("elevation", &elevation, -90.0f, 90.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp);
     ImGui::PopID();
     if (!changed) return false;
-    const float azimuth = glm::radians(angles[0]);
-    const float elevation = glm::radians(std::clamp(angles[1], -90.0f, 90.0f));
-    dir = glm::vec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth));
+    const float a = glm::radians(azimuth);
+    const float e = glm::radians(elevation);
+    dir = glm::vec3(std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a));
     return true;
 }
 

@@ -18,7 +18,8 @@ bool sliderOdd(const char* label, int& value, int lo, int hi);
 bool sliderMetresAsMm(const char* label, float& metres, float loMm, float hiMm);
 // A linear RGB colour, each channel >= 0; `hdr` allows values above 1.
 bool colourLinear(const char* label, glm::vec3& colour, bool hdr);
-// A unit direction, edited as azimuth (about +Y) and elevation angles.
+// A unit direction, edited as azimuth (about +Y) and elevation angles;
+// `label` only scopes the widgets' ids.
 bool direction(const char* label, glm::vec3& direction);
 // "(?)" with a tooltip.
 void help(const char* text);

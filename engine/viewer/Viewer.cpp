@@ -28,6 +28,7 @@ namespace {
 constexpr float kPanelWidth = 380.0f;  // the settings column, in ImGui units
 constexpr float kProfilerMargin = 8.0f;
 constexpr float kProfilerWidth = 420.0f;
+constexpr float kProfilerMinWidth = 320.0f;
 constexpr float kProfilerHeight = 430.0f;
 
 class Viewer {
@@ -60,13 +61,12 @@ private:
     UiRect sceneArea() const;
     void buildUi(const UiRect& area);
     void settingsWindow();
-    void profilerWindow();
+    void profilerWindow(const UiRect& area);
     void shaderErrorWindow(const UiRect& area);
     void carryOutRequests();
     void reloadShaders();
     Status renderScene(const UiRect& area);
     void present(const UiRect& area);
-    void finishFrame();
 
     // Declared first: destroyed last, after every GL object below.
     std::unique_ptr<ViewerWindow> mWindow;
@@ -144,11 +144,13 @@ void Viewer::settingsWindow() {
     ImGui::End();
 }
 
-void Viewer::profilerWindow() {
+void Viewer::profilerWindow(const UiRect& area) {
+    // At most half the scene area's width, so that the scene stays in view in a small window.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = std::clamp(area.width * 0.5f, kProfilerMinWidth, kProfilerWidth);
+    const float height = std::min(kProfilerHeight, display.y * 0.6f);
     ImGui::SetNextWindowPos(ImVec2(display.x - kProfilerMargin, kProfilerMargin), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(kProfilerWidth, std::min(kProfilerHeight, display.y - 2.0f * kProfilerMargin)),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
     if (ImGui::Begin("Profiler (GPU ms)", &mState.showProfiler)) {
         std::vector<ProfiledSide> sides{{"A", &mA.history()}};
@@ -161,7 +163,7 @@ void Viewer::profilerWindow() {
 void Viewer::buildUi(const UiRect& area) {
     if (mState.showPanels) {
         settingsWindow();
-        if (mState.showProfiler) profilerWindow();
+        if (mState.showProfiler) profilerWindow(area);
     }
     if (!mState.shaderError.empty()) shaderErrorWindow(area);
     drawOverlay(area, mState, mDifferences);
@@ -260,7 +262,7 @@ Status Viewer::run() {
         mWindow->beginFrame();
         const UiRect area = sceneArea();
         std::vector<Scene*> scenes{&mA.edited(), &mB.edited()};
-        handleKeys(mState, mView, scenes);
+        handleKeys(mWindow->takeKeyPresses(), mState, mView, scenes);
         mInput.update(area, mView.verticalFovDeg, mOrbit, mState);
         mDifferences = mState.comparing() ? diffScenes(mA.edited(), mB.edited()) : std::vector<SceneDifference>{};
         buildUi(area);

@@ -10,6 +10,7 @@ void ViewerState::setAov(Aov newAov, float cameraDistanceM) {
 void ViewerState::report(std::string text, bool isError) {
     message = std::move(text);
     messageIsError = isError;
+    messageTime = std::chrono::steady_clock::now();
 }
 
 }  // namespace dermis::viewer

@@ -8,6 +8,7 @@
 #include "viewer/EffectSwitches.h"
 #include "viewer/SplitView.h"
 
+#include <chrono>
 #include <string>
 
 namespace dermis::viewer {
@@ -39,8 +40,9 @@ struct ViewerState {
 
     std::string screenshotPath = "out/viewer.png";
     std::string sceneJsonPath = "out/viewer_scene.json";
-    std::string message;  // the latest save or reload outcome
+    std::string message;  // the latest outcome of a save, a reload or a refused edit
     bool messageIsError = false;
+    std::chrono::steady_clock::time_point messageTime;
     std::string shaderError;  // the latest failed shader reload; empty once they compile again
     std::string renderError;  // the latest failed frame
 

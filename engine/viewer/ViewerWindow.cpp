@@ -10,6 +10,8 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <utility>
+
 namespace dermis::viewer {
 namespace {
 
@@ -43,6 +45,8 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, 
     window->mWindow = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window->mWindow) return makeError("window", "no OpenGL 4.5 core context" + glfwDetail());
     glfwMakeContextCurrent(window->mWindow);
+    glfwSetWindowUserPointer(window->mWindow, window.get());
+    glfwSetKeyCallback(window->mWindow, onKey);  // before ImGui's backend, which chains to it
     if (const Status loaded = gl::loadGlFunctions(glfwLoader, "glfw"); !loaded.ok()) return loaded.error();
     if (glDebug) gl::enableDebugOutput();
     glfwSwapInterval(vsync ? 1 : 0);
@@ -66,6 +70,17 @@ ViewerWindow::~ViewerWindow() {
     if (mWindow) glfwDestroyWindow(mWindow);
     glfwTerminate();
 }
+
+void ViewerWindow::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    (void)scancode;
+    (void)mods;
+    auto* self = static_cast<ViewerWindow*>(glfwGetWindowUserPointer(window));
+    if (self && key != GLFW_KEY_UNKNOWN && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
+        self->mKeyPresses.push_back({key, action == GLFW_REPEAT});
+    }
+}
+
+std::vector<KeyPress> ViewerWindow::takeKeyPresses() { return std::exchange(mKeyPresses, {}); }
 
 bool ViewerWindow::closeRequested() const { return glfwWindowShouldClose(mWindow) == GLFW_TRUE; }
 

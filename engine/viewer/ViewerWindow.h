@@ -9,10 +9,16 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
 namespace dermis::viewer {
+
+struct KeyPress {
+    int key;      // GLFW_KEY_*
+    bool repeat;  // an auto-repeat of a held key
+};
 
 class ViewerWindow {
 public:
@@ -28,13 +34,21 @@ public:
     void drawUi();      // renders ImGui's draw data into the back buffer
     void present();     // swaps the buffers
 
+    // Every key pressed since the last call. Kept here rather than read from
+    // ImGui's key state, which (in 1.86) loses a press and release that fall
+    // between two frames: at a few frames per second on llvmpipe, most do.
+    std::vector<KeyPress> takeKeyPresses();
+
     glm::ivec2 framebufferSize() const;
     float uiScale() const;  // framebuffer pixels per ImGui unit (HiDPI)
     double time() const;    // seconds since GLFW started
 
 private:
     ViewerWindow() = default;
+    static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+
     GLFWwindow* mWindow = nullptr;
+    std::vector<KeyPress> mKeyPresses;
     bool mImGuiGlfw = false;
     bool mImGuiGl = false;
 };

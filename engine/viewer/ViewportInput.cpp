@@ -25,13 +25,21 @@ bool ViewportInput::update(const UiRect& area, float verticalFovDeg, OrbitCamera
             mButton = io.MouseClicked[1] ? 1 : 2;
             mDrag = Drag::Pan;
         }
+        // Deltas count from where the button went down: at a few frames per
+        // second, ImGui's MouseDelta of the click frame also holds the move
+        // that brought the cursor there.
+        mLastX = mouse.x;
+        mLastY = mouse.y;
     }
     if (overDivider || mDrag == Drag::Divider) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
 
     bool moved = false;
     if (mDrag != Drag::None && !io.MouseDown[mButton]) mDrag = Drag::None;
-    const ImVec2 delta = io.MouseDelta;
-    const bool hasDelta = std::isfinite(delta.x) && std::isfinite(delta.y) && (delta.x != 0.0f || delta.y != 0.0f);
+    if (!ImGui::IsMousePosValid(&mouse)) return false;  // the cursor left the window: no position this frame
+    const ImVec2 delta(mouse.x - mLastX, mouse.y - mLastY);
+    mLastX = mouse.x;
+    mLastY = mouse.y;
+    const bool hasDelta = delta.x != 0.0f || delta.y != 0.0f;
     if (hasDelta) {
         switch (mDrag) {
             case Drag::Orbit:

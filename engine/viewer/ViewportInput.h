@@ -28,6 +28,8 @@ private:
     enum class Drag { None, Orbit, Pan, Divider };
     Drag mDrag = Drag::None;
     int mButton = 0;
+    float mLastX = 0.0f;  // the cursor at the previous frame of a drag
+    float mLastY = 0.0f;
 };
 
 }  // namespace dermis::viewer
