@@ -1,7 +1,9 @@
 // Composite (DESIGN.md pass 6): diffuse = SSS-accumulated irradiance x
 // albedo^(1 - mix) x the energy the specular lobe lets out towards the viewer,
 // 1 - rho_s rho_dt(N.V, m) (seed 000 §2.6), plus specular; the background
-// where nothing was drawn. Linear HDR out.
+// where nothing was drawn. Linear HDR out. With COMPOSITE_LEAN (variants lcb
+// and lbb) the specular of characters with LEAN maps comes from their blurred
+// moments here (include/LeanLights.glsl) rather than from the lighting pass.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "EnergyConservation.glsl"
@@ -12,11 +14,18 @@ layout(binding = 2) uniform sampler2D uDiffuse;
 layout(binding = 3) uniform sampler2D uSpecular;
 layout(binding = 4) uniform sampler2D uNormalMaterial;
 layout(binding = 15) uniform sampler2D uEnergy;
+#ifdef COMPOSITE_LEAN
+layout(binding = 5) uniform sampler2D uLeanMoments;  // blurred (B'.x, B'.y, M'.xx, M'.yy); M'.xy is uDiffuse's alpha
+layout(binding = 6) uniform sampler2D uVisibility;   // the lighting pass's shadow visibility
+#endif
 
 in vec2 vUv;
 layout(location = 0) out vec4 oColour;
 
 #include "OutgoingDiffuse.glsl"
+#ifdef COMPOSITE_LEAN
+#include "LeanLights.glsl"
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -25,5 +34,11 @@ void main() {
         oColour = vec4(uFrame.background.rgb, 1.0);
         return;
     }
-    oColour = vec4(sanitizeColour(outgoingDiffuse(pixel, depth) + texelFetch(uSpecular, pixel, 0).rgb), 1.0);
+#ifdef COMPOSITE_LEAN
+    vec3 specular = leanPixelSpecular(pixel, vUv, depth, uAlbedo, uNormalMaterial, uLeanMoments, uDiffuse, uVisibility,
+                                      uSpecular);
+#else
+    vec3 specular = texelFetch(uSpecular, pixel, 0).rgb;
+#endif
+    oColour = vec4(sanitizeColour(outgoingDiffuse(pixel, depth) + specular), 1.0);
 }

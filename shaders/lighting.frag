@@ -1,6 +1,8 @@
 // Deferred lighting (DESIGN.md pass 4) into two targets:
 //   0: diffuse irradiance times the pre-scatter albedo^mix (seed 000 §2.2.4),
-//      the input of the SSS blur. Each light's share is scaled by the energy
+//      the input of the SSS blur. Its alpha is 1, or with LIGHTING_LEAN the
+//      G-buffer's LEAN cross moment M'.xy, which the blur carries along with
+//      the irradiance (include/SssBlur.glsl, include/Lean.glsl). Each light's share is scaled by the energy
 //      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (seed 000 §2.6);
 //      the ambient term by the SSAO.
 //   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur.
@@ -22,6 +24,9 @@ layout(binding = 3) uniform sampler2D uAmbientOcclusion;
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
 layout(binding = 14) uniform sampler2D uBeckmann;
 layout(binding = 15) uniform sampler2D uEnergy;
+#ifdef LIGHTING_LEAN
+layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
+#endif
 
 in vec2 vUv;
 layout(location = 0) out vec4 oIrradiance;
@@ -74,7 +79,12 @@ void main() {
     }
 
     float mixRatio = uFrame.shading.y;
-    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), 1.0);
+#ifdef LIGHTING_LEAN
+    float alpha = texelFetch(uLeanCross, ivec2(gl_FragCoord.xy), 0).r;
+#else
+    float alpha = 1.0;
+#endif
+    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), alpha);
     oSpecular = vec4(sanitizeColour(specular), 1.0);
     oVisibility = shadowed;
 }

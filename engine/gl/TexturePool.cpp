@@ -18,6 +18,7 @@ GLenum internalFormat(graph::TextureFormat format) {
         case TextureFormat::R8: return GL_R8;
         case TextureFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
         case TextureFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+        case TextureFormat::Rgba32UI: return GL_RGBA32UI;
     }
     return GL_RGBA8;
 }

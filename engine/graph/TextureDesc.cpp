@@ -15,11 +15,14 @@ std::string_view formatName(TextureFormat format) {
         case TextureFormat::R8: return "r8";
         case TextureFormat::Depth24Stencil8: return "d24s8";
         case TextureFormat::Depth32F: return "d32f";
+        case TextureFormat::Rgba32UI: return "rgba32ui";
     }
     return "?";
 }
 
-bool isIntegerFormat(TextureFormat format) { return format == TextureFormat::R32UI; }
+bool isIntegerFormat(TextureFormat format) {
+    return format == TextureFormat::R32UI || format == TextureFormat::Rgba32UI;
+}
 
 bool isDepthFormat(TextureFormat format) {
     return format == TextureFormat::Depth24Stencil8 || format == TextureFormat::Depth32F;

@@ -18,6 +18,7 @@ enum class TextureFormat : uint8_t {
     R8,          // AO
     Depth24Stencil8,
     Depth32F,
+    Rgba32UI,    // eight halves packed in pairs (the LEAN variants' SSS chain)
 };
 
 std::string_view formatName(TextureFormat format);

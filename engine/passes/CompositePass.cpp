@@ -4,6 +4,7 @@ namespace dermis {
 namespace {
 struct CompositeData {
     graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, out;
+    LeanShading lean;
 };
 struct TonemapData {
     graph::TextureHandle hdr, out;
@@ -11,7 +12,8 @@ struct TonemapData {
 }  // namespace
 
 graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                      graph::TextureHandle diffuse, graph::TextureHandle specular) {
+                                      graph::TextureHandle diffuse, graph::TextureHandle specular,
+                                      const LeanShading& lean) {
     const auto w = static_cast<uint32_t>(frame.width);
     const auto h = static_cast<uint32_t>(frame.height);
     return graph
@@ -23,6 +25,10 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& f
                 d.normalMaterial = builder.read(gbuffer.normalMaterial);
                 d.diffuse = builder.read(diffuse);
                 d.specular = builder.read(specular);
+                if (lean.isValid()) {
+                    d.lean.moments = builder.read(lean.moments);
+                    d.lean.visibility = builder.read(lean.visibility);  // lean.accumulated is `diffuse`
+                }
                 d.out = builder.create("hdr colour", {w, h, graph::TextureFormat::Rgba16F});
             },
             [&frame](const graph::PassResources& resources, const CompositeData& d) {
@@ -30,7 +36,11 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& f
                 attachments.colour[0] = resources.texture(d.out);
                 frame.framebuffers->bind(attachments);
                 frame.setViewport(frame.width, frame.height);
-                glUseProgram(frame.programs->composite.get());
+                glUseProgram(d.lean.isValid() ? frame.programs->compositeLean.get() : frame.programs->composite.get());
+                if (d.lean.isValid()) {
+                    glBindTextureUnit(5, resources.texture(d.lean.moments));
+                    glBindTextureUnit(6, resources.texture(d.lean.visibility));
+                }
                 glBindTextureUnit(0, resources.texture(d.depth));
                 glBindTextureUnit(1, resources.texture(d.albedo));
                 glBindTextureUnit(2, resources.texture(d.diffuse));

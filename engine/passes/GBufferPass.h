@@ -21,8 +21,9 @@ struct GBuffer {
 
     bool hasLean() const { return leanMoments.isValid(); }
     // The targets the SSS chain blurs with the irradiance: none in variant c.
+    // (leanCross reaches the chain as the irradiance's alpha, LightingPass.h.)
     std::vector<graph::TextureHandle> leanTargets() const {
-        return hasLean() ? std::vector<graph::TextureHandle>{leanMoments, leanCross} : std::vector<graph::TextureHandle>{};
+        return hasLean() ? std::vector<graph::TextureHandle>{leanMoments} : std::vector<graph::TextureHandle>{};
     }
 };
 

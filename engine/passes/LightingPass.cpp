@@ -6,6 +6,7 @@ struct LightingData {
     GBuffer gbuffer;
     std::vector<graph::TextureHandle> shadowMaps;
     graph::TextureHandle ambientOcclusion;
+    graph::TextureHandle leanCross;
     Lighting out;
 };
 }  // namespace
@@ -31,6 +32,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 d.gbuffer.albedo = builder.read(gbuffer.albedo);
                 d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
                 d.ambientOcclusion = builder.read(ambientOcclusion);
+                if (gbuffer.hasLean()) d.leanCross = builder.read(gbuffer.leanCross);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 d.out.irradiance = builder.create("irradiance", {w, h, graph::TextureFormat::Rgba16F});
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
@@ -43,7 +45,9 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 if (d.out.visibility.isValid()) attachments.colour[2] = resources.texture(d.out.visibility);
                 frame.framebuffers->bind(attachments);
                 frame.setViewport(frame.width, frame.height);
-                glUseProgram(frame.programs->lighting.get());
+                const bool lean = d.leanCross.isValid();
+                glUseProgram(lean ? frame.programs->lightingLean.get() : frame.programs->lighting.get());
+                if (lean) glBindTextureUnit(8, resources.texture(d.leanCross));
                 glBindTextureUnit(0, resources.texture(d.gbuffer.depthStencil));
                 glBindTextureUnit(1, resources.texture(d.gbuffer.albedo));
                 glBindTextureUnit(2, resources.texture(d.gbuffer.normalMaterial));

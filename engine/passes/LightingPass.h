@@ -12,13 +12,15 @@
 namespace dermis {
 
 struct Lighting {
-    graph::TextureHandle irradiance;  // RGBA16F
+    graph::TextureHandle irradiance;  // RGBA16F; alpha 1, or the LEAN cross moment when the G-buffer has LEAN targets
     graph::TextureHandle specular;    // RGBA16F
     graph::TextureHandle visibility;  // RGBA8: shadow visibility per shadow slot; only when asked for
 };
 
 // shadowVisibility: also write each shadowed light's visibility, for a later
-// pass that shades with the same shadows (the LEAN specular pass).
+// pass that shades with the same shadows (the LEAN specular). With LEAN
+// targets in the G-buffer the irradiance's alpha carries GBuffer::leanCross
+// into the SSS chain.
 Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
                          const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion,
                          bool shadowVisibility = false);

@@ -11,19 +11,13 @@ namespace dermis {
 namespace {
 
 struct InitData {
-    graph::TextureHandle irradiance, depthKey, accumulated;
+    graph::TextureHandle irradiance, depthKey, accumulated, chain;
     std::vector<graph::TextureHandle> extras, extrasAccumulated;
 };
 struct BlurData {
     graph::TextureHandle colour, depthKey, stencil, accumulatedIn, out, accumulatedOut;
-    std::vector<graph::TextureHandle> extras, extrasAccumulatedIn, extrasOut, extrasAccumulatedOut;
+    std::vector<graph::TextureHandle> extrasAccumulatedIn, extrasAccumulatedOut;
 };
-
-void bindBlurInputs(const graph::PassResources& resources, const BlurData& d) {
-    glBindTextureUnit(0, resources.texture(d.colour));
-    glBindTextureUnit(1, resources.texture(d.depthKey));
-    for (size_t k = 0; k < d.extras.size(); ++k) glBindTextureUnit(static_cast<GLuint>(2 + k), resources.texture(d.extras[k]));
-}
 
 gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel, const SssGaussianStep& step,
                             int slot, bool horizontal) {
@@ -94,10 +88,11 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
     const graph::TextureDesc colourDesc{w, h, graph::TextureFormat::Rgba16F};
     const bool anyVisible = frame.sss.anyVisible();
     assert(extras.empty() || extras.size() == kLeanSssTargets);
-    const size_t extraCount = extras.size();
+    const bool packed = !extras.empty();  // the chain carries colour and moments as halves (SssBlur.glsl)
+    const graph::TextureDesc chainDesc{w, h, packed ? graph::TextureFormat::Rgba32UI : graph::TextureFormat::Rgba16F};
     const Programs& programs = *frame.programs;
-    const GLuint initProgram = extras.empty() ? programs.sssInit.get() : programs.sssInitLean.get();
-    const GLuint blurProgram = extras.empty() ? programs.sssBlur.get() : programs.sssBlurLean.get();
+    const GLuint initProgram = packed ? programs.sssInitLean.get() : programs.sssInit.get();
+    const GLuint blurProgram = packed ? programs.sssBlurLean.get() : programs.sssBlur.get();
 
     const InitData& init = graph.addPass<InitData>(
         "sss init",
@@ -106,38 +101,40 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
             d.depthKey = builder.read(gbuffer.depthKey);
             d.accumulated = builder.create("sss accumulated", colourDesc);
             builder.passThrough(d.accumulated, irradiance);
-            for (size_t k = 0; k < extraCount; ++k) {
-                d.extras.push_back(builder.read(extras[k]));
+            for (graph::TextureHandle extra : extras) {
+                d.extras.push_back(builder.read(extra));
                 d.extrasAccumulated.push_back(
-                    builder.create(graph.textureName(extras[k]) + " accumulated", builder.desc(extras[k])));
-                builder.passThrough(d.extrasAccumulated[k], extras[k]);
+                    builder.create(graph.textureName(extra) + " accumulated", builder.desc(extra)));
+                builder.passThrough(d.extrasAccumulated.back(), extra);
             }
+            if (packed) d.chain = builder.create("sss chain", chainDesc);
             builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
             builder.skipIf(!anyVisible, "no SSS pixel on screen");
         },
         [&frame, initProgram](const graph::PassResources& resources, const InitData& d) {
             gl::Attachments attachments;
             attachments.colour[0] = resources.texture(d.accumulated);
-            for (size_t k = 0; k < d.extras.size(); ++k) attachments.colour[1 + k] = resources.texture(d.extrasAccumulated[k]);
+            if (d.chain.isValid()) {
+                attachments.colour[1] = resources.texture(d.extrasAccumulated[0]);
+                attachments.colour[2] = resources.texture(d.chain);
+            }
             frame.framebuffers->bind(attachments);
             frame.setViewport(frame.width, frame.height);
             glUseProgram(initProgram);
             glBindTextureUnit(0, resources.texture(d.irradiance));
             glBindTextureUnit(1, resources.texture(d.depthKey));
-            for (size_t k = 0; k < d.extras.size(); ++k) {
-                glBindTextureUnit(static_cast<GLuint>(2 + k), resources.texture(d.extras[k]));
-            }
+            if (d.chain.isValid()) glBindTextureUnit(2, resources.texture(d.extras[0]));
             frame.drawFullscreenTriangle();
         });
     SssChain chain{init.accumulated, init.extrasAccumulated};
+    const graph::TextureHandle chainStart = packed ? init.chain : irradiance;
 
     auto kernel = makeGaussianKernel(frame.scene->settings.sss.taps);
     if (!kernel.ok()) return chain;  // the scene loader validates taps; nothing to blur with
     const BlurKernel taps = *kernel;  // copied into each pass: it outlives this function
 
     for (const SssSlotPlan& slot : frame.sss.slots) {
-        graph::TextureHandle current = irradiance;
-        std::vector<graph::TextureHandle> currentExtras = extras;
+        graph::TextureHandle current = chainStart;
         const std::string prefix = "sss " + slot.profile->name() + " g";
         for (const SssGaussianStep& step : slot.steps) {
             const std::string name = prefix + std::to_string(step.gaussian);
@@ -151,12 +148,7 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                     d.colour = builder.read(current);
                     d.depthKey = builder.read(gbuffer.depthKey);
                     d.stencil = builder.read(gbuffer.depthStencil);
-                    d.out = builder.create(name + " h", colourDesc);
-                    for (size_t k = 0; k < extraCount; ++k) {
-                        d.extras.push_back(builder.read(currentExtras[k]));
-                        d.extrasOut.push_back(builder.create(name + " h " + graph.textureName(extras[k]),
-                                                             builder.desc(currentExtras[k])));
-                    }
+                    d.out = builder.create(name + " h", chainDesc);
                     builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
                     builder.skipIf(step.skipped, why);
                 },
@@ -164,7 +156,6 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                     const graph::PassResources& resources, const BlurData& d) {
                     gl::Attachments attachments;
                     attachments.colour[0] = resources.texture(d.out);
-                    for (size_t k = 0; k < d.extrasOut.size(); ++k) attachments.colour[1 + k] = resources.texture(d.extrasOut[k]);
                     attachments.depth = resources.texture(d.stencil);
                     attachments.depthHasStencil = true;
                     frame.framebuffers->bind(attachments);
@@ -172,7 +163,8 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                     const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, true);
                     frame.uploadPassBlock(&block, sizeof block);
                     glUseProgram(blurProgram);
-                    bindBlurInputs(resources, d);
+                    glBindTextureUnit(0, resources.texture(d.colour));
+                    glBindTextureUnit(1, resources.texture(d.depthKey));
                     const ScopedSssState state(frame, scissor, slotIndex);
                     frame.drawFullscreenTriangle();
                 });
@@ -183,27 +175,21 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                     d.depthKey = builder.read(gbuffer.depthKey);
                     d.stencil = builder.read(gbuffer.depthStencil);
                     d.accumulatedIn = builder.read(chain.diffuse);
-                    d.out = builder.create(name + " v", colourDesc);
+                    d.out = builder.create(name + " v", chainDesc);
                     d.accumulatedOut = builder.write(chain.diffuse);
                     builder.passThrough(d.out, current);
-                    for (size_t k = 0; k < extraCount; ++k) {
-                        d.extras.push_back(builder.read(horizontal.extrasOut[k]));
-                        d.extrasAccumulatedIn.push_back(builder.read(chain.extras[k]));
-                        d.extrasOut.push_back(builder.create(name + " v " + graph.textureName(extras[k]),
-                                                             builder.desc(currentExtras[k])));
-                        d.extrasAccumulatedOut.push_back(builder.write(chain.extras[k]));
-                        builder.passThrough(d.extrasOut[k], currentExtras[k]);
+                    for (graph::TextureHandle accumulated : chain.extras) {
+                        d.extrasAccumulatedIn.push_back(builder.read(accumulated));
+                        d.extrasAccumulatedOut.push_back(builder.write(accumulated));
                     }
                 },
                 [&frame, taps, step, blurProgram, slotIndex = slot.slot, scissor = slot.scissor](
                     const graph::PassResources& resources, const BlurData& d) {
-                    const size_t extraTargets = d.extrasOut.size();
                     gl::Attachments attachments;
                     attachments.colour[0] = resources.texture(d.out);
-                    for (size_t k = 0; k < extraTargets; ++k) attachments.colour[1 + k] = resources.texture(d.extrasOut[k]);
-                    attachments.colour[1 + extraTargets] = resources.texture(d.accumulatedOut);
-                    for (size_t k = 0; k < extraTargets; ++k) {
-                        attachments.colour[2 + extraTargets + k] = resources.texture(d.extrasAccumulatedOut[k]);
+                    attachments.colour[1] = resources.texture(d.accumulatedOut);
+                    for (size_t k = 0; k < d.extrasAccumulatedOut.size(); ++k) {
+                        attachments.colour[2 + k] = resources.texture(d.extrasAccumulatedOut[k]);
                     }
                     attachments.depth = resources.texture(d.stencil);
                     attachments.depthHasStencil = true;
@@ -212,22 +198,21 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                     const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, false);
                     frame.uploadPassBlock(&block, sizeof block);
                     glUseProgram(blurProgram);
-                    bindBlurInputs(resources, d);
+                    glBindTextureUnit(0, resources.texture(d.colour));
+                    glBindTextureUnit(1, resources.texture(d.depthKey));
                     const ScopedSssState state(frame, scissor, slotIndex);
-                    // Irradiance: += w_i (RGB) x value; moments: += mean(w_i) x value (SssVariant.h).
-                    const auto accumulation = static_cast<GLuint>(1 + extraTargets);
-                    glEnablei(GL_BLEND, accumulation);
-                    glBlendFunci(accumulation, GL_CONSTANT_COLOR, GL_ONE);
-                    for (size_t k = 0; k < extraTargets; ++k) {
-                        glEnablei(GL_BLEND, accumulation + 1 + static_cast<GLuint>(k));
-                        glBlendFunci(accumulation + 1 + static_cast<GLuint>(k), GL_CONSTANT_ALPHA, GL_ONE);
+                    // Irradiance: += w_i (RGB) x value; its alpha and the moments: += mean(w_i) x value (SssVariant.h).
+                    glEnablei(GL_BLEND, 1);
+                    glBlendFuncSeparatei(1, GL_CONSTANT_COLOR, GL_ONE, GL_CONSTANT_ALPHA, GL_ONE);
+                    for (size_t k = 0; k < d.extrasAccumulatedOut.size(); ++k) {
+                        glEnablei(GL_BLEND, static_cast<GLuint>(2 + k));
+                        glBlendFunci(static_cast<GLuint>(2 + k), GL_CONSTANT_ALPHA, GL_ONE);
                     }
                     glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
                     frame.drawFullscreenTriangle();
-                    for (size_t k = 0; k <= extraTargets; ++k) glDisablei(GL_BLEND, accumulation + static_cast<GLuint>(k));
+                    for (size_t k = 0; k <= d.extrasAccumulatedOut.size(); ++k) glDisablei(GL_BLEND, static_cast<GLuint>(1 + k));
                 });
             current = vertical.out;
-            currentExtras = vertical.extrasOut;
             chain.diffuse = vertical.accumulatedOut;
             chain.extras = vertical.extrasAccumulatedOut;
         }

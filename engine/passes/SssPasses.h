@@ -32,10 +32,13 @@ struct SssChain {
 };
 
 // The same chain with extra targets (none, or the kLeanSssTargets LEAN
-// moments) blurred in the same passes with the same taps through multiple
-// render targets, and accumulated with one scalar weight per Gaussian
-// (include/SssBlur.glsl, "EXTRA TARGETS"). Pixels no blur touches keep their
-// values; with nothing to blur, readers get the inputs themselves.
+// moments) blurred in the same passes with the same taps: the chain packs
+// irradiance and moments as halves in one RGBA32UI texture ("sss chain",
+// started by sss init) and the accumulations are float targets written
+// through multiple render targets, the moments' with one scalar weight per
+// Gaussian (include/SssBlur.glsl, "EXTRA TARGETS AND ALPHA", "PACKING").
+// Pixels no blur touches keep their values; with nothing to blur, readers
+// get the inputs themselves.
 SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
                      graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 

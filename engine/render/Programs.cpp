@@ -50,9 +50,11 @@ Result<Programs> Programs::build() {
     const std::string leanTargets = std::to_string(kLeanSssTargets);
     const LeanEntry leanEntries[] = {
         {&Programs::gbufferLean, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_LEAN", "1"}},
+        {&Programs::lightingLean, "fullscreen.vert", "lighting.frag", {"LIGHTING_LEAN", "1"}},
         {&Programs::sssInitLean, "fullscreen.vert", "sss_init.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::sssBlurLean, "fullscreen.vert", "sss_blur.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
+        {&Programs::compositeLean, "fullscreen.vert", "composite.frag", {"COMPOSITE_LEAN", "1"}},
     };
     for (const LeanEntry& e : leanEntries) {
         std::vector<gl::ShaderDefine> leanDefines = defines;

@@ -27,9 +27,11 @@ struct Programs {
     gl::Program tsGather;
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
+    gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
-    gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp
+    gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
+    gl::Program compositeLean;  // composite with the LEAN specular
 
     static Result<Programs> build();
 };

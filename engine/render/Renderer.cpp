@@ -211,23 +211,21 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
         const graph::TextureHandle irradiance =
             addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
         graph::TextureHandle diffuse;
-        graph::TextureHandle specular = lighting.specular;
+        LeanShading lean;
         if (mScene.settings.mode == "ts") {
             diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance);
         } else {
             const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());
             diffuse = chain.diffuse;
-            if (gbuffer.hasLean()) {
-                specular = addLeanSpecularPass(
-                    graph, frame, {gbuffer, chain.extras[0], chain.extras[1], lighting.visibility, lighting.specular});
-            }
+            if (gbuffer.hasLean()) lean = {chain.extras[0], chain.diffuse, lighting.visibility};
         }
         if (request.aov == Aov::Final) {
-            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, specular);
+            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular, lean);
             graph.markOutput(addTonemapPass(graph, frame, hdr, output));
             return;
         }
         if (request.aov == Aov::Specular) {
+            const graph::TextureHandle specular = addLeanSpecularPass(graph, frame, gbuffer, lean, lighting.specular);
             graph.markOutput(addAovPass(graph, frame, {gbuffer, {}, specular, {}}, output));
             return;
         }

@@ -20,8 +20,9 @@
 namespace dermis {
 
 // The LEAN moments the SSS chain blurs with the irradiance as extra targets:
-// the G-buffer's "lean moments" (RGBA16F) and "lean cross moment" (R16F).
-constexpr size_t kLeanSssTargets = 2;
+// the G-buffer's "lean moments" (RGBA16F). The cross moment rides in the
+// irradiance's alpha (the lighting pass copies it from the G-buffer).
+constexpr size_t kLeanSssTargets = 1;
 
 // Whether the frame carries LEAN moments (G-buffer targets, their blur, the
 // LEAN specular pass): variants lcb and lbb of the screen-space mode.

@@ -127,7 +127,9 @@ vec2 leanSafeSlope(vec2 B) {
 // normal. Outputs are what the G-buffer stores.
 void leanProject(vec2 B, vec3 M, float baseVariance, mat3 TBN, vec3 V, out vec2 viewB, out vec3 viewM) {
     B = leanSafeSlope(B);
-    vec3 S = leanClampCovariance(leanCovariance(B, M) + vec3(baseVariance, baseVariance, 0.0));
+    // Clamped once, after the projection: a congruence keeps an indefinite or
+    // non-finite Sigma so, and the clamp below catches it there.
+    vec3 S = leanCovariance(B, M) + vec3(baseVariance, baseVariance, 0.0);
     mat3 frame = leanFrame(V) * TBN;  // columns: T, Bt, N in frame coordinates
     vec3 n = frame * vec3(B, 1.0);
     float lengthN = length(n);
@@ -143,41 +145,64 @@ void leanProject(vec2 B, vec3 M, float baseVariance, mat3 TBN, vec3 V, out vec2 
 // The mean view-space normal of tangent-space moments: the facet normal at B.
 vec3 leanMeanNormal(vec2 B, mat3 TBN) { return TBN * vec3(leanSafeSlope(B), 1.0); }
 
-// LEAN specular times N_m.L for pixel-frame moments (B, M), unit view-space L
-// and V, specular intensity rhoS: rho_s pi D F / |L + V|^2 (N_m.L), >= 0 and
-// finite for every input.
-float leanSpecular(vec2 B, vec3 M, vec3 L, vec3 V, float rhoS) {
+// A pixel's LEAN lobe, prepared once for all its lights (leanLobe).
+struct LeanLobe {
+    mat3 meanFromView;        // view space to the mean plane's frame (rows T_m, B_m, N_m)
+    vec3 V;                   // the view vector in that frame
+    vec3 inverseCovariance;   // (xx, yy, xy) of Sigma_m^-1, slopes in the mean plane
+    float peak;               // 1 / (2 pi sqrt(det Sigma_m))
+};
+
+// The lobe of pixel-frame moments (B, M) seen along unit view-space V.
+LeanLobe leanLobe(vec2 B, vec3 M, vec3 V) {
     B = leanSafeSlope(B);
     vec3 S = leanClampCovariance(leanCovariance(B, M));
-    vec3 l = leanFrame(V) * L;  // the pixel frame: v = (0, 0, 1)
-    vec3 h = l + vec3(0.0, 0.0, 1.0);
-    float hLengthSquared = dot(h, h);
-    if (hLengthSquared < 1e-6) return 0.0;
-    vec3 H = h * inversesqrt(hLengthSquared);
-    vec3 meanNormal = normalize(vec3(B, 1.0));
-    float nDotL = dot(meanNormal, l);
-    float nDotH = dot(meanNormal, H);
-    if (nDotL <= 0.0 || nDotH < 1e-3) return 0.0;
+    vec3 meanNormal = normalize(vec3(B, 1.0));  // in the pixel frame; z > 0 always
     // Back to the mean plane: its frame (rows T_m, B_m, N_m) is the smallest
     // rotation from the pixel frame's z onto N_m, and K = ds/du at u = 0 is
-    // the Jacobian of the slope map from that plane to the view plane, the
-    // inverse of the G-buffer's linearisation when nothing was blurred.
+    // the Jacobian of the slope map from that plane to the view plane: the
+    // inverse of the G-buffer's linearisation when nothing was blurred, so an
+    // unblurred lobe is evaluated exactly where it was defined.
     mat3 toMean = leanFrame(meanNormal);
     mat3 axes = transpose(toMean);  // columns T_m, B_m, N_m in the pixel frame
     mat2 K = mat2((axes[0].xy - B * axes[0].z) / meanNormal.z, (axes[1].xy - B * axes[1].z) / meanNormal.z);
     mat2 inverseK = inverse(K);  // det K = 1 / N_m.z^3 >= 1: always invertible
     mat2 meanCovariance = inverseK * mat2(S.x, S.z, S.z, S.y) * transpose(inverseK);
     vec3 Sm = leanClampCovariance(vec3(meanCovariance[0][0], meanCovariance[1][1], meanCovariance[0][1]));
-    vec3 hm = toMean * H;  // hm.z = nDotH
-    vec2 u = hm.xy / hm.z;
     float determinant = max(Sm.x * Sm.y - Sm.z * Sm.z, kLeanMinVariance * kLeanMinVariance);
-    float exponent = (u.x * u.x * Sm.y - 2.0 * u.x * u.y * Sm.z + u.y * u.y * Sm.x) / determinant;
-    float density = exp(-0.5 * max(exponent, 0.0)) / (2.0 * kPi * sqrt(determinant));
-    float nDotH2 = nDotH * nDotH;
-    float D = density / (nDotH2 * nDotH2);
-    float F = fresnelSchlick(H, vec3(0.0, 0.0, 1.0), kSkinF0);
-    float value = rhoS * kPi * D * F / hLengthSquared * nDotL;
+
+    LeanLobe lobe;
+    lobe.meanFromView = toMean * leanFrame(V);
+    lobe.V = lobe.meanFromView * V;
+    lobe.inverseCovariance = vec3(Sm.y, Sm.x, -Sm.z) / determinant;
+    lobe.peak = 1.0 / (2.0 * kPi * sqrt(determinant));
+    return lobe;
+}
+
+// LEAN specular times N_m.L for unit view-space L and specular intensity
+// rhoS: rho_s pi D F / |L + V|^2 (N_m.L), with D(h) = P(u_h) / (h.N_m)^4 and
+// P the Gaussian of mean-plane slopes. >= 0 and finite for every input.
+float leanSpecular(LeanLobe lobe, vec3 L, float rhoS) {
+    vec3 l = lobe.meanFromView * L;
+    vec3 h = l + lobe.V;
+    float hLengthSquared = dot(h, h);
+    if (hLengthSquared < 1e-6 || l.z <= 0.0) return 0.0;
+    vec3 H = h * inversesqrt(hLengthSquared);
+    if (H.z < 1e-3) return 0.0;
+    vec2 u = H.xy / H.z;
+    vec3 Q = lobe.inverseCovariance;
+    float exponent = u.x * u.x * Q.x + 2.0 * u.x * u.y * Q.z + u.y * u.y * Q.y;
+    float nDotH2 = H.z * H.z;
+    float D = lobe.peak * exp(-0.5 * max(exponent, 0.0)) / (nDotH2 * nDotH2);
+    // Schlick's Fresnel (Specular.glsl) with the fifth power as products.
+    float base = 1.0 - clamp(dot(lobe.V, H), 0.0, 1.0);
+    float base2 = base * base;
+    float F = kSkinF0 + (1.0 - kSkinF0) * base2 * base2 * base;
+    float value = rhoS * kPi * D * F / hLengthSquared * l.z;
     return value >= 0.0 && value <= kHalfMax ? value : (value > kHalfMax ? kHalfMax : 0.0);
 }
+
+// The same for one light: pixel-frame moments (B, M), unit view-space L and V.
+float leanSpecular(vec2 B, vec3 M, vec3 L, vec3 V, float rhoS) { return leanSpecular(leanLobe(B, M, V), L, rhoS); }
 
 #endif

@@ -14,8 +14,10 @@
 //   1. Per frame, per profile slot, per Gaussian step i, draw a fullscreen
 //      triangle twice with this shader: direction (1,0) into a temporary,
 //      then direction (0,1) into the next chain texture (location 0) and the
-//      accumulation (location 1) with glBlendFunci(1, GL_CONSTANT_COLOR,
-//      GL_ONE) and glBlendColor(w_i).
+//      accumulation (location 1) with glBlendFuncSeparatei(1,
+//      GL_CONSTANT_COLOR, GL_ONE, GL_CONSTANT_ALPHA, GL_ONE) and
+//      glBlendColor(w_i, the scalar weight below): RGB by the profile's
+//      weights, alpha by the scalar one.
 //   2. Bind the G-buffer's depth-stencil as the depth-stencil attachment and
 //      set glStencilFunc(GL_EQUAL, slot, 0xFF): only that profile's pixels run.
 //      A scissor around its characters trims the rest.
@@ -23,21 +25,22 @@
 //      standard deviations and weights, computed on the CPU by
 //      engine/sss/BlurKernel.cpp), the direction, this step's standard
 //      deviation in mm, the edge mode and the profile slot.
-//   4. Bind the colour input to unit 0 and the depth key (G-buffer target 2,
-//      R32UI) to unit 1, and extra target k to unit 2 + k.
-//   5. Outputs: location 0 the blurred colour, 1..E the blurred extra targets
-//      (E = SSS_EXTRA_TARGETS), E + 1 the colour's accumulation, E + 2 ..
-//      2E + 1 the extra targets' accumulations. A horizontal pass attaches
-//      0..E only; a vertical one all 2E + 2, blending the extra
-//      accumulations with glBlendFunci(i, GL_CONSTANT_ALPHA, GL_ONE) and the
-//      per-Gaussian scalar weight in the blend colour's alpha.
+//   4. Bind the chain input to unit 0 and the depth key (G-buffer target 2,
+//      R32UI) to unit 1.
+//   5. Outputs: location 0 the blurred chain value, 1 the colour's
+//      accumulation and, with SSS_EXTRA_TARGETS = 1, 2 the extra target's
+//      accumulation, blended with glBlendFunci(2, GL_CONSTANT_ALPHA, GL_ONE)
+//      (the per-Gaussian scalar weight is the blend colour's alpha). A
+//      horizontal pass attaches location 0 only.
 //
-// EXTRA TARGETS (the LEAN moments, include/Lean.glsl)
-//   Every extra target is blurred with the very taps and weights of the
-//   colour, in the same draw (seed 001 blurred four textures in four passes,
+// EXTRA TARGETS AND ALPHA (the LEAN moments, include/Lean.glsl)
+//   The colour's alpha (1, or in the LEAN variants the cross moment M'.xy)
+//   and every extra target (B'.x, B'.y, M'.xx, M'.yy) are blurred with the
+//   very taps and weights of the colour, in the same draw (seed 001 blurred four textures in four passes,
 //   about 4x the cost of the control blur; here the taps' depth keys and
 //   weights are computed once). Their accumulation weight per Gaussian is one
-//   scalar, the mean of the Gaussian's RGB weights (engine/render/SssVariant.h),
+//   scalar (alpha and extra targets alike), the mean of the Gaussian's RGB
+//   weights (engine/render/SssVariant.h),
 //   because:
 //   - the profile's weights are normalised per channel, so the means also
 //     sum to one with the identity weight: the accumulated moments are a
@@ -48,6 +51,18 @@
 //     control: a lerp towards the centre), so nothing leaves that set;
 //   - the specular lobe is white: no channel of the profile has a claim on
 //     it, and the mean is the profile's average reach.
+//   An alpha of 1 therefore stays 1.
+//
+// PACKING (SSS_EXTRA_TARGETS = 1)
+//   Colour (RGBA) and extra target (RGBA) are eight halves; the chain keeps
+//   them in one RGBA32UI texture, two halves per channel (packHalf2x16, the
+//   fp16 the float targets would store), so a tap is one fetch of the chain
+//   and one of the key, as in the plain blur. The chain starts in sss_init,
+//   which packs the irradiance and the G-buffer's moments; the accumulations
+//   stay float, blended through multiple render targets. M'.xy rides in the
+//   irradiance's alpha, so the five moments and the irradiance fill exactly
+//   the eight halves. (On llvmpipe the fetches are the blur's cost; a GPU
+//   reads the same 16 bytes a tap either way.)
 //
 // WIDTH (seed 000 §2.2.4; DESIGN.md pass 5)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
@@ -79,42 +94,55 @@
 //   rounded to whole pixels; the discrete kernel keeps its CPU weights.
 //
 // CONFIGURATION (define before including)
-//   SSS_EXTRA_TARGETS  number of additional RGBA targets blurred with the
-//                      same taps (LEAN moments); 0..3, default 0. (Up to 8
-//                      attachments: 2 + 2 x 3.)
+//   SSS_EXTRA_TARGETS  0 (default) or 1: one extra RGBA target (the LEAN
+//                      moments) blurred with the same taps; the chain is then
+//                      packed (PACKING above) and SSS_CHAIN_SAMPLER is a
+//                      usampler2D.
 #ifndef DERMIS_SSS_BLUR_GLSL
 #define DERMIS_SSS_BLUR_GLSL
 
 #ifndef SSS_EXTRA_TARGETS
 #define SSS_EXTRA_TARGETS 0
 #endif
-#if SSS_EXTRA_TARGETS < 0 || SSS_EXTRA_TARGETS > 3
-#error "SSS_EXTRA_TARGETS must be 0..3"
+#if SSS_EXTRA_TARGETS < 0 || SSS_EXTRA_TARGETS > 1
+#error "SSS_EXTRA_TARGETS must be 0 or 1"
 #endif
 
 #define SSS_VALUES (1 + SSS_EXTRA_TARGETS)
 #if SSS_EXTRA_TARGETS > 0
-layout(binding = 2) uniform sampler2D uSssExtra[SSS_EXTRA_TARGETS];
+#define SSS_CHAIN_SAMPLER usampler2D
+#else
+#define SSS_CHAIN_SAMPLER sampler2D
 #endif
 
-// The colour ([0]) and the extra targets ([1..]) at one pixel.
+// The colour ([0]) and the extra target ([1]) at one pixel.
 struct SssValues {
     vec4 v[SSS_VALUES];
 };
 
-SssValues sssFetch(sampler2D colour, ivec2 pixel) {
+SssValues sssFetch(SSS_CHAIN_SAMPLER chain, ivec2 pixel) {
     SssValues values;
-    values.v[0] = texelFetch(colour, pixel, 0);
 #if SSS_EXTRA_TARGETS > 0
-    for (int k = 0; k < SSS_EXTRA_TARGETS; ++k) values.v[k + 1] = texelFetch(uSssExtra[k], pixel, 0);
+    uvec4 halves = texelFetch(chain, pixel, 0);
+    values.v[0] = vec4(unpackHalf2x16(halves.x), unpackHalf2x16(halves.y));
+    values.v[1] = vec4(unpackHalf2x16(halves.z), unpackHalf2x16(halves.w));
+#else
+    values.v[0] = texelFetch(chain, pixel, 0);
 #endif
     return values;
 }
 
+#if SSS_EXTRA_TARGETS > 0
+// The chain texel of sanitised values (sssSanitizeSigned / sanitizeColour).
+uvec4 sssPack(vec4 colour, vec4 extra) {
+    return uvec4(packHalf2x16(colour.rg), packHalf2x16(colour.ba), packHalf2x16(extra.rg), packHalf2x16(extra.ba));
+}
+#endif
+
 // The blurred values at `pixel` along uSssBlur.step.xy. Returns the centre
 // when the pixel is not on this profile (stencil keeps that from happening;
 // this is the belt to its braces).
-SssValues sssBlurStep(sampler2D colour, usampler2D depthKey, ivec2 pixel) {
+SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
     SssValues centre = sssFetch(colour, pixel);
     uint centreKey = texelFetch(depthKey, pixel, 0).r;

@@ -1,6 +1,7 @@
 // dermis_benchmarks: Google Benchmark runs, then the comparisons the issues
 // ask for, printed as ratios measured side by side in this one run.
 #include "BenchContext.h"
+#include "LeanBenchmarks.h"
 
 #include "core/Log.h"
 
@@ -48,5 +49,6 @@ int main(int argc, char** argv) {
         std::printf("%-24s %8.0f SSS pixels %8.3f ms  %6.3f ms per 10k SSS pixels\n", layout, pixels, ms,
                     pixels > 0 ? 1e4 * ms / pixels : 0.0);
     }
+    dermis::bench::printLeanSummary();
     return 0;
 }

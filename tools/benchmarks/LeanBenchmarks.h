@@ -1,0 +1,9 @@
+#pragma once
+// Seed 001's three variants' frame cost (LeanBenchmarks.cpp).
+
+namespace dermis::bench {
+
+// Prints the LBB / C and LCB / C frame ratios and the per-pass table (after the run).
+void printLeanSummary();
+
+}  // namespace dermis::bench
