@@ -4,6 +4,7 @@
 #include "passes/TsPassSteps.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace dermis {
 namespace {
@@ -22,8 +23,9 @@ struct FilterData {
     graph::TextureHandle in, stretch, out;
 };
 
-// Empty texels look this far for a chart: a quarter of the head's 8-texel
-// gutters at 1024 on each side, scaled with the size.
+// Empty texels look this far for a chart. The head's gutters are 8 texels
+// wide at 1024 (scene/ProceduralHead.cpp); size / 128 fills them from either
+// side at every size.
 int dilationRadiusTexels(int size) { return std::clamp(size / 128, 2, 16); }
 
 graph::TextureDesc uvDesc(const TsCharacterPlan& plan, graph::TextureFormat format) {
@@ -48,7 +50,8 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
     block.tsmClipFromWorld = plan.tsmClipFromWorld;
     block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
     block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
-    block.tsm = glm::vec4(kTsThicknessPerMm, ts.tsmStrength, float(plan.tsmSize), 1.0f);
+    const float strength = ts.tsmStrength * frame.scene->settings.transmittance.strength;
+    block.tsm = glm::vec4(kTsThicknessPerMm, strength, float(plan.tsmSize), 1.0f);
     block.size = glm::vec4(float(plan.size), 1.0f / float(std::max(plan.size, 1)), ts.seamBlend,
                            float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS)));
     const glm::mat4& worldFromObject = frame.gpuScene->characters()[static_cast<size_t>(plan.character)].worldFromObject;
@@ -84,6 +87,7 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, 
                 builder.passThrough(d.tsm, black);
                 builder.skipIf(!plan.visible, kOffScreen);
                 builder.skipIf(!frame.scene->settings.ts.tsm, "translucent shadow map off");
+                builder.skipIf(!frame.scene->settings.transmittance.enabled, "transmittance disabled");
                 builder.skipIf(plan.tsmLight < 0, "no shadow-casting light behind the character");
             },
             [&frame, plan](const graph::PassResources& resources, const TsmData& d) {
@@ -201,8 +205,10 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, Frame
         gpu::TextureSpaceBlock block = textureSpaceBlock(frame, plan);
         for (size_t k = 0; k < taps; ++k) block.kernel[k] = glm::vec4(kernel.offsetsSigma[k], kernel.weights[k], 0.0f, 0.0f);
         const float sigmaMm = std::sqrt(std::max(step.stepVarianceMm2, 0.0f) / kernelVariance);
-        const std::string why = !plan.visible ? std::string(kOffScreen)
-                                              : "narrower than " + std::to_string(kMinStepTexels) + " texel where the layout is densest";
+        char narrow[96];
+        std::snprintf(narrow, sizeof narrow, "%.2f texels wide where the layout is densest (under %.2f)",
+                      double(step.widthTexels), double(kMinStepTexels));
+        const std::string why = !plan.visible ? std::string(kOffScreen) : std::string(narrow);
         const auto run = [&frame, plan](const graph::PassResources& resources, const FilterData& d,
                                         const gpu::TextureSpaceBlock& b) {
             bindUvTarget(frame, resources.texture(d.out), plan.size);

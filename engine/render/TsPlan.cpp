@@ -139,7 +139,8 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
         p.size = tsTextureSize(input.mmPerUv * pixelsPerMm, settings.ts.minSize, settings.ts.maxSize);
         planGaussians(p, settings.sss, input.denseMmPerUv);
 
-        if (settings.ts.tsm) p.tsmLight = chooseTsmLight(scene, lights, input.worldBounds);
+        // transmittance.enabled means "light through thin regions" in both modes.
+        if (settings.ts.tsm && settings.transmittance.enabled) p.tsmLight = chooseTsmLight(scene, lights, input.worldBounds);
         if (p.tsmLight >= 0) {
             p.tsmSize = std::clamp(p.size, kMinTsmSize, kMaxTsmSize);
             fitTsm(lights.block.lights[p.tsmLight], input.worldBounds, p);

@@ -23,7 +23,9 @@
 //    it) whose modified translucent shadow map carries light through thin
 //    regions (seed 000 §2.5), with a projection fitted to the character.
 //    Seed 000 applies it for one light; so does this (the irradiance
-//    texture's alpha holds one thickness).
+//    texture's alpha holds one thickness). It needs ts.tsm and
+//    transmittance.enabled, which means "light through thin regions" in
+//    both modes.
 
 #include "core/Result.h"
 #include "render/LightSetup.h"

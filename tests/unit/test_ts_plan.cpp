@@ -144,6 +144,7 @@ TEST(TsPlan, TranslucentShadowMapUsesTheShadowedBackLight) {
     EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-4f);
     EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-4f);
     EXPECT_EQ(plan(defaultScene({"ts.tsm=false"})).characters[0].tsmLight, -1);
+    EXPECT_EQ(plan(defaultScene({"transmittance.enabled=false"})).characters[0].tsmLight, -1);
     EXPECT_EQ(plan(defaultScene({"lights.1.shadow=false"})).characters[0].tsmLight, -1);
     // Seen from behind, the key light is the back light.
     EXPECT_EQ(plan(defaultScene({"camera.position_m=[-0.3,0.1,-0.5]"})).characters[0].tsmLight, 0);

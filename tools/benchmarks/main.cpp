@@ -2,6 +2,7 @@
 // ask for, printed as ratios measured side by side in this one run.
 #include "BenchContext.h"
 #include "LeanBenchmarks.h"
+#include "TsBenchmarks.h"
 
 #include "core/Log.h"
 
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
         std::printf("%-24s %8.0f SSS pixels %8.3f ms  %6.3f ms per 10k SSS pixels\n", layout, pixels, ms,
                     pixels > 0 ? 1e4 * ms / pixels : 0.0);
     }
+    dermis::bench::printTextureSpaceSummary();
     dermis::bench::printLeanSummary();
     return 0;
 }
