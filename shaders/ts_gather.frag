@@ -28,6 +28,11 @@ layout(location = 0) out vec4 oDiffuse;
 void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
     if (objectId != int(uObject.material.y + 0.5)) discard;
+    // A triangle seen from behind (a sliver at a silhouette, a fold of the
+    // mesh): its texels were lit with the normal facing away, while the
+    // G-buffer turned it towards the viewer. The pixel keeps the lighting
+    // pass's irradiance instead, which the accumulation started from.
+    if (!gl_FrontFacing) discard;
 
     int count = int(uTs.size.w);
     float borderMm = vBorderDistanceM * 1000.0;
