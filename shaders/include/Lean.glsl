@@ -167,8 +167,11 @@ LeanLobe leanLobe(vec2 B, vec3 M, vec3 V) {
     mat3 axes = transpose(toMean);  // columns T_m, B_m, N_m in the pixel frame
     mat2 K = mat2((axes[0].xy - B * axes[0].z) / meanNormal.z, (axes[1].xy - B * axes[1].z) / meanNormal.z);
     mat2 inverseK = inverse(K);  // det K = 1 / N_m.z^3 >= 1: always invertible
+    // A congruence of the clamped S: positive definite, its eigenvalues
+    // within a bounded factor of S's (K^-1 is bounded), so the floor on the
+    // determinant only guards rounding.
     mat2 meanCovariance = inverseK * mat2(S.x, S.z, S.z, S.y) * transpose(inverseK);
-    vec3 Sm = leanClampCovariance(vec3(meanCovariance[0][0], meanCovariance[1][1], meanCovariance[0][1]));
+    vec3 Sm = vec3(meanCovariance[0][0], meanCovariance[1][1], meanCovariance[0][1]);
     float determinant = max(Sm.x * Sm.y - Sm.z * Sm.z, kLeanMinVariance * kLeanMinVariance);
 
     LeanLobe lobe;
