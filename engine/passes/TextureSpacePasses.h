@@ -42,6 +42,10 @@ struct TextureSpaceState {
 // e^-5, well inside fp16 (seed 000 listing 2.7 uses 0.1 in its units).
 constexpr float kTsThicknessPerMm = 0.1f;
 
+// The TSM terms use this many of a profile's widest Gaussians (seed 000
+// listing 2.11: three of six).
+constexpr int kTsmGaussians = 3;
+
 // Plans the frame (frame.textureSpace->plan) and declares its passes.
 // `irradiance` is the lighting pass's diffuse irradiance (before the
 // screen-space transmittance).

@@ -51,7 +51,11 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
     block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
     block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
     const float strength = ts.tsmStrength * frame.scene->settings.transmittance.strength;
-    block.tsm = glm::vec4(kTsThicknessPerMm, strength, float(plan.tsmSize), 1.0f);
+    // Seed 000 listing 2.11 adds the TSM terms for the three widest of six
+    // Gaussians: the narrow ones fade within a fraction of a millimetre and
+    // only add speckle where the thickness vanishes at the light's silhouette.
+    const float firstTsmGaussian = float(std::max<int>(1, static_cast<int>(plan.gaussians.size()) - kTsmGaussians));
+    block.tsm = glm::vec4(kTsThicknessPerMm, strength, float(plan.tsmSize), firstTsmGaussian);
     block.size = glm::vec4(float(plan.size), 1.0f / float(std::max(plan.size, 1)), ts.seamBlend,
                            float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS)));
     const glm::mat4& worldFromObject = frame.gpuScene->characters()[static_cast<size_t>(plan.character)].worldFromObject;

@@ -143,17 +143,13 @@ UvLayout analyseUvLayout(const MeshData& mesh) {
     accumulateDerivatives(mesh, out);
     computeBorderDistances(mesh, out);
     std::vector<float> typical;
-    std::vector<float> dense;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         const float u = glm::length(out.dPdu[v]);
         const float w = glm::length(out.dPdv[v]);
-        if (u > 0.0f && w > 0.0f) {
-            typical.push_back(std::sqrt(u * w));
-            dense.push_back(std::min(u, w));
-        }
+        if (u > 0.0f && w > 0.0f) typical.push_back(std::sqrt(u * w));
     }
     out.medianStretch = percentile(typical, 0.5f);
-    out.denseStretch = percentile(std::move(dense), 0.05f);
+    out.denseStretch = percentile(std::move(typical), 0.1f);
     return out;
 }
 

@@ -36,7 +36,9 @@ struct UvLayout {
     // Median over vertices of sqrt(|dP/du| |dP/dv|): the typical object-space
     // length of one UV unit. 0 for a mesh without a usable triangle.
     float medianStretch = 0.0f;
-    // 5th percentile of min(|dP/du|, |dP/dv|): the densest parts of the layout.
+    // The 10th percentile of the same: the dense parts of the layout (a
+    // lower percentile, or min(|dP/du|, |dP/dv|), would be ruled by the
+    // singular points of a layout such as a sphere's poles).
     float denseStretch = 0.0f;
 };
 

@@ -41,7 +41,9 @@
 //   texture i-1 at C (the text: "the alpha channel of convolved irradiance
 //   texture i - 1"), and the term fades to zero as uv_A approaches uv_C,
 //   where the ordinary blur already carries that light: the fix for double
-//   contribution, weight clamp(|uv_C - uv_A| mm / (6 sigma_i), 0, 1).
+//   contribution, weight clamp(|uv_C - uv_A| mm / (6 sigma_i), 0, 1). As in
+//   listing 2.11 only the three widest Gaussians get a TSM term (uTs.tsm.w
+//   is the first).
 //
 // INTEGRATION (passes/TextureSpacePasses.cpp does this)
 //   Every pass binds TextureSpaceBlock (UniformBlocks.glsl, per character)

@@ -52,6 +52,11 @@ TEST(UvLayout, SphereStretchMatchesTheClosedFormAwayFromThePoles) {
     // Vertices are spread evenly in theta, so the median of sin(theta) is sin(45 deg).
     const double median = glm::pi<double>() * r * std::sqrt(2.0 * std::sin(glm::quarter_pi<double>()));
     EXPECT_NEAR(layout.medianStretch, median, 0.03 * median);
+    // Denser than typical, but not ruled by the poles: at least as long as the
+    // first ring's chord (the pole vertices take that of their one triangle).
+    const double firstRing = glm::pi<double>() * r * std::sqrt(2.0 * std::sin(glm::pi<double>() / 32.0));
+    EXPECT_LT(layout.denseStretch, layout.medianStretch);
+    EXPECT_GT(layout.denseStretch, 0.99 * firstRing);
 }
 
 TEST(UvLayout, DegenerateTrianglesGiveFiniteValues) {
