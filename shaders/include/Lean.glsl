@@ -75,8 +75,14 @@
 //   kLeanMinVariance  eigenvalue floor, slope^2 (1e-4: Beckmann m = 0.014,
 //                     smoother than any skin; keeps 1/sqrt(det) finite)
 //   kLeanMaxVariance  eigenvalue ceiling, slope^2 (1e4; fp16 holds M')
-//   kLeanMinCos       floor on the mean normal's n.V / |n| (1/16, the bake's
-//                     n.z floor too), so |B'| <= ~16
+//   kLeanMinCos       floor on the mean normal's n.V / |n| (1/8: 83 degrees
+//                     from the eye ray), so |B'| <= ~8. At silhouettes the
+//                     interpolated normal turns away from the eye, and back
+//                     faces drawn with a flipped normal point the other way:
+//                     neighbours there hold opposite grazing slopes. With
+//                     1/16 a blur mixing them made lone bright pixels on the
+//                     silhouette (a lobe 7x the brightest elsewhere on the
+//                     default head); with 1/8 none is left.
 #ifndef DERMIS_LEAN_GLSL
 #define DERMIS_LEAN_GLSL
 
@@ -84,7 +90,7 @@
 
 const float kLeanMinVariance = 1e-4;
 const float kLeanMaxVariance = 1e4;
-const float kLeanMinCos = 0.0625;
+const float kLeanMinCos = 0.125;
 const float kLeanMaxSlope = sqrt(1.0 - kLeanMinCos * kLeanMinCos) / kLeanMinCos;
 
 // The pixel's frame: rows X, Y, V, so frame * w = (w.X, w.Y, w.V).

@@ -418,3 +418,23 @@ TEST_F(Lean, BilateralBlurLeaksClearlyLessBackdropLightThanTheControl) {
     EXPECT_LT(bilateral.mean, 0.05 * control.mean);  // LBB: at least twenty times less
     EXPECT_LT(bilateral.worst, 0.01);
 }
+
+// The blur mixes the moments of silhouette pixels, whose mean normals turn
+// away from the eye (and back faces drawn with a flipped normal point the
+// other way): the LEAN lobe must not turn such mixtures into lone bright
+// pixels. On the default head the brightest LBB specular stays within 1.5x
+// the brightest KS specular of C (include/Lean.glsl, kLeanMinCos). 960x540
+// because that is where the case was found: with the earlier 1/16 floor one
+// silhouette pixel there reached 0.146 against C's 0.019.
+TEST_F(Lean, SilhouettesMakeNoFireflies) {
+    float brightest[2] = {0.0f, 0.0f};
+    const char* variants[2] = {"c", "lbb"};
+    for (int i = 0; i < 2; ++i) {
+        load("default.json", {std::string("sss.variant=") + variants[i]});
+        const Image specular = render(Aov::Specular, 960, 540);
+        for (const glm::vec4& t : specular.texels) brightest[i] = std::max({brightest[i], t.r, t.g, t.b});
+    }
+    std::printf("[ measured ] default head, brightest specular: C %.4f, LBB %.4f\n", brightest[0], brightest[1]);
+    EXPECT_GT(brightest[0], 0.0f);
+    EXPECT_LT(brightest[1], 1.5f * brightest[0]);
+}
