@@ -34,11 +34,15 @@ void main() {
         oColour = vec4(uFrame.background.rgb, 1.0);
         return;
     }
+    vec4 accumulated = texelFetch(uDiffuse, pixel, 0);
+    vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
+    vec4 lightingSpecular = texelFetch(uSpecular, pixel, 0);
+    vec3 diffuse = outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, accumulated.rgb, normalMaterial, depth);
 #ifdef COMPOSITE_LEAN
-    vec3 specular = leanPixelSpecular(pixel, vUv, depth, uAlbedo, uNormalMaterial, uLeanMoments, uDiffuse, uVisibility,
-                                      uSpecular);
+    vec3 specular = leanPixelSpecular(pixel, vUv, depth, lightingSpecular, accumulated.a, normalMaterial.w,
+                                      uLeanMoments, uVisibility);
 #else
-    vec3 specular = texelFetch(uSpecular, pixel, 0).rgb;
+    vec3 specular = lightingSpecular.rgb;
 #endif
-    oColour = vec4(sanitizeColour(outgoingDiffuse(pixel, depth) + specular), 1.0);
+    oColour = vec4(sanitizeColour(diffuse + specular), 1.0);
 }

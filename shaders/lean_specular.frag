@@ -23,7 +23,8 @@ void main() {
         oSpecular = vec4(0.0);
         return;
     }
-    oSpecular = vec4(leanPixelSpecular(pixel, vUv, depth, uAlbedo, uNormalMaterial, uLeanMoments, uAccumulated,
-                                       uVisibility, uSpecular),
+    oSpecular = vec4(leanPixelSpecular(pixel, vUv, depth, texelFetch(uSpecular, pixel, 0),
+                                       texelFetch(uAccumulated, pixel, 0).a, texelFetch(uNormalMaterial, pixel, 0).w,
+                                       uLeanMoments, uVisibility),
                      1.0);
 }

@@ -5,7 +5,9 @@
 //      the irradiance (include/SssBlur.glsl, include/Lean.glsl). Each light's share is scaled by the energy
 //      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (seed 000 §2.6);
 //      the ambient term by the SSAO.
-//   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur.
+//   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur;
+//      with LIGHTING_LEAN 0 for characters with LEAN maps (their lobe comes
+//      from include/LeanLights.glsl).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -46,7 +48,15 @@ void main() {
         oVisibility = vec4(0.0);
         return;
     }
-    vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
+    vec4 albedoId = texelFetch(uAlbedo, pixel, 0);
+    vec3 albedo = albedoId.rgb;
+#ifdef LIGHTING_LEAN
+    // Characters with LEAN maps take their specular from the LEAN lobe later.
+    int objectId = clamp(int(albedoId.a * 255.0 + 0.5), 0, DERMIS_MAX_CHARACTERS);
+    bool keepSpecular = uCharacters.characters[objectId].params.w < 0.5;
+#else
+    const bool keepSpecular = true;
+#endif
     vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
     float roughness = normalMaterial.z;
     float rhoS = normalMaterial.w;
@@ -75,7 +85,7 @@ void main() {
         }
         float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, nDotL, roughness, rhoS) : 1.0;
         irradiance += radiance * (nDotL * visibility * diffuseShare);
-        specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
+        if (keepSpecular) specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
     }
 
     float mixRatio = uFrame.shading.y;
@@ -85,6 +95,7 @@ void main() {
     float alpha = 1.0;
 #endif
     oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), alpha);
-    oSpecular = vec4(sanitizeColour(specular), 1.0);
+    // Alpha 0 marks a pixel whose specular the LEAN lobe gives (LeanLights.glsl).
+    oSpecular = vec4(sanitizeColour(specular), keepSpecular ? 1.0 : 0.0);
     oVisibility = shadowed;
 }

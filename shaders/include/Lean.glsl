@@ -171,20 +171,20 @@ LeanLobe leanLobe(vec2 B, vec3 M, vec3 V) {
     // unblurred lobe is evaluated exactly where it was defined.
     mat3 toMean = leanFrame(meanNormal);
     mat3 axes = transpose(toMean);  // columns T_m, B_m, N_m in the pixel frame
+    // Sigma_m = K^-1 S K^-T, so Sigma_m^-1 = K^T S^-1 K and det Sigma_m =
+    // det S / det K^2 = det S N_m.z^6 (det K = 1 / N_m.z^3): no inverse of K.
+    // S is clamped, so both are finite and positive.
     mat2 K = mat2((axes[0].xy - B * axes[0].z) / meanNormal.z, (axes[1].xy - B * axes[1].z) / meanNormal.z);
-    mat2 inverseK = inverse(K);  // det K = 1 / N_m.z^3 >= 1: always invertible
-    // A congruence of the clamped S: positive definite, its eigenvalues
-    // within a bounded factor of S's (K^-1 is bounded), so the floor on the
-    // determinant only guards rounding.
-    mat2 meanCovariance = inverseK * mat2(S.x, S.z, S.z, S.y) * transpose(inverseK);
-    vec3 Sm = vec3(meanCovariance[0][0], meanCovariance[1][1], meanCovariance[0][1]);
-    float determinant = max(Sm.x * Sm.y - Sm.z * Sm.z, kLeanMinVariance * kLeanMinVariance);
+    float determinant = S.x * S.y - S.z * S.z;
+    mat2 inverseS = mat2(S.y, -S.z, -S.z, S.x) / determinant;
+    mat2 inverseMean = transpose(K) * inverseS * K;
+    float cube = meanNormal.z * meanNormal.z * meanNormal.z;
 
     LeanLobe lobe;
     lobe.meanFromView = toMean * leanFrame(V);
     lobe.V = lobe.meanFromView * V;
-    lobe.inverseCovariance = vec3(Sm.y, Sm.x, -Sm.z) / determinant;
-    lobe.peak = 1.0 / (2.0 * kPi * sqrt(determinant));
+    lobe.inverseCovariance = vec3(inverseMean[0][0], inverseMean[1][1], inverseMean[0][1]);
+    lobe.peak = 1.0 / (2.0 * kPi * sqrt(determinant) * cube);
     return lobe;
 }
 

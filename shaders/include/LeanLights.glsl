@@ -2,35 +2,36 @@
 // lean_specular.frag (the pass behind the specular AOV) and composite.frag
 // (COMPOSITE_LEAN, the final image), so both compute the same thing.
 //
-// Pixels of characters with LEAN maps (uCharacters params.w) sum over the
-// frame's lights: radiance x the lighting pass's shadow visibility (its
+// Pixels of characters with LEAN maps (uCharacters params.w; the lighting
+// pass marks them with a specular alpha of 0) sum over the frame's lights: radiance x the lighting pass's shadow visibility (its
 // target 2, channel = shadow slot, so no shadow map is filtered twice) x the
 // LEAN lobe of the blurred view-plane moments (include/Lean.glsl). Other
 // pixels keep the lighting pass's Kelemen/Szirmay-Kalos specular.
 //
-// Inputs: the G-buffer's depth (in [0,1]), albedo (a = object id / 255) and
-// normal+material (w = rho_s); the blurred LEAN moments (B'.x, B'.y, M'.xx,
-// M'.yy); the SSS-accumulated irradiance, whose alpha is the blurred M'.xy;
-// the visibility; the lighting pass's specular. Needs Common.glsl and
-// UniformBlocks.glsl first; `uv` is the pixel centre in [0,1]^2.
+// Inputs: the pixel's depth (in [0,1]) and centre `uv` in [0,1]^2, the
+// lighting pass's specular (alpha 0 marks a LEAN pixel), the blurred M'.xy
+// (the SSS-accumulated irradiance's alpha), rho_s (G-buffer normal+material
+// .w), and the textures of the blurred LEAN moments (B'.x, B'.y, M'.xx,
+// M'.yy) and of the visibility. The caller fetches what it shares with the
+// rest of its shader; the two textures are fetched before the branch (on
+// llvmpipe a fetch under divergent control flow costs several times more).
+// Needs Common.glsl and UniformBlocks.glsl first.
 #ifndef DERMIS_LEAN_LIGHTS_GLSL
 #define DERMIS_LEAN_LIGHTS_GLSL
 
 #include "Lights.glsl"
 #include "Lean.glsl"
 
-vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, sampler2D albedo, sampler2D normalMaterial,
-                       sampler2D moments, sampler2D accumulated, sampler2D visibility, sampler2D lightingSpecular) {
-    int objectId = clamp(int(texelFetch(albedo, pixel, 0).a * 255.0 + 0.5), 0, DERMIS_MAX_CHARACTERS);
-    if (uCharacters.characters[objectId].params.w < 0.5) return texelFetch(lightingSpecular, pixel, 0).rgb;
+vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, vec4 lightingSpecular, float crossMoment, float rhoS,
+                       sampler2D moments, sampler2D visibility) {
+    vec4 m = texelFetch(moments, pixel, 0);
+    vec4 lit = texelFetch(visibility, pixel, 0);
+    if (lightingSpecular.a > 0.5) return lightingSpecular.rgb;
 
     vec3 viewPositionM = viewPositionFromDepth(uv, depth, uFrame.viewFromClip);
     vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
     vec3 V = safeNormalize(-viewPositionM, vec3(0.0, 0.0, 1.0));
-    vec4 m = texelFetch(moments, pixel, 0);
-    LeanLobe lobe = leanLobe(m.xy, vec3(m.zw, texelFetch(accumulated, pixel, 0).a), V);
-    float rhoS = texelFetch(normalMaterial, pixel, 0).w;
-    vec4 lit = texelFetch(visibility, pixel, 0);
+    LeanLobe lobe = leanLobe(m.xy, vec3(m.zw, crossMoment), V);
     mat3 viewFromWorld = mat3(uFrame.viewFromWorld);
 
     vec3 specular = vec3(0.0);

@@ -4,18 +4,24 @@
 #ifndef DERMIS_OUTGOING_DIFFUSE_GLSL
 #define DERMIS_OUTGOING_DIFFUSE_GLSL
 
-// The diffuse radiance leaving the surface (also the `diffuse` AOV).
-vec3 outgoingDiffuse(ivec2 pixel, float depth) {
-    vec3 albedo = texelFetch(uAlbedo, pixel, 0).rgb;
-    vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb * albedoPower(albedo, 1.0 - uFrame.shading.y);
+// The diffuse radiance leaving the surface, from the pixel's albedo,
+// SSS-accumulated irradiance and G-buffer normal+material (fetched by the
+// caller, which may need them too: on llvmpipe every fetch counts).
+vec3 outgoingDiffuseOf(vec3 albedo, vec3 accumulated, vec4 normalMaterial, float depth) {
+    vec3 diffuse = accumulated * albedoPower(albedo, 1.0 - uFrame.shading.y);
     if (uFrame.features.x > 0.5) {
-        vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
         vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);
         vec3 N = decodeNormal(normalMaterial.xy);  // view space, like V below
         vec3 V = safeNormalize(-viewPositionM, N);
         diffuse *= energyLeftForDiffuse(uEnergy, clamp(dot(N, V), 0.0, 1.0), normalMaterial.z, normalMaterial.w);
     }
     return diffuse;
+}
+
+// The same, fetching them (also the `diffuse` AOV).
+vec3 outgoingDiffuse(ivec2 pixel, float depth) {
+    return outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, texelFetch(uDiffuse, pixel, 0).rgb,
+                             texelFetch(uNormalMaterial, pixel, 0), depth);
 }
 
 #endif
