@@ -18,15 +18,14 @@ struct GatherData {
 };
 
 graph::TextureHandle addInitPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle irradiance) {
-    const graph::TextureDesc desc{static_cast<uint32_t>(frame.width), static_cast<uint32_t>(frame.height),
-                                  graph::TextureFormat::Rgba16F};
     const bool anyVisible = frame.textureSpace->plan.anyVisible();
     return graph
         .addPass<InitData>(
             "ts init",
             [&](graph::PassBuilder& builder, InitData& d) {
                 d.irradiance = builder.read(irradiance);
-                d.accumulated = builder.create("ts accumulated", desc);
+                // The same format as the irradiance, for the copy.
+                d.accumulated = builder.create("ts accumulated", builder.desc(irradiance));
                 builder.passThrough(d.accumulated, irradiance);
                 builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
                 builder.skipIf(!anyVisible, "no texture-space character on screen");
