@@ -1,5 +1,7 @@
 #include "render/FrameTimings.h"
 
+#include "core/TextFile.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -136,23 +138,7 @@ std::string FrameTimings::toTable(const RunInfo& info) const {
 }
 
 Status FrameTimings::writeJson(const std::string& path, const RunInfo& info) const {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path target(path);
-    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!out) return makeError(path, "cannot write timings file");
-        out << toJson(info);
-        if (!out) return makeError(path, "write failed");
-    }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        return makeError(path, "cannot write timings file");
-    }
-    return success();
+    return writeTextFileAtomically(path, toJson(info));
 }
 
 }  // namespace dermis

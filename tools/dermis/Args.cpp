@@ -1,6 +1,7 @@
 #include "Args.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 namespace dermis::cli {
@@ -71,6 +72,16 @@ Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension)
         return bad("each side must be 1.." + std::to_string(maxDimension));
     }
     return std::make_pair(static_cast<int>(w), static_cast<int>(h));
+}
+
+Result<float> parsePositiveFloat(const std::string& option, const std::string& text) {
+    errno = 0;
+    char* end = nullptr;
+    const float value = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(value) || !(value > 0.0f) || value > 1e4f) {
+        return makeError(option, "expected a number in (0, 10000], got '" + text + "'");
+    }
+    return value;
 }
 
 }  // namespace dermis::cli

@@ -28,6 +28,8 @@ Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::se
                              const std::set<std::string>& switches);
 
 Result<int> parsePositiveInt(const std::string& option, const std::string& text);
+// A finite number in (0, 10000].
+Result<float> parsePositiveFloat(const std::string& option, const std::string& text);
 // "WxH" -> {W, H}; both in 1..maxDimension.
 Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension);
 

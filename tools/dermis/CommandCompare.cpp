@@ -2,21 +2,22 @@
 // mode, the images, a difference heatmap and the metrics (issue 5).
 #include "Args.h"
 #include "Commands.h"
+#include "MeasuredRender.h"
 #include "Session.h"
 
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
-#include "render/Aov.h"
+#include "core/TextFile.h"
 #include "render/Renderer.h"
 
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace dermis::cli {
 namespace {
@@ -36,11 +37,18 @@ const char* const kHelp =
     "  metrics.json      over SSS pixels (characters with a diffusion profile): relative\n"
     "                    RMSE, RMSE, largest difference and PSNR of ts against ss; and each\n"
     "                    mode's per-pass timings (as `dermis render --timings` writes them)\n"
+    "                    and, with --reference, each mode's error against the reference\n"
     "\n"
     "options:\n"
     "  --out DIR           output directory (created if missing); required\n"
     "  --size WxH          frame size in pixels (default 640x360)\n"
     "  --frames N          frames per mode; timings are medians over them (default 5)\n"
+    "  --reference FILE    a CPU reference of the diffuse AOV at the same size (dermis\n"
+    "                      reference SCENE --size WxH --out FILE); metrics.json then holds\n"
+    "                      each mode's relative RMSE, largest difference and PSNR against it\n"
+    "                      over SSS pixels. The reference leaves out SSAO and transmittance:\n"
+    "                      add --set ssao.enabled=false --set transmittance.enabled=false\n"
+    "                      --set ts.tsm=false to compare like with like\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable\n"
     "  --backend NAME      egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --gl-debug          GL debug context; driver errors fail the run\n"
@@ -50,65 +58,18 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene, the GL context or a write fails,\n"
     "2 for bad command-line usage.\n";
 
-struct ModeResult {
-    Image finalImage;
-    Image diffuse;
-    std::string timingsJson;
-};
-
-Result<ModeResult> renderMode(Session& session, const std::string& scenePath, const std::string& mode, int width,
-                              int height, int frames) {
+Result<MeasuredRender> renderMode(Session& session, const std::string& scenePath, const std::string& mode, int width,
+                                  int height, int frames) {
     session.scene->settings.mode = mode;
-    Renderer& renderer = *session.renderer;
-    renderer.resetTimings();
     log::info("rendering " + scenePath + " in mode " + mode);
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < frames; ++i) {
-        if (const Status status = renderer.renderFrame({width, height, Aov::Final}); !status.ok()) return status.error();
-    }
-    glFinish();
-    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    renderer.finishTimings();
-    RunInfo info = session.runInfo(scenePath, width, height, frames);
-    info.wallMsPerFrame = wallMs / frames;
-    ModeResult result;
-    result.timingsJson = renderer.timings().toJson(info);
-    auto finalImage = renderer.readOutput();
-    if (!finalImage.ok()) return finalImage.error();
-    result.finalImage = std::move(*finalImage);
-    if (const Status status = renderer.renderFrame({width, height, Aov::Diffuse}); !status.ok()) return status.error();
-    auto diffuse = renderer.readOutput();
-    if (!diffuse.ok()) return diffuse.error();
-    result.diffuse = std::move(*diffuse);
-    return result;
+    return measureRender(session, scenePath, width, height, frames, /*warmUpFrames=*/0);
 }
 
-// One byte per pixel: 1 where a character with a diffusion profile is seen.
-Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
-    if (const Status status = session.renderer->renderFrame({width, height, Aov::Object}); !status.ok())
-        return status.error();
-    auto ids = session.renderer->readOutput();
-    if (!ids.ok()) return ids.error();
-    std::vector<uint8_t> mask(ids->texels.size(), 0);
-    const auto& characters = session.scene->characters;
-    for (size_t i = 0; i < mask.size(); ++i) {
-        const long id = std::lround(ids->texels[i].r);
-        if (id >= 1 && static_cast<size_t>(id) <= characters.size())
-            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != "none" ? 1 : 0;
-    }
-    return mask;
-}
-
-Status writeText(const std::string& path, const std::string& text) {
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    file << text;
-    return file ? success() : makeError(path, "cannot write");
-}
 
 }  // namespace
 
 int runCompare(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "size", "frames", "set", "backend"}, {"gl-debug", "quiet", "help"});
+    auto args = parseArgs(rawArgs, {"out", "size", "frames", "set", "backend", "reference"}, {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -129,6 +90,13 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
+
+    std::optional<Image> reference;
+    if (args->has("reference")) {
+        auto loaded = loadReferenceImage(args->get("reference", ""), size->first, size->second);
+        if (!loaded.ok()) return failure(loaded.error());
+        reference = std::move(*loaded);
+    }
 
     auto session = Session::open(scenePath, args->all("set"), *backend, args->flags.count("gl-debug") > 0);
     if (!session.ok()) return failure(session.error());
@@ -158,23 +126,29 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     auto difference = compareImages(ss->diffuse, ts->diffuse, *mask);
     double scaleMax = 0.0;
     if (difference.ok()) {
-        // JSON has no infinity: a non-finite figure is written as null.
-        auto finite = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
-        metrics["sss_pixels"] = difference->pixels;
-        metrics["relative_rmse"] = finite(difference->relativeRmse);
-        metrics["rmse"] = finite(difference->rmse);
-        metrics["max_abs_difference"] = finite(difference->maxAbsDifference);
-        metrics["psnr_db"] = finite(difference->psnrDb);
-        metrics["peak"] = finite(difference->peak);
+        metrics.update(differenceJson(*difference));
         // The heatmap's scale tops out at the 99th percentile, so that a few
         // outliers do not leave the rest black; larger differences saturate.
         const double p99 = differencePercentile(ss->diffuse, ts->diffuse, *mask, 0.99);
-        metrics["difference_p99"] = finite(p99);
+        metrics["difference_p99"] = std::isfinite(p99) ? nlohmann::ordered_json(p99) : nlohmann::ordered_json();
         scaleMax = roundUpToNiceNumber(p99);
-        metrics["heatmap_scale_max"] = finite(scaleMax);
+        metrics["heatmap_scale_max"] = scaleMax;
     } else {
         metrics["sss_pixels"] = 0;
         log::warn("no SSS pixel on screen: the metrics are empty");
+    }
+    if (reference) {
+        nlohmann::ordered_json against;
+        against["file"] = args->get("reference", "");
+        for (const auto& [mode, image] : {std::pair<const char*, const Image*>{"ss", &ss->diffuse}, {"ts", &ts->diffuse}}) {
+            auto error = compareImages(*reference, *image, *mask);
+            against[mode] = error.ok() ? differenceJson(*error) : nlohmann::ordered_json();
+            if (error.ok() && !log::quiet()) {
+                std::printf("%s against the reference: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", mode,
+                            error->relativeRmse, error->maxAbsDifference, error->psnrDb);
+            }
+        }
+        metrics["against_reference"] = against;
     }
     metrics["timings"] = {{"ss", nlohmann::json::parse(ss->timingsJson)}, {"ts", nlohmann::json::parse(ts->timingsJson)}};
 
@@ -182,7 +156,7 @@ int runCompare(const std::vector<std::string>& rawArgs) {
         !saved.ok()) {
         return failure(saved.error());
     }
-    if (const Status written = writeText(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok()) {
+    if (const Status written = writeTextFileAtomically(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok()) {
         return failure(written.error());
     }
     if (!log::quiet() && difference.ok()) {

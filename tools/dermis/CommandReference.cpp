@@ -52,16 +52,6 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene or its content fails to load or the file\n"
     "cannot be written, 2 for bad command-line usage. On failure no output file is written.\n";
 
-Result<float> parsePositiveFloat(const std::string& option, const std::string& text) {
-    errno = 0;
-    char* end = nullptr;
-    const float value = std::strtof(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(value) || !(value > 0.0f) || value > 1e4f) {
-        return makeError(option, "expected a number in (0, 10000], got '" + text + "'");
-    }
-    return value;
-}
-
 }  // namespace
 
 int runReference(const std::vector<std::string>& rawArgs) {

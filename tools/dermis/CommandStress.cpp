@@ -5,6 +5,7 @@
 #include "Session.h"
 
 #include "core/Log.h"
+#include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "gl/NonFiniteCounter.h"
 #include "render/Renderer.h"
@@ -149,15 +150,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["seconds"] = seconds;
     summary["failures"] = failures;
 
-    const std::filesystem::path out(outPath);
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-    {
-        std::ofstream file(outPath + ".tmp");
-        file << summary.dump(2) << "\n";
-        if (!file) return failure(makeError(outPath, "cannot write the summary"));
-    }
-    std::filesystem::rename(outPath + ".tmp", outPath, ec);
-    if (ec) return failure(makeError(outPath, "cannot write the summary"));
+    if (const Status written = writeTextFileAtomically(outPath, summary.dump(2) + "\n"); !written.ok())
+        return failure(written.error());
 
     std::printf("%d cases in %.1f s: %d failed, %llu non-finite texels, largest finite value %.3g (%s)\n", *cases,
                 seconds, failed, static_cast<unsigned long long>(totalNonFinite), largest, outPath.c_str());

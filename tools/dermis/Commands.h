@@ -17,6 +17,7 @@ int runRender(const std::vector<std::string>& args);
 int runStress(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
+int runBench(const std::vector<std::string>& args);
 int runBakeLean(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();

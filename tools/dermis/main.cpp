@@ -15,6 +15,7 @@ const std::vector<Command>& commands() {
         {"stress", "fuzz scenes and settings; count non-finite texels in every pass's targets", runStress},
         {"compare", "render one frame in screen-space and texture-space SSS: images, heatmap, metrics", runCompare},
         {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},
+        {"bench", "run time against error: sweep the quality knobs of both modes against the CPU reference", runBench},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };

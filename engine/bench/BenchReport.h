@@ -1,0 +1,50 @@
+#pragma once
+// What `dermis bench` writes: results.csv (one row per configuration),
+// passes.csv (per-pass GPU ms of each), summary.json (the shipped defaults'
+// error and the cheapest configurations under error limits), and the plots,
+// which tools/plot_bench.py draws from those files.
+
+#include "core/Result.h"
+#include "render/FrameTimings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis::bench {
+
+struct BenchRow {
+    int id = 0;
+    std::string mode;   // "ss" or "ts"
+    std::string label;  // the swept values, "default" for the shipped settings
+    bool isDefault = false;
+    bool onParetoFront = false;  // within its mode
+    int width = 0;
+    int height = 0;
+    int frames = 0;
+    double frameGpuMs = 0.0;  // median over the frames of the sum over passes
+    double sssGpuMs = 0.0;    // the mode's own passes (sss ..., transmittance, ts ...), medians summed
+    double wallMs = 0.0;      // per frame
+    double relativeRmse = 0.0;
+    double maxAbsDifference = 0.0;
+    double psnrDb = 0.0;
+    std::vector<std::string> overrides;  // the --set strings of the configuration
+    std::vector<PassSummary> passes;     // executed passes
+};
+
+// True for the passes that a mode adds for subsurface scattering.
+bool isSssPass(const std::string& passName);
+
+// Marks each row's onParetoFront (frame GPU ms against relative RMSE, per mode).
+void markParetoFronts(std::vector<BenchRow>& rows);
+
+std::string resultsCsv(const std::vector<BenchRow>& rows);
+std::string passesCsv(const std::vector<BenchRow>& rows);
+
+// Per mode: the default row, the most accurate one, and the cheapest whose
+// relative RMSE is at most `errorLimit` (absolute, against the reference) and
+// at most the most accurate one's + `errorLimit` (null where none is).
+nlohmann::ordered_json benchSummary(const std::vector<BenchRow>& rows, double errorLimit);
+
+}  // namespace dermis::bench

@@ -1,0 +1,14 @@
+#pragma once
+// Writing a whole text file so that a failure never leaves a partial one: the
+// text goes to a temporary file beside the target, which is then renamed.
+
+#include "core/Result.h"
+
+#include <string>
+
+namespace dermis {
+
+// Creates missing parent directories. Errors name the path.
+Status writeTextFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace dermis

@@ -1,0 +1,148 @@
+// `dermis bench` and `dermis compare --reference`: run time against error
+// against the CPU reference, from the command line (issue 6).
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+using dermis::test::ProcessResult;
+using dermis::test::runProcess;
+using dermis::test::TempDir;
+
+namespace {
+
+const std::string kDermis = DERMIS_BINARY;
+const std::string kScene = dermis::test::contentDir() + "/scenes/default.json";
+// Tiny on purpose: the reference at density 1 and one frame per configuration.
+const std::string kSmall = " --size 64x36 --frames 1 --density 1 --quiet";
+const std::string kSweep = " --sweep 'ss:sss.taps=5,9;ts:ts.min_size+ts.max_size=256'";
+
+bool matplotlibAvailable() { return std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0; }
+
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& path) {
+    std::istringstream in(dermis::test::readTextFile(path));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    for (std::istringstream h(line); std::getline(h, line, ',');) header.push_back(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        // The test's labels and overrides hold no commas, so no field is quoted.
+        std::map<std::string, std::string> row;
+        std::istringstream fields(line);
+        for (const std::string& name : header) std::getline(fields, row[name], ',');
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
+    TempDir dir;
+    const std::string out = dir.file("bench");
+    const bool plots = matplotlibAvailable();
+    if (!plots) std::fprintf(stderr, "python3-matplotlib is missing: the plots are not checked\n");
+    const ProcessResult r = runProcess(kDermis + " bench " + kScene + " --out " + out + kSmall + kSweep +
+                                       (plots ? "" : " --no-plots"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+
+    const auto rows = readCsv(out + "/results.csv");
+    // ss: the default (9 taps, so the swept taps=9 is the same configuration) and
+    // taps=5; ts: the default and 256^2.
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(rows[0].at("mode"), "ss");
+    EXPECT_EQ(rows[0].at("label"), "default");
+    EXPECT_EQ(rows[0].at("default"), "1");
+    EXPECT_EQ(rows[1].at("label"), "taps=5");
+    EXPECT_EQ(rows[2].at("mode"), "ts");
+    EXPECT_EQ(rows[3].at("overrides"), "mode=ts ts.min_size=256 ts.max_size=256");
+    int onFront[2] = {0, 0};
+    for (const auto& row : rows) {
+        const double error = std::stod(row.at("relative_rmse"));
+        EXPECT_GT(error, 0.0) << row.at("label");
+        EXPECT_LT(error, 0.5) << row.at("label");
+        EXPECT_GT(std::stod(row.at("frame_gpu_ms")), 0.0);
+        EXPECT_GT(std::stod(row.at("psnr_db")), 15.0);
+        onFront[row.at("mode") == "ts"] += row.at("pareto") == "1";
+    }
+    EXPECT_GE(onFront[0], 1);
+    EXPECT_GE(onFront[1], 1);
+    // The texture-space rows run texture-space passes, the screen-space ones do not.
+    const std::string passes = dermis::test::readTextFile(out + "/passes.csv");
+    EXPECT_NE(passes.find("\n2,ts,ts head irradiance,"), std::string::npos);
+    EXPECT_EQ(passes.find("\n0,ss,ts "), std::string::npos);
+
+    const nlohmann::json summary = nlohmann::json::parse(dermis::test::readTextFile(out + "/summary.json"));
+    EXPECT_GT(summary["sss_pixels"].get<int>(), 100);
+    EXPECT_EQ(summary["modes"]["ss"]["default"]["id"], 0);
+    EXPECT_EQ(summary["modes"]["ts"]["default"]["id"], 2);
+    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/reference.exr"));
+    if (plots) {
+        for (const char* png : {"pareto.png", "passes.png"}) EXPECT_GT(std::filesystem::file_size(out + "/" + png), 10000u) << png;
+    }
+
+    // The reference is reused, and the same frames give the same errors.
+    const std::string again = dir.file("again");
+    const ProcessResult reuse = runProcess(kDermis + " bench " + kScene + " --out " + again + kSmall +
+                                           " --no-plots --sweep 'ss:sss.taps=5' --reference " + out + "/reference.exr");
+    ASSERT_EQ(reuse.exitCode, 0) << reuse.err;
+    const auto reused = readCsv(again + "/results.csv");
+    ASSERT_EQ(reused.size(), 2u);
+    EXPECT_NEAR(std::stod(reused[1].at("relative_rmse")), std::stod(rows[1].at("relative_rmse")), 1e-5);
+    EXPECT_FALSE(std::filesystem::exists(again + "/reference.exr"));
+    EXPECT_FALSE(std::filesystem::exists(again + "/pareto.png"));
+
+    // compare --reference: each mode's error against the same reference.
+    const ProcessResult compared = runProcess(kDermis + " compare " + kScene + " --out " + dir.file("cmp") +
+                                              " --size 64x36 --frames 1 --quiet --reference " + out + "/reference.exr" +
+                                              " --set ssao.enabled=false --set transmittance.enabled=false --set ts.tsm=false");
+    ASSERT_EQ(compared.exitCode, 0) << compared.err;
+    const nlohmann::json metrics = nlohmann::json::parse(dermis::test::readTextFile(dir.file("cmp") + "/metrics.json"));
+    for (const char* mode : {"ss", "ts"}) {
+        const double error = metrics["against_reference"][mode]["relative_rmse"].get<double>();
+        EXPECT_GT(error, 0.0) << mode;
+        EXPECT_LT(error, 0.5) << mode;
+    }
+    EXPECT_NEAR(metrics["against_reference"]["ss"]["relative_rmse"].get<double>(),
+                std::stod(rows[0].at("relative_rmse")), 1e-5);
+}
+
+TEST(BenchCli, BadInputFailsBeforeAnythingIsWritten) {
+    TempDir dir;
+    const std::string out = dir.file("bench");
+    struct Case {
+        std::string arguments;
+        int exitCode;
+        std::string message;
+    };
+    const Case cases[] = {
+        {kScene + " --sweep 'ss:sss.taps=5,,9'", 2, "--sweep ss:sss.taps=5,,9: axis has an empty value"},
+        {kScene + " --sweep 'camera.near_m=1'", 2, "settings only"},
+        {kScene + " --sweep 'ss:sss.taps=4'", 1, "must be an odd number"},
+        {kScene + " --size 64x36 --reference " + dir.file("missing.exr"), 1, "missing.exr"},
+        {dir.file("nope.json"), 1, "nope.json"},
+        {kScene + " --frames 0", 2, "--frames"},
+    };
+    for (const Case& c : cases) {
+        const ProcessResult r = runProcess(kDermis + " bench " + c.arguments + " --out " + out + " --quiet");
+        EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.arguments << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out + "/results.csv")) << c.arguments;
+    }
+    const ProcessResult noOut = runProcess(kDermis + " bench " + kScene + " --quiet");
+    EXPECT_EQ(noOut.exitCode, 2);
+    EXPECT_NE(noOut.err.find("--out DIR is required"), std::string::npos);
+
+    // A reference of another size is refused with the size it should have.
+    const std::string small = dir.file("small.exr");
+    ASSERT_EQ(runProcess(kDermis + " reference " + kScene + " --size 16x9 --density 1 --quiet --out " + small).exitCode, 0);
+    const ProcessResult wrongSize =
+        runProcess(kDermis + " bench " + kScene + " --size 64x36 --quiet --out " + out + " --reference " + small);
+    EXPECT_EQ(wrongSize.exitCode, 1);
+    EXPECT_NE(wrongSize.err.find("the reference is 16x9 but the frame is 64x36"), std::string::npos) << wrongSize.err;
+}

@@ -1,0 +1,287 @@
+// dermis bench: run time against error. Sweeps the quality knobs of both SSS
+// modes, times each configuration and measures its error against the CPU
+// reference (issue 6).
+#include "Args.h"
+#include "Commands.h"
+#include "MeasuredRender.h"
+#include "Session.h"
+
+#include "bench/BenchReport.h"
+#include "bench/SweepSpec.h"
+#include "core/Image.h"
+#include "core/ImageMetrics.h"
+#include "core/ImageResample.h"
+#include "core/Log.h"
+#include "core/TextFile.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene/SceneLoader.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+namespace dermis::cli {
+namespace {
+
+using bench::BenchRow;
+
+// The reference leaves out SSAO and transmittance (reference/ReferenceRenderer.h),
+// so every configuration is rendered without them: like is compared with like.
+const std::vector<std::string> kReferenceDefinition = {"ssao.enabled=false", "transmittance.enabled=false",
+                                                       "ts.tsm=false"};
+constexpr int kFirstWarmUpFrames = 3;
+constexpr double kErrorLimit = 0.02;  // "the cheapest setting within 2% relative RMSE" (issue 6)
+
+const char* const kHelp =
+    "usage: dermis bench SCENE --out DIR [options]\n"
+    "\n"
+    "Run time against error. Renders SCENE in many quality configurations of both SSS\n"
+    "modes; for each, takes the median GPU ms per frame over N frames and the error of\n"
+    "the diffuse AOV against the CPU reference (dermis reference) over SSS pixels.\n"
+    "Every configuration is rendered with SSAO, transmittance and the translucent\n"
+    "shadow map off, because the reference leaves them out. Writes into DIR:\n"
+    "  reference.exr   the CPU reference (unless --reference gives one)\n"
+    "  results.csv     one row per configuration: mode, swept values, whether it is the\n"
+    "                  shipped default and on its mode's Pareto front, frame and SSS GPU\n"
+    "                  ms, relative RMSE, largest difference, PSNR, its --set overrides\n"
+    "  passes.csv      the median GPU ms of every pass of every configuration\n"
+    "  summary.json    per mode: the default's error, the most accurate configuration,\n"
+    "                  the cheapest within 2% relative RMSE of the reference and within\n"
+    "                  2% of the most accurate one; the machine and the sweep\n"
+    "  pareto.png      relative RMSE against frame GPU ms, both modes, fronts marked\n"
+    "  passes.png      stacked per-pass GPU ms of the fronts' and the default configurations\n"
+    "\n"
+    "options:\n"
+    "  --out DIR          output directory (created if missing); required\n"
+    "  --sweep SPEC       what to vary, ';'-separated axes [ss:|ts:]KEY=V1,V2,...; KEY is a\n"
+    "                     settings path as --set takes it, several joined by '+', or `scale`\n"
+    "                     (render at scale x the size, resample the result back). Default:\n"
+    "                     DEFAULT_SWEEP\n"
+    "                     The shipped default settings of each swept mode are always measured.\n"
+    "  --size WxH         the compared frame size (default 320x180)\n"
+    "  --frames N         timed frames per configuration, after one warm-up (default 5)\n"
+    "  --reference FILE   an existing reference .exr of this scene at --size (skips computing it)\n"
+    "  --density N        the reference's sample density when it is computed (default 8)\n"
+    "  --set PATH=VALUE   override a scene value for every configuration; repeatable\n"
+    "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
+    "  --no-plots         write the CSV and JSON files only (no Python needed)\n"
+    "  --quiet            no progress\n"
+    "  --help             this text\n"
+    "\n"
+    "The plots are drawn by tools/plot_bench.py with matplotlib (Debian: python3-matplotlib).\n"
+    "Exit status: 0 on success, 1 when the scene, a configuration, the reference, a write or\n"
+    "the plotting fails, 2 for bad command-line usage. Every configuration is checked before\n"
+    "anything is rendered.\n";
+
+struct PlannedConfig {
+    bench::SweepConfig sweep;
+    Scene scene;  // the scene file with the reference definition, --set and the configuration applied
+    bool isDefault = false;
+};
+
+// Loads every configuration (so a bad value fails before hours of work), adds
+// each swept mode's shipped defaults and drops configurations that are the same.
+Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, const std::vector<std::string>& base,
+                                               const std::vector<bench::SweepConfig>& sweep) {
+    std::vector<PlannedConfig> planned;
+    std::map<std::string, size_t> seen;  // settings JSON + scale -> index
+    auto add = [&](const bench::SweepConfig& config, bool isDefault) -> Status {
+        std::vector<std::string> overrides = base;
+        overrides.insert(overrides.end(), config.overrides.begin(), config.overrides.end());
+        auto scene = loadScene(scenePath, overrides);
+        if (!scene.ok()) {
+            return makeError(scene.error().where, scene.error().what + " (in the configuration " + config.mode + " " +
+                                                      config.label + ")");
+        }
+        const std::string identity = sceneToJson(*scene) + "@" + std::to_string(config.scale);
+        if (auto found = seen.find(identity); found != seen.end()) {
+            planned[found->second].isDefault = planned[found->second].isDefault || isDefault;
+            return success();
+        }
+        seen[identity] = planned.size();
+        planned.push_back({config, std::move(*scene), isDefault});
+        if (isDefault) planned.back().sweep.label = "default";
+        return success();
+    };
+    for (const char* mode : {"ss", "ts"}) {
+        bool swept = false;
+        for (const auto& config : sweep) swept = swept || config.mode == mode;
+        if (!swept) continue;
+        bench::SweepConfig shipped;
+        shipped.mode = mode;
+        shipped.overrides = {std::string("mode=") + mode};
+        if (Status ok = add(shipped, true); !ok.ok()) return ok.error();
+        for (const auto& config : sweep) {
+            if (config.mode != mode) continue;
+            if (Status ok = add(config, false); !ok.ok()) return ok.error();
+        }
+    }
+    return planned;
+}
+
+Result<Image> computeReference(const std::string& scenePath, const std::vector<std::string>& base, int width,
+                               int height, float density, const std::string& outPath) {
+    auto scene = loadScene(scenePath, base);
+    if (!scene.ok()) return scene.error();
+    reference::ReferenceOptions options;
+    options.quadrature.density = density;
+    options.showProgress = !log::quiet();
+    log::info("bench: computing the CPU reference at " + std::to_string(width) + "x" + std::to_string(height) +
+              " (dermis reference; pass it back with --reference to skip this)");
+    auto renderer = reference::ReferenceRenderer::load(*scene, options);
+    if (!renderer.ok()) return renderer.error();
+    Image image = renderer->renderDiffuse(width, height);
+    if (Status saved = saveImage(outPath, image); !saved.ok()) return saved.error();
+    return image;
+}
+
+std::string pythonInterpreter() {
+    // Debian's interpreter has Debian's matplotlib; a python3 earlier on PATH
+    // (pyenv, a virtualenv) may not.
+    return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+Status drawPlots(const std::filesystem::path& outDir) {
+    const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_bench.py";
+    const std::string command = pythonInterpreter() + " '" + script + "' '" + outDir.string() + "'";
+    const int status = std::system(command.c_str());
+    if (status != 0) {
+        return makeError(script, "plotting failed (it needs python3 with matplotlib: apt-get install python3-matplotlib); "
+                                 "the CSV and JSON files are written, --no-plots skips the plots");
+    }
+    return success();
+}
+
+double sssGpuMs(const std::vector<PassSummary>& passes) {
+    double total = 0.0;
+    for (const PassSummary& pass : passes) total += bench::isSssPass(pass.name) ? pass.gpuMs : 0.0;
+    return total;
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& rawArgs) {
+    auto args = parseArgs(rawArgs, {"out", "sweep", "size", "frames", "reference", "density", "set", "backend"},
+                          {"no-plots", "quiet", "help"});
+    if (!args.ok()) return usageError(args.error());
+    if (args->flags.count("help")) {
+        std::string help = kHelp;
+        help.replace(help.find("DEFAULT_SWEEP"), std::string("DEFAULT_SWEEP").size(), bench::kDefaultSweepSpec);
+        std::fputs(help.c_str(), stdout);
+        return 0;
+    }
+    if (args->positional.size() != 1) return usageError(makeError("bench", "expected exactly one SCENE file"));
+    if (!args->has("out")) return usageError(makeError("bench", "--out DIR is required"));
+    log::setQuiet(args->flags.count("quiet") > 0);
+    const std::string scenePath = args->positional[0];
+    const std::filesystem::path outDir = args->get("out", "");
+    auto size = parseSize(args->get("size", "320x180"), kMaxFrameDimension);
+    if (!size.ok()) return usageError(size.error());
+    auto frames = parsePositiveInt("--frames", args->get("frames", "5"));
+    if (!frames.ok()) return usageError(frames.error());
+    auto density = parsePositiveFloat("--density", args->get("density", "8"));
+    if (!density.ok()) return usageError(density.error());
+    auto backend = parseBackend(args->get("backend", "auto"));
+    if (!backend.ok()) return usageError(backend.error());
+    auto axes = bench::parseSweepSpec(args->get("sweep", bench::kDefaultSweepSpec));
+    if (!axes.ok()) return usageError(axes.error());
+    auto sweep = bench::expandSweep(*axes);
+    if (!sweep.ok()) return usageError(sweep.error());
+    const int width = size->first;
+    const int height = size->second;
+
+    std::vector<std::string> base = kReferenceDefinition;
+    for (const std::string& change : args->all("set")) base.push_back(change);
+    auto planned = planConfigs(scenePath, base, *sweep);
+    if (!planned.ok()) return failure(planned.error());
+
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
+    auto file = [&](const char* name) { return (outDir / name).string(); };
+
+    Result<Image> reference = args->has("reference")
+                                  ? loadReferenceImage(args->get("reference", ""), width, height)
+                                  : computeReference(scenePath, base, width, height, *density, file("reference.exr"));
+    if (!reference.ok()) return failure(reference.error());
+
+    auto session = Session::open(scenePath, base, *backend, false);
+    if (!session.ok()) return failure(session.error());
+    auto mask = sssMask(*session, width, height);
+    if (!mask.ok()) return failure(mask.error());
+
+    log::info("bench: " + std::to_string(planned->size()) + " configurations of " + scenePath + " at " +
+              std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(*frames) + " frames each");
+    std::vector<BenchRow> rows;
+    for (size_t i = 0; i < planned->size(); ++i) {
+        const PlannedConfig& config = (*planned)[i];
+        session->scene->settings = config.scene.settings;
+        const int w = std::max(1, static_cast<int>(std::lround(width * config.sweep.scale)));
+        const int h = std::max(1, static_cast<int>(std::lround(height * config.sweep.scale)));
+        // The first configuration also warms up the process (first use of every
+        // program, the shadow maps' cache).
+        auto measured = measureRender(*session, scenePath, w, h, *frames, i == 0 ? kFirstWarmUpFrames : 1);
+        if (!measured.ok()) return failure(measured.error());
+        const Image diffuse = (w == width && h == height) ? measured->diffuse : resampleImage(measured->diffuse, width, height);
+        auto error = compareImages(*reference, diffuse, *mask);
+        if (!error.ok()) return failure(error.error());
+
+        BenchRow row;
+        row.id = static_cast<int>(i);
+        row.mode = config.sweep.mode;
+        row.label = config.sweep.label.empty() ? "default" : config.sweep.label;
+        row.isDefault = config.isDefault;
+        row.width = w;
+        row.height = h;
+        row.frames = *frames;
+        for (const PassSummary& pass : measured->timings.summary()) {
+            if (pass.executed) row.passes.push_back(pass);
+        }
+        row.frameGpuMs = measured->timings.frameGpuMs();
+        row.sssGpuMs = sssGpuMs(row.passes);
+        row.wallMs = nlohmann::json::parse(measured->timingsJson)["frame"]["wall_ms"].get<double>();
+        row.relativeRmse = error->relativeRmse;
+        row.maxAbsDifference = error->maxAbsDifference;
+        row.psnrDb = error->psnrDb;
+        row.overrides = config.sweep.overrides;
+        rows.push_back(std::move(row));
+        if (!log::quiet()) {
+            std::printf("[%zu/%zu] %s %-40s %8.1f ms  relative RMSE %6.2f%%\n", i + 1, planned->size(),
+                        rows.back().mode.c_str(), rows.back().label.c_str(), rows.back().frameGpuMs,
+                        100.0 * rows.back().relativeRmse);
+            std::fflush(stdout);
+        }
+    }
+    bench::markParetoFronts(rows);
+
+    nlohmann::ordered_json summary;
+    summary["scene"] = scenePath;
+    summary["width"] = width;
+    summary["height"] = height;
+    summary["frames"] = *frames;
+    summary["renderer"] = session->context->renderer();
+    summary["sweep"] = args->get("sweep", bench::kDefaultSweepSpec);
+    summary["every_configuration"] = base;
+    summary["reference"] = args->has("reference") ? args->get("reference", "") : file("reference.exr");
+    summary["sss_pixels"] = std::count(mask->begin(), mask->end(), uint8_t{1});
+    summary["modes"] = bench::benchSummary(rows, kErrorLimit);
+    for (const auto& [name, text] : {std::pair<const char*, std::string>{"results.csv", bench::resultsCsv(rows)},
+                                     {"passes.csv", bench::passesCsv(rows)},
+                                     {"summary.json", summary.dump(2) + "\n"}}) {
+        if (Status written = writeTextFileAtomically(file(name), text); !written.ok()) return failure(written.error());
+    }
+    if (!args->flags.count("no-plots")) {
+        if (Status plotted = drawPlots(outDir); !plotted.ok()) return failure(plotted.error());
+    }
+    for (const auto& [mode, entry] : summary["modes"].items()) {
+        if (log::quiet() || entry["default"].is_null()) continue;
+        std::printf("%s default: %.1f ms, relative RMSE %.2f%%\n", mode.c_str(), entry["default"]["frame_gpu_ms"].get<double>(),
+                    100.0 * entry["default"]["relative_rmse"].get<double>());
+    }
+    log::info("wrote " + outDir.string());
+    return 0;
+}
+
+}  // namespace dermis::cli

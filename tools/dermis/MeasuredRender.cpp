@@ -1,0 +1,81 @@
+#include "MeasuredRender.h"
+
+#include "core/Log.h"
+#include "render/Aov.h"
+#include "render/Renderer.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace dermis::cli {
+
+Result<MeasuredRender> measureRender(Session& session, const std::string& scenePath, int width, int height,
+                                     int frames, int warmUpFrames) {
+    Renderer& renderer = *session.renderer;
+    for (int i = 0; i < warmUpFrames; ++i) {
+        if (const Status status = renderer.renderFrame({width, height, Aov::Final}); !status.ok()) return status.error();
+    }
+    renderer.finishTimings();
+    renderer.resetTimings();
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < frames; ++i) {
+        if (const Status status = renderer.renderFrame({width, height, Aov::Final}); !status.ok()) return status.error();
+    }
+    glFinish();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    renderer.finishTimings();
+    RunInfo info = session.runInfo(scenePath, width, height, frames);
+    info.wallMsPerFrame = wallMs / frames;
+    MeasuredRender result;
+    result.timings = renderer.timings();
+    result.timingsJson = result.timings.toJson(info);
+    auto finalImage = renderer.readOutput();
+    if (!finalImage.ok()) return finalImage.error();
+    result.finalImage = std::move(*finalImage);
+    if (const Status status = renderer.renderFrame({width, height, Aov::Diffuse}); !status.ok()) return status.error();
+    auto diffuse = renderer.readOutput();
+    if (!diffuse.ok()) return diffuse.error();
+    result.diffuse = std::move(*diffuse);
+    return result;
+}
+
+Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
+    if (const Status status = session.renderer->renderFrame({width, height, Aov::Object}); !status.ok())
+        return status.error();
+    auto ids = session.renderer->readOutput();
+    if (!ids.ok()) return ids.error();
+    std::vector<uint8_t> mask(ids->texels.size(), 0);
+    const auto& characters = session.scene->characters;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        const long id = std::lround(ids->texels[i].r);
+        if (id >= 1 && static_cast<size_t>(id) <= characters.size())
+            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != "none" ? 1 : 0;
+    }
+    return mask;
+}
+
+Result<Image> loadReferenceImage(const std::string& path, int width, int height) {
+    auto image = loadImage(path, ColourSpace::Linear);
+    if (!image.ok()) return image.error();
+    if (image->width != width || image->height != height) {
+        return makeError(path, "the reference is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
+                                   " but the frame is " + std::to_string(width) + "x" + std::to_string(height) +
+                                   " (make it with dermis reference --size " + std::to_string(width) + "x" +
+                                   std::to_string(height) + ")");
+    }
+    return image;
+}
+
+nlohmann::ordered_json differenceJson(const ImageDifference& difference) {
+    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); };
+    nlohmann::ordered_json json;
+    json["sss_pixels"] = difference.pixels;
+    json["relative_rmse"] = finite(difference.relativeRmse);
+    json["rmse"] = finite(difference.rmse);
+    json["max_abs_difference"] = finite(difference.maxAbsDifference);
+    json["psnr_db"] = finite(difference.psnrDb);
+    json["peak"] = finite(difference.peak);
+    return json;
+}
+
+}  // namespace dermis::cli

@@ -1,0 +1,44 @@
+#pragma once
+// Rendering one frame of a session's scene the way `compare` and `bench`
+// measure it: N timed frames (medians), the final image, the linear diffuse
+// AOV, and which pixels belong to characters with a diffusion profile.
+
+#include "Session.h"
+
+#include "core/Image.h"
+#include "core/ImageMetrics.h"
+#include "core/Result.h"
+#include "render/FrameTimings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dermis::cli {
+
+struct MeasuredRender {
+    Image finalImage;      // tone-mapped, after the timed frames
+    Image diffuse;         // the diffuse AOV (linear), one more frame
+    FrameTimings timings;  // the timed frames only
+    std::string timingsJson;
+};
+
+// `warmUpFrames` are rendered and not timed (shader variants, cached shadow
+// maps, texture pools settle); then `frames` timed ones.
+Result<MeasuredRender> measureRender(Session& session, const std::string& scenePath, int width, int height,
+                                     int frames, int warmUpFrames);
+
+// One byte per pixel: 1 where a character with a diffusion profile is seen.
+Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height);
+
+// A linear float image of exactly width x height (the CPU reference), or an
+// error naming the file and the size it should have.
+Result<Image> loadReferenceImage(const std::string& path, int width, int height);
+
+// relative_rmse, rmse, max_abs_difference, psnr_db, peak, sss_pixels; JSON
+// has no infinity, so a non-finite figure is written as null.
+nlohmann::ordered_json differenceJson(const ImageDifference& difference);
+
+}  // namespace dermis::cli

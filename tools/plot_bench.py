@@ -1,0 +1,154 @@
+#!/usr/bin/env python3
+"""Plots for `dermis bench` (issue 6): reads DIR/results.csv, DIR/passes.csv and
+DIR/summary.json, which the bench writes, and draws
+
+  DIR/pareto.png  relative RMSE against the reference over frame GPU ms, one
+                  colour per mode, each mode's Pareto front joined by a line,
+                  the shipped defaults ringed;
+  DIR/passes.png  stacked GPU ms per pass group of the configurations on the
+                  fronts and the defaults.
+
+usage: plot_bench.py DIR     (needs matplotlib; Debian: python3-matplotlib)
+"""
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+MODE_STYLE = {"ss": ("tab:blue", "screen space"), "ts": ("tab:red", "texture space")}
+
+# Pass names (render/Renderer and passes/*) grouped so that a bar has a few
+# readable layers instead of forty: the first prefix that matches wins.
+PASS_GROUPS = [
+    ("shadow", ("shadow",)),
+    ("G-buffer", ("gbuffer",)),
+    ("SSAO", ("ssao",)),
+    ("lighting", ("lighting", "lean")),
+    ("SS blurs", ("sss ",)),
+    ("transmittance", ("transmittance",)),
+    ("TS stretch + TSM", ("ts ",)),  # refined below for irradiance and blurs
+    ("composite + tonemap", ("composite", "tonemap", "aov")),
+]
+
+
+def pass_group(name):
+    if name.startswith("ts "):
+        if " irradiance" in name or " dilate" in name:
+            return "TS irradiance"
+        if " g" in name and (name.endswith(" u") or name.endswith(" v")):
+            return "TS blurs"
+        if " gather" in name or name == "ts init":
+            return "TS gather"
+        return "TS stretch + TSM"
+    for group, prefixes in PASS_GROUPS:
+        if name.startswith(prefixes):
+            return group
+    return "other"
+
+
+GROUP_ORDER = ["shadow", "G-buffer", "SSAO", "lighting", "SS blurs", "transmittance", "TS stretch + TSM",
+               "TS irradiance", "TS blurs", "TS gather", "composite + tonemap", "other"]
+
+
+def read_rows(directory):
+    with open(os.path.join(directory, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    for row in rows:
+        for key in ("frame_gpu_ms", "relative_rmse"):
+            row[key] = float(row[key])
+        row["default"] = row["default"] == "1"
+        row["pareto"] = row["pareto"] == "1"
+    return rows
+
+
+def save(figure, path):
+    temporary = path + ".tmp.png"
+    figure.savefig(temporary, dpi=110)
+    os.replace(temporary, path)
+    plt.close(figure)
+
+
+def plot_pareto(rows, summary, path):
+    figure, axes = plt.subplots(figsize=(9, 6))
+    for mode, (colour, name) in MODE_STYLE.items():
+        mine = [r for r in rows if r["mode"] == mode]
+        if not mine:
+            continue
+        axes.scatter([r["frame_gpu_ms"] for r in mine], [100 * r["relative_rmse"] for r in mine], s=18,
+                     color=colour, alpha=0.45, label=f"{name}: every configuration")
+        front = sorted((r for r in mine if r["pareto"]), key=lambda r: r["frame_gpu_ms"])
+        axes.plot([r["frame_gpu_ms"] for r in front], [100 * r["relative_rmse"] for r in front], "-o",
+                  color=colour, markersize=5, label=f"{name}: Pareto front")
+        for r in front:
+            axes.annotate(r["label"], (r["frame_gpu_ms"], 100 * r["relative_rmse"]), fontsize=6,
+                          xytext=(4, 3), textcoords="offset points", color=colour)
+        for r in mine:
+            if r["default"]:
+                axes.scatter([r["frame_gpu_ms"]], [100 * r["relative_rmse"]], s=160, facecolors="none",
+                             edgecolors="black", linewidths=1.5, zorder=5)
+    axes.scatter([], [], s=160, facecolors="none", edgecolors="black", label="shipped default settings")
+    axes.set_xscale("log")
+    axes.set_xlabel(f"frame GPU ms (median of {summary['frames']} frames; {summary['renderer']})")
+    axes.set_ylabel("relative RMSE of the diffuse AOV against the CPU reference (%)")
+    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}\nrun time against error "
+                   "(SSAO, transmittance and TSM off in every configuration, as in the reference)", fontsize=10)
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    save(figure, path)
+
+
+def plot_passes(rows, passes, summary, path):
+    chosen = [r for r in rows if r["pareto"] or r["default"]]
+    chosen.sort(key=lambda r: (r["mode"], r["frame_gpu_ms"]))
+    totals = {r["id"]: {} for r in chosen}
+    for p in passes:
+        if p["id"] in totals:
+            group = pass_group(p["pass"])
+            totals[p["id"]][group] = totals[p["id"]].get(group, 0.0) + float(p["gpu_ms"])
+    groups = [g for g in GROUP_ORDER if any(g in t for t in totals.values())]
+    figure, axes = plt.subplots(figsize=(max(8, 0.42 * len(chosen) + 3), 6))
+    colours = plt.get_cmap("tab20").colors
+    bottoms = [0.0] * len(chosen)
+    for k, group in enumerate(groups):
+        heights = [totals[r["id"]].get(group, 0.0) for r in chosen]
+        axes.bar(range(len(chosen)), heights, bottom=bottoms, color=colours[k % len(colours)], label=group)
+        bottoms = [b + h for b, h in zip(bottoms, heights)]
+    labels = [f"{r['mode']} {r['label']}{' (default)' if r['default'] and r['label'] != 'default' else ''}"
+              for r in chosen]
+    axes.set_xticks(range(len(chosen)))
+    axes.set_xticklabels(labels, rotation=70, ha="right", fontsize=7)
+    axes.set_ylabel("GPU ms per frame (median per pass)")
+    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}\n"
+                   "per-pass cost of the Pareto-front and default configurations", fontsize=10)
+    axes.legend(fontsize=7, ncol=2)
+    figure.tight_layout()
+    save(figure, path)
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    directory = sys.argv[1]
+    try:
+        rows = read_rows(directory)
+        with open(os.path.join(directory, "passes.csv"), newline="") as f:
+            passes = list(csv.DictReader(f))
+        with open(os.path.join(directory, "summary.json")) as f:
+            summary = json.load(f)
+    except (OSError, ValueError, KeyError) as error:
+        print(f"error: {directory}: {error}", file=sys.stderr)
+        return 1
+    plot_pareto(rows, summary, os.path.join(directory, "pareto.png"))
+    plot_passes(rows, passes, summary, os.path.join(directory, "passes.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
