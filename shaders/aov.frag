@@ -14,13 +14,15 @@
 #define AOV_TRANSMITTANCE 8
 #define AOV_THICKNESS 9
 #define AOV_OBJECT 10  // the object id (scene character index + 1; 0 for the background)
+#define AOV_STRETCH 11             // the UV-space AOVs: a texture-space texture of one character,
+#define AOV_IRRADIANCE_TEXTURE 12  // its UV square letterboxed in the frame (uvLayoutTexel)
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uDiffuse;      // SSS-accumulated irradiance (diffuse AOV)
 layout(binding = 3) uniform sampler2D uSpecular;
 layout(binding = 4) uniform sampler2D uNormalMaterial;
-layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO or transmittance: the AOV itself
+layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO, transmittance or a UV-space texture
 layout(binding = 15) uniform sampler2D uEnergy;
 
 in vec2 vUv;
@@ -34,8 +36,29 @@ vec4 component(ivec2 pixel) {
     return textureSize(uComponent, 0) == ivec2(1) ? texelFetch(uComponent, ivec2(0), 0) : texelFetch(uComponent, pixel, 0);
 }
 
+// The UV-space AOVs show the unit UV square as large as the frame allows,
+// centred, v upwards; each pixel shows the texel under its centre (no
+// filtering: chart borders stay sharp). False outside the square.
+bool uvLayoutTexel(ivec2 pixel, out vec4 texel) {
+    vec2 frameSize = uFrame.viewport.xy;
+    float side = min(frameSize.x, frameSize.y);
+    vec2 uv = (vec2(pixel) + 0.5 - 0.5 * (frameSize - side)) / side;
+    texel = vec4(0.0);
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
+    ivec2 size = textureSize(uComponent, 0);
+    ivec2 at = size == ivec2(1) ? ivec2(0) : min(ivec2(uv * vec2(size)), size - 1);  // 1x1: no character on screen
+    texel = texelFetch(uComponent, at, 0);
+    return true;
+}
+
 void main() {
     int aov = int(uFrame.shading.w);
+    if (aov == AOV_STRETCH || aov == AOV_IRRADIANCE_TEXTURE) {
+        vec4 texel;
+        bool inside = uvLayoutTexel(ivec2(gl_FragCoord.xy), texel);
+        oValue = vec4(aov == AOV_STRETCH ? vec3(texel.rg, 0.0) : texel.rgb, inside ? 1.0 : 0.0);
+        return;
+    }
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(uDepth, pixel, 0).r;
     bool background = depth >= 1.0;

@@ -140,4 +140,20 @@ graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, FrameConte
     return accumulated;
 }
 
+graph::TextureHandle addTsAovPasses(graph::RenderGraph& graph, FrameContext& frame, Aov aov, const GBuffer& gbuffer,
+                                    const std::vector<graph::TextureHandle>& shadowMaps,
+                                    graph::TextureHandle ambientOcclusion, graph::TextureHandle none) {
+    if (const Status planned = planTextureSpaceFrame(frame); !planned.ok()) {
+        log::error("texture-space SSS: " + planned.error().message());
+        return none;
+    }
+    const auto& characters = frame.textureSpace->plan.characters;
+    const auto first =
+        std::find_if(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.visible; });
+    if (first == characters.end()) return none;
+    if (aov == Aov::Stretch) return addTsStretchPass(graph, frame, *first);
+    const graph::TextureHandle tsm = addTsmPass(graph, frame, *first, none);
+    return addIrradiancePass(graph, frame, *first, gbuffer, shadowMaps, ambientOcclusion, tsm);
+}
+
 }  // namespace dermis

@@ -25,6 +25,7 @@
 
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
+#include "render/Aov.h"
 #include "render/FrameContext.h"
 #include "render/TsMeshes.h"
 #include "render/TsPlan.h"
@@ -52,6 +53,15 @@ constexpr int kTsmGaussians = 3;
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance);
+
+// The UV-space AOVs (render/Aov.h), in either SSS mode: the stretch map, or
+// the irradiance texture before dilation and blurs, of the first SSS character
+// on screen. Only the passes that texture needs are declared (stretch; tsm and
+// irradiance), so in screen-space mode nothing else of this mode runs. `none`
+// when no SSS character is on screen (or SSS is off).
+graph::TextureHandle addTsAovPasses(graph::RenderGraph& graph, FrameContext& frame, Aov aov, const GBuffer& gbuffer,
+                                    const std::vector<graph::TextureHandle>& shadowMaps,
+                                    graph::TextureHandle ambientOcclusion, graph::TextureHandle none);
 
 // Plans the frame into frame.textureSpace (made on first use). Errors from planTextureSpace.
 Status planTextureSpaceFrame(FrameContext& frame);

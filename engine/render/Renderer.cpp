@@ -238,6 +238,9 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
     if (request.aov == Aov::Transmittance || request.aov == Aov::Thickness) {
         inputs.component = addTransmittancePass(graph, frame, gbuffer, shadowMaps, {}, black);
     }
+    if (aovIsUvLayout(request.aov)) {
+        inputs.component = addTsAovPasses(graph, frame, request.aov, gbuffer, shadowMaps, ambientOcclusion, black);
+    }
     graph.markOutput(addAovPass(graph, frame, inputs, output));
 }
 

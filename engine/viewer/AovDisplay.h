@@ -26,7 +26,8 @@ struct AovMapping {
 };
 
 // A range that shows the AOV well: normals from [-1, 1], view depth around
-// the camera's distance to its target, thickness in mm, colours from [0, 1].
+// the camera's distance to its target, thickness in mm, the stretch map in mm
+// per UV unit, colours from [0, 1].
 AovMapping defaultAovMapping(Aov aov, float cameraDistanceM);
 
 }  // namespace dermis::viewer

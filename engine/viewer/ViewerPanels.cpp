@@ -7,6 +7,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace dermis::viewer {
@@ -118,11 +120,20 @@ void viewPanel(ViewerState& state, Scene& a, Scene& b, const std::vector<SceneDi
         }
         ImGui::EndCombo();
     }
-    widgets::help("The component shown, before tone mapping (final: the tone-mapped frame). n / m step through them.");
+    widgets::help("The component shown, before tone mapping (final: the tone-mapped frame). n / m step through them. "
+                  "stretch and irradiance-texture show the first SSS character on screen in its UV layout (the unit "
+                  "square letterboxed, v up) in either mode; in screen-space mode only their own texture-space passes "
+                  "run. Black when SSS is off or no SSS character is on screen.");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", std::string(aovDescription(state.aov)).c_str());
+    ImGui::PopTextWrapPos();
     if (state.aovMapping.transform != DisplayTransform::AsStored) {
         const std::string label = std::string("display range") + (*state.aovMapping.unit ? " (" : "") +
                                   state.aovMapping.unit + (*state.aovMapping.unit ? ")" : "");
-        ImGui::DragFloat2(label.c_str(), &state.aovMapping.range.x, 0.01f);
+        // Half a per cent of the range per pixel dragged, so that ranges in the
+        // hundreds (the stretch map's mm) move as easily as [-1, 1].
+        const glm::vec2 range = state.aovMapping.range;
+        ImGui::DragFloat2(label.c_str(), &state.aovMapping.range.x, std::max(0.005f * std::abs(range.y - range.x), 1e-4f));
         ImGui::SameLine();
         if (ImGui::SmallButton("reset")) state.setAov(state.aov, cameraDistanceM);
     }

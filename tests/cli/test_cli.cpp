@@ -93,7 +93,7 @@ TEST(Cli, HelpDocumentsEveryFlag) {
     for (const char* flag : {"--size", "--frames", "--out", "--aov", "--timings", "--backend", "--gl-debug", "--quiet"}) {
         EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
     }
-    for (const char* aov : {"final", "albedo", "normal", "depth", "diffuse", "specular"}) {
+    for (const char* aov : {"final", "albedo", "normal", "depth", "diffuse", "specular", "stretch", "irradiance-texture"}) {
         EXPECT_NE(r.out.find(aov), std::string::npos) << aov;
     }
     const ProcessResult top = runProcess(kDermis + " --help");

@@ -1,7 +1,7 @@
 // Texture-space SSS (mode "ts") against closed forms and against the
 // screen-space mode: the stretch map on the UV sphere, the furnace through
 // the five blurs, the analytic edge, agreement on edge.json, light through
-// the ears, and what runs.
+// the ears, what runs, and the UV-space AOVs (stretch, irradiance-texture).
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
@@ -327,4 +327,165 @@ TEST_F(TextureSpace, ScreenSpaceModeRunsNoTextureSpacePassAndViceVersa) {
     EXPECT_EQ(executedWithPrefix(summary(), "sss "), 0);
     EXPECT_GT(executedWithPrefix(summary(), "ts head"), 8);
     EXPECT_FALSE(pass("transmittance")->executed) << "the TSM replaces the screen-space transmittance";
+}
+
+namespace {
+
+// The UV sphere in front of the camera, lit from the camera's side, its UV
+// textures 256 texels wide in every view.
+std::string writeUvSphereScene(const test::TempDir& dir) {
+    test::writeTextFile(dir.file("ball.json"), R"({
+      "camera": {"position_m": [0, 0, 0.5], "target_m": [0, 0, 0], "vertical_fov_deg": 30},
+      "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 1, "shadow": false}],
+      "characters": [{"name": "ball", "mesh": {"procedural": "sphere"}, "material": {"profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0.05, 0.05, 0.05], "ts": {"min_size": 256, "max_size": 256}}
+    })");
+    return dir.file("ball.json");
+}
+
+constexpr int kUvAovWidth = 320;
+constexpr int kUvAovHeight = 180;
+constexpr int kUvAovTexels = 256;
+// Texel rows of the procedural sphere's first and last ring of quads (32 rings).
+constexpr int kUvSpherePoleTexels = kUvAovTexels / 32;
+
+// Where a UV-space AOV shows uv: the unit square letterboxed in the frame, v up.
+// Returns false for a pixel outside it; else the texel it shows.
+bool uvLayoutTexelAt(int x, int row, glm::ivec2& texel) {
+    const double side = std::min(kUvAovWidth, kUvAovHeight);
+    const double u = (x + 0.5 - 0.5 * (kUvAovWidth - side)) / side;
+    const double v = (kUvAovHeight - 1 - row + 0.5 - 0.5 * (kUvAovHeight - side)) / side;
+    if (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0) return false;
+    texel = glm::ivec2(static_cast<int>(u * kUvAovTexels), static_cast<int>(v * kUvAovTexels));
+    return true;
+}
+
+double maxAbsDifference(const Image& a, const Image& b) {
+    double most = a.texels.size() == b.texels.size() ? 0.0 : INFINITY;
+    for (size_t i = 0; i < a.texels.size() && i < b.texels.size(); ++i) {
+        for (int c = 0; c < 4; ++c) most = std::max(most, double(std::abs(a.texels[i][c] - b.texels[i][c])));
+    }
+    return most;
+}
+
+}  // namespace
+
+TEST_F(TextureSpace, StretchAovShowsTheUvSpheresStretchMapInBothModes) {
+    test::TempDir dir;
+    const std::string scene = writeUvSphereScene(dir);
+    load(scene, {"mode=ts"});
+    const Image ts = render(Aov::Stretch, kUvAovWidth, kUvAovHeight);
+    EXPECT_TRUE(pass("ts ball stretch")->executed);
+    EXPECT_EQ(executedWithPrefix(summary(), "ts "), 1) << "only the stretch pass runs for this AOV";
+
+    const double rMm = 1000.0 * kSphereRadiusM;
+    double worstU = 0.0;
+    double worstV = 0.0;
+    double sumV = 0.0;
+    int checked = 0;
+    int inside = 0;
+    int outsideNonZero = 0;
+    int insideBad = 0;
+    for (int row = 0; row < kUvAovHeight; ++row) {
+        for (int x = 0; x < kUvAovWidth; ++x) {
+            const glm::vec4 value = ts.at(x, row);
+            glm::ivec2 texel;
+            if (!uvLayoutTexelAt(x, row, texel)) {
+                outsideNonZero += value != glm::vec4(0.0f) ? 1 : 0;
+                continue;
+            }
+            ++inside;
+            // The sphere's quads touching the poles are triangles in UV, so half
+            // of their strips holds no chart: zero there, positive elsewhere.
+            const bool poleStrip = texel.y < kUvSpherePoleTexels || texel.y >= kUvAovTexels - kUvSpherePoleTexels;
+            const bool finite = std::isfinite(value.r) && std::isfinite(value.g);
+            const bool positive = value.r > 0.0f && value.g > 0.0f;
+            insideBad += !finite || value.r < 0.0f || value.g < 0.0f || value.b != 0.0f || value.a != 1.0f ? 1 : 0;
+            insideBad += !poleStrip && !positive ? 1 : 0;
+            const double theta = glm::pi<double>() * (texel.y + 0.5) / kUvAovTexels;
+            if (theta < glm::radians(35.0) || theta > glm::radians(145.0)) continue;
+            worstU = std::max(worstU, std::abs(value.r / (2.0 * glm::pi<double>() * rMm * std::sin(theta)) - 1.0));
+            worstV = std::max(worstV, std::abs(value.g / (glm::pi<double>() * rMm) - 1.0));
+            sumV += value.g;
+            ++checked;
+        }
+    }
+    std::printf("stretch AOV, %d pixels in the UV square, %d between 35 and 145 deg: worst error %.2f%% along u, "
+                "%.2f%% along v; mean v %.1f mm per UV unit (pi r = %.1f)\n",
+                inside, checked, 100.0 * worstU, 100.0 * worstV, sumV / std::max(checked, 1), glm::pi<double>() * rMm);
+    EXPECT_EQ(inside, kUvAovHeight * kUvAovHeight);
+    EXPECT_EQ(outsideNonZero, 0) << "the letterbox bars are empty";
+    EXPECT_EQ(insideBad, 0) << "every texel is finite, >= 0, and positive away from the poles";
+    EXPECT_GT(checked, inside / 2);
+    EXPECT_LT(worstU, 0.05);
+    EXPECT_LT(worstV, 0.05);
+
+    // Screen-space mode shows the same map and runs no other texture-space pass.
+    load(scene, {"mode=ss"});
+    const Image ss = render(Aov::Stretch, kUvAovWidth, kUvAovHeight);
+    EXPECT_EQ(maxAbsDifference(ss, ts), 0.0);
+    EXPECT_EQ(executedWithPrefix(summary(), "ts "), 1);
+    EXPECT_EQ(executedWithPrefix(summary(), "sss "), 0);
+}
+
+TEST_F(TextureSpace, IrradianceTextureAovIsLitOnTheChartInBothModes) {
+    test::TempDir dir;
+    const std::string scene = writeUvSphereScene(dir);
+    load(scene, {"mode=ts"});
+    const Image stretch = render(Aov::Stretch, kUvAovWidth, kUvAovHeight);
+    const Image ts = render(Aov::IrradianceTexture, kUvAovWidth, kUvAovHeight);
+    EXPECT_TRUE(pass("ts ball irradiance")->executed);
+    EXPECT_FALSE(pass("ts ball gather")) << "the AOV declares only the passes it shows";
+
+    // Chart texels (a positive stretch) have at least the ambient light, the
+    // half facing the light much more; the others are empty.
+    int chart = 0;
+    int dark = 0;
+    int lit = 0;
+    int emptyLit = 0;
+    double brightest = 0.0;
+    for (int row = 0; row < kUvAovHeight; ++row) {
+        for (int x = 0; x < kUvAovWidth; ++x) {
+            glm::ivec2 texel;
+            if (!uvLayoutTexelAt(x, row, texel)) continue;
+            const glm::vec4 value = ts.at(x, row);
+            const float lowest = std::min({value.r, value.g, value.b});
+            if (stretch.at(x, row).g <= 0.0f) {
+                emptyLit += lowest != 0.0f || std::max({value.r, value.g, value.b}) != 0.0f ? 1 : 0;
+                continue;
+            }
+            ++chart;
+            dark += !std::isfinite(lowest) || lowest <= 0.0f ? 1 : 0;
+            lit += value.r > 0.2f ? 1 : 0;
+            brightest = std::max(brightest, double(value.r));
+        }
+    }
+    std::printf("irradiance-texture AOV: %d chart pixels, %d not positive, %d (%.0f%%) lit above 0.2 "
+                "(red at most %.3f); %d lit pixels off the chart\n",
+                chart, dark, lit, 100.0 * lit / std::max(chart, 1), brightest, emptyLit);
+    EXPECT_GT(chart, kUvAovHeight * kUvAovHeight * 9 / 10);
+    EXPECT_EQ(dark, 0);
+    EXPECT_EQ(emptyLit, 0);
+    EXPECT_GT(lit, chart / 4);
+    EXPECT_LT(lit, 3 * chart / 4);
+    EXPECT_GT(brightest, 0.5);
+
+    load(scene, {"mode=ss"});
+    const Image ss = render(Aov::IrradianceTexture, kUvAovWidth, kUvAovHeight);
+    EXPECT_EQ(maxAbsDifference(ss, ts), 0.0);
+    EXPECT_TRUE(pass("ts ball irradiance")->executed);
+    EXPECT_EQ(executedWithPrefix(summary(), "sss "), 0);
+}
+
+TEST_F(TextureSpace, UvLayoutAovsAreBlackWithNoCharacterOnScreen) {
+    test::TempDir dir;
+    load(writeUvSphereScene(dir), {"mode=ts", "camera.target_m=[0,0,5]"});
+    for (Aov aov : {Aov::Stretch, Aov::IrradianceTexture}) {
+        const Image image = render(aov, 64, 36);
+        float most = 0.0f;
+        for (const glm::vec4& t : image.texels) most = std::max({most, std::abs(t.r), std::abs(t.g), std::abs(t.b)});
+        EXPECT_EQ(most, 0.0f) << aovName(aov);
+    }
+    EXPECT_EQ(executedWithPrefix(summary(), "ts "), 0);
 }

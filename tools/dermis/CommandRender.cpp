@@ -27,8 +27,12 @@ const char* const kHelp =
     "  --out FILE          output image: .png is tone-mapped 8-bit sRGB, .exr is linear\n"
     "                      float (default out/<scene name>.png)\n"
     "  --aov NAME          write one linear component before tone mapping instead of the\n"
-    "                      final image: %s\n"
-    "                      (default final)\n"
+    "                      final image (default final):\n"
+    "%s"
+    "                      stretch and irradiance-texture show the first SSS character on\n"
+    "                      screen in its UV layout (the unit square, letterboxed, v up), in\n"
+    "                      either mode: in ss mode only their own texture-space passes run;\n"
+    "                      black when SSS is off or no SSS character is on screen\n"
     "  --timings FILE      also write the timings as JSON\n"
     "  --mode ss|ts        screen-space or texture-space subsurface scattering: the same as\n"
     "                      --set mode=ss|ts\n"
@@ -55,7 +59,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
-        std::printf(kHelp, aovNameList().c_str());
+        std::printf(kHelp, aovHelpLines("                        ").c_str());
         return 0;
     }
     if (args->positional.size() != 1) return usageError(makeError("render", "expected exactly one SCENE file"));

@@ -31,8 +31,10 @@ const char* const kHelp =
     "  --set-b PATH=VALUE  override a value of the B side only: --set-b sss.blur=control\n"
     "  --view MODE         single, split (A|B with a divider) or diff (|A - B| in false\n"
     "                      colour) (default single)\n"
-    "  --aov NAME          the component shown: %s\n"
-    "                      (default final)\n"
+    "  --aov NAME          the component shown (default final), as for dermis render:\n"
+    "%s"
+    "                      stretch and irradiance-texture: the first SSS character on screen\n"
+    "                      in its UV layout (the unit square, letterboxed, v up), either mode\n"
     "  --no-panels         start with the panels hidden (key Tab shows them)\n"
     "  --frames N          batch mode: render N frames, then exit\n"
     "  --screenshot FILE   batch mode: after the last frame, save the whole window (panels\n"
@@ -67,7 +69,7 @@ int runView(const std::vector<std::string>& rawArgs) {
                           {"no-panels", "gl-debug", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
-        std::printf(kHelp, aovNameList().c_str());
+        std::printf(kHelp, aovHelpLines("                        ").c_str());
         return 0;
     }
     if (args->positional.size() != 1) return usageError(makeError("view", "expected exactly one SCENE file"));
