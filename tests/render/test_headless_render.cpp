@@ -1,8 +1,14 @@
 // Headless renders of the procedural default scene through the whole graph.
 #include "RenderFixture.h"
+#include "TestSupport.h"
 
+#include "gl/ShaderProgram.h"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 
 using namespace dermis;
 
@@ -44,6 +50,23 @@ Stats channelStats(const Image& image) {
     }
     return s;
 }
+
+// Points the shader folder (gl/ShaderProgram.h) elsewhere for one test.
+class ShaderDirectoryOverride {
+public:
+    explicit ShaderDirectoryOverride(const std::string& directory) {
+        if (const char* previous = std::getenv(kVariable)) mPrevious = previous;
+        setenv(kVariable, directory.c_str(), 1);
+    }
+    ~ShaderDirectoryOverride() {
+        if (mPrevious.empty()) unsetenv(kVariable);
+        else setenv(kVariable, mPrevious.c_str(), 1);
+    }
+
+private:
+    static constexpr const char* kVariable = "DERMIS_SHADER_DIR";
+    std::string mPrevious;
+};
 
 }  // namespace
 
@@ -123,4 +146,31 @@ TEST_F(HeadlessRender, TimedPassesHaveFiniteNonNegativeTimes) {
         EXPECT_TRUE(std::isfinite(s.cpuMs) && s.cpuMs >= 0.0) << s.name;
         if (s.executed) EXPECT_GT(s.samples, 0u) << s.name;
     }
+}
+
+TEST_F(HeadlessRender, ShaderReloadKeepsThePreviousProgramsOnACompileError) {
+    // The viewer's hot reload (Renderer::reloadShaders) on a copy of shaders/.
+    test::TempDir dir;
+    const std::filesystem::path shaders = dir.file("shaders");
+    std::filesystem::copy(gl::shaderDirectory(), shaders, std::filesystem::copy_options::recursive);
+    const ShaderDirectoryOverride override(shaders.string());
+    load("default.json");
+    const Image before = render(Aov::Albedo);
+
+    const std::filesystem::path aov = shaders / "aov.frag";
+    const std::string good = test::readTextFile(aov.string());
+    test::writeTextFile(aov.string(), good + "\nthis is not GLSL\n");
+    const Status failed = mRenderer->reloadShaders();
+    // The driver may report the failed compile through the debug output; it is
+    // the failure this test asks for, not an error of the renderer.
+    mErrorsBefore = gl::debugErrorCount();
+    ASSERT_FALSE(failed.ok());
+    EXPECT_NE(failed.error().message().find("aov.frag"), std::string::npos) << failed.error().message();
+    const Image kept = render(Aov::Albedo);
+    ASSERT_EQ(kept.texels.size(), before.texels.size());
+    EXPECT_TRUE(std::equal(kept.texels.begin(), kept.texels.end(), before.texels.begin())) << "the old programs render";
+
+    test::writeTextFile(aov.string(), good);
+    const Status fixed = mRenderer->reloadShaders();
+    EXPECT_TRUE(fixed.ok()) << fixed.error().message();
 }
