@@ -9,8 +9,9 @@
 namespace dermis::bench {
 
 const char* const kDefaultSweepSpec =
-    "ss:sss.taps=5,9,17,25;ss:sss.gaussians=3,4,5,6;ss:sss.blur=bilateral,control;ss:scale=0.5,1;"
-    "ts:ts.min_size+ts.max_size=256,512,1024;ts:ts.taps=3,5,7,9,13";
+    "ss:sss.taps=5,9,17;ss:sss.gaussians=3,4,6;ss:sss.blur=bilateral,control;ss:scale=0.5,1;"
+    "ss:transmittance.enabled=true,false;"
+    "ts:ts.min_size+ts.max_size=256,512,1024;ts:ts.taps=3,7,13;ts:ts.tsm=true,false";
 
 namespace {
 

@@ -56,8 +56,8 @@ TEST(SweepSpec, TheDefaultSweepCoversTheIssuesKnobs) {
     ASSERT_TRUE(configs);
     size_t ss = 0, ts = 0;
     for (const SweepConfig& c : *configs) (c.mode == "ss" ? ss : ts)++;
-    EXPECT_EQ(ss, 4u * 4u * 2u * 2u);  // taps, Gaussians, bilateral or control, resolution
-    EXPECT_EQ(ts, 3u * 5u);            // irradiance resolution, taps
+    EXPECT_EQ(ss, 3u * 3u * 2u * 2u * 2u);  // taps, Gaussians, bilateral or control, resolution, transmittance
+    EXPECT_EQ(ts, 3u * 3u * 2u);            // irradiance resolution, taps, translucent shadow map
 }
 
 TEST(SweepSpec, BadSpecsAreErrorsNamingTheAxis) {
