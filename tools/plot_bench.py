@@ -74,7 +74,8 @@ def save(figure, path):
 
 
 def plot_pareto(rows, summary, path):
-    figure, axes = plt.subplots(figsize=(9, 6))
+    figure, axes = plt.subplots(figsize=(13, 6.5))
+    fronts = []
     for mode, (colour, name) in MODE_STYLE.items():
         mine = [r for r in rows if r["mode"] == mode]
         if not mine:
@@ -85,8 +86,9 @@ def plot_pareto(rows, summary, path):
         axes.plot([r["frame_gpu_ms"] for r in front], [100 * r["relative_rmse"] for r in front], "-o",
                   color=colour, markersize=5, label=f"{name}: Pareto front")
         for r in front:
-            axes.annotate(r["label"], (r["frame_gpu_ms"], 100 * r["relative_rmse"]), fontsize=6,
-                          xytext=(4, 3), textcoords="offset points", color=colour)
+            axes.annotate(r["id"], (r["frame_gpu_ms"], 100 * r["relative_rmse"]), fontsize=7,
+                          xytext=(3, 3), textcoords="offset points", color=colour)
+        fronts.extend(front)
         for r in mine:
             if r["default"]:
                 axes.scatter([r["frame_gpu_ms"]], [100 * r["relative_rmse"]], s=160, facecolors="none",
@@ -95,11 +97,16 @@ def plot_pareto(rows, summary, path):
     axes.set_xscale("log")
     axes.set_xlabel(f"frame GPU ms (median of {summary['frames']} frames; {summary['renderer']})")
     axes.set_ylabel("relative RMSE of the diffuse AOV against the CPU reference (%)")
-    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}\nrun time against error "
-                   "(SSAO, transmittance and TSM off in every configuration, as in the reference)", fontsize=10)
+    fixed = ", ".join(summary.get("every_configuration", [])) or "nothing"
+    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}: run time against error\n"
+                   f"(set in every configuration, as in the reference: {fixed})", fontsize=10)
     axes.grid(True, which="both", alpha=0.3)
     axes.legend(fontsize=8)
-    figure.tight_layout()
+    # The fronts' configurations, by the id written beside each point.
+    key = "\n".join(f"{r['id']:>3}  {r['mode']} {r['label']}" for r in fronts)
+    figure.text(0.695, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=7, family="monospace",
+                va="center")
+    figure.tight_layout(rect=(0, 0, 0.69, 1))
     save(figure, path)
 
 

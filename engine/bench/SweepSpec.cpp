@@ -89,14 +89,18 @@ Result<SweepAxis> parseAxis(const std::string& text) {
     return axis;
 }
 
-std::string lastComponent(const std::string& key) {
-    const size_t dot = key.rfind('.');
-    return dot == std::string::npos ? key : key.substr(dot + 1);
+// "sss.taps" -> "taps"; a switch keeps its group: "transmittance.enabled".
+std::string shortName(const std::string& key) {
+    const std::string path = key.rfind("settings.", 0) == 0 ? key.substr(9) : key;
+    const size_t dot = path.rfind('.');
+    if (dot == std::string::npos) return path;
+    const std::string last = path.substr(dot + 1);
+    return last == "enabled" ? path : last;
 }
 
 std::string axisLabel(const SweepAxis& axis) {
     std::string label;
-    for (const std::string& key : axis.keys) label += (label.empty() ? "" : "+") + lastComponent(key);
+    for (const std::string& key : axis.keys) label += (label.empty() ? "" : "+") + shortName(key);
     return label;
 }
 
