@@ -119,21 +119,23 @@ def plot_passes(rows, passes, summary, path):
             group = pass_group(p["pass"])
             totals[p["id"]][group] = totals[p["id"]].get(group, 0.0) + float(p["gpu_ms"])
     groups = [g for g in GROUP_ORDER if any(g in t for t in totals.values())]
-    figure, axes = plt.subplots(figsize=(max(8, 0.42 * len(chosen) + 3), 6))
+    # Horizontal bars, so that the configurations' long labels stay readable.
+    figure, axes = plt.subplots(figsize=(12, 1.6 + 0.38 * len(chosen)))
     colours = plt.get_cmap("tab20").colors
-    bottoms = [0.0] * len(chosen)
+    lefts = [0.0] * len(chosen)
     for k, group in enumerate(groups):
-        heights = [totals[r["id"]].get(group, 0.0) for r in chosen]
-        axes.bar(range(len(chosen)), heights, bottom=bottoms, color=colours[k % len(colours)], label=group)
-        bottoms = [b + h for b, h in zip(bottoms, heights)]
-    labels = [f"{r['mode']} {r['label']}{' (default)' if r['default'] and r['label'] != 'default' else ''}"
+        widths = [totals[r["id"]].get(group, 0.0) for r in chosen]
+        axes.barh(range(len(chosen)), widths, left=lefts, color=colours[k % len(colours)], label=group)
+        lefts = [x + w for x, w in zip(lefts, widths)]
+    labels = [f"{r['id']}  {r['mode']} {r['label']}{' (default)' if r['default'] and r['label'] != 'default' else ''}"
               for r in chosen]
-    axes.set_xticks(range(len(chosen)))
-    axes.set_xticklabels(labels, rotation=70, ha="right", fontsize=7)
-    axes.set_ylabel("GPU ms per frame (median per pass)")
-    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}\n"
+    axes.set_yticks(range(len(chosen)))
+    axes.set_yticklabels(labels, fontsize=7)
+    axes.invert_yaxis()
+    axes.set_xlabel("GPU ms per frame (median per pass)")
+    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}: "
                    "per-pass cost of the Pareto-front and default configurations", fontsize=10)
-    axes.legend(fontsize=7, ncol=2)
+    axes.legend(fontsize=7, ncol=2, loc="upper right")  # the cheap screen-space rows are on top
     figure.tight_layout()
     save(figure, path)
 
