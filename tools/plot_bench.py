@@ -74,7 +74,7 @@ def save(figure, path):
 
 
 def plot_pareto(rows, summary, path):
-    figure, axes = plt.subplots(figsize=(13, 6.5))
+    figure, axes = plt.subplots(figsize=(15, 6.5))
     fronts = []
     for mode, (colour, name) in MODE_STYLE.items():
         mine = [r for r in rows if r["mode"] == mode]
@@ -104,9 +104,9 @@ def plot_pareto(rows, summary, path):
     axes.legend(fontsize=8)
     # The fronts' configurations, by the id written beside each point.
     key = "\n".join(f"{r['id']:>3}  {r['mode']} {r['label']}" for r in fronts)
-    figure.text(0.695, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=7, family="monospace",
+    figure.text(0.635, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=7, family="monospace",
                 va="center")
-    figure.tight_layout(rect=(0, 0, 0.69, 1))
+    figure.tight_layout(rect=(0, 0, 0.63, 1))
     save(figure, path)
 
 
