@@ -7,14 +7,30 @@
 #   tools/setup.sh test            run the whole test suite (ctest)
 #   tools/setup.sh test --quick    skip tests labelled "slow"
 #   tools/setup.sh build           only install and build
+#   tools/setup.sh sanitize        build the unit tests into build-asan/ with
+#                                  AddressSanitizer and UBSan instead, and run
+#                                  them there (all but those labelled "slow")
 #
 # Run as root on Debian bookworm (apt-get needs it); elsewhere install the
 # packages listed below yourself.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+usage="usage: tools/setup.sh demo|test [--quick]|build|sanitize"
 job="${1:-demo}"
 shift || true
+case "$job" in
+  demo|test|build|sanitize) ;;
+  -h|--help|help)
+    sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
+    echo "$usage"
+    exit 0
+    ;;
+  *)
+    echo "$usage" >&2
+    exit 2
+    ;;
+esac
 
 packages=(
   cmake ninja-build g++ pkg-config python3 python3-glad
@@ -41,9 +57,25 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y -q --no-install-recommends "${missing[@]}" >&2
 fi
 
-echo "setup: configuring and building into build/" >&2
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+# build_into DIR TARGET [CMAKE_ARGS...]: configures the project into DIR and
+# builds TARGET ("all" for everything).
+build_into() {
+  local dir="$1" target="$2"
+  shift 2
+  echo "setup: configuring and building into $dir/" >&2
+  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  cmake --build "$dir" -j "$(nproc)" --target "$target"
+}
+
+if [ "$job" = sanitize ]; then
+  # Debug information for the sanitizers' stack traces; the build/ tree is
+  # left alone.
+  build_into build-asan dermis_unit_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDERMIS_SANITIZE=ON
+  ctest --test-dir build-asan -L unit -LE slow --output-on-failure -j "$(nproc)"
+  exit
+fi
+
+build_into build all -DCMAKE_BUILD_TYPE=Release
 
 case "$job" in
   build)
@@ -60,9 +92,5 @@ case "$job" in
     labels=()
     if [ "${1:-}" = "--quick" ]; then labels=(-LE slow); fi
     ctest --test-dir build --output-on-failure -j "$(nproc)" "${labels[@]}"
-    ;;
-  *)
-    echo "usage: tools/setup.sh demo|test [--quick]|build" >&2
-    exit 2
     ;;
 esac
