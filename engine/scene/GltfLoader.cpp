@@ -40,6 +40,9 @@ constexpr uint32_t kGlbJsonChunk = 0x4E4F534A;  // "JSON"
 constexpr size_t kGlbHeaderBytes = 12;
 constexpr size_t kGlbChunkHeaderBytes = 8;
 constexpr size_t kMaxMessageLength = 300;
+// tinygltf copies "extras" and "extensions" into its Value tree recursively,
+// one stack frame per level, so deep nesting would overflow the stack.
+constexpr size_t kMaxJsonNesting = 256;
 
 std::string oneLine(const std::string& text) {
     std::string line;
@@ -55,6 +58,27 @@ std::string oneLine(const std::string& text) {
     // Parser messages quote the input, which may be a megabyte data URI.
     if (line.size() > kMaxMessageLength) line = line.substr(0, kMaxMessageLength) + "...";
     return line;
+}
+
+// The deepest nesting of arrays and objects in JSON text (brackets inside
+// strings do not count); malformed text is left for the parser to report.
+size_t jsonNestingDepth(const char* text, size_t size) {
+    size_t depth = 0, deepest = 0;
+    bool inString = false;
+    for (size_t i = 0; i < size; ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
 }
 
 std::string quoted(const std::string& name) { return name.empty() ? std::string() : " '" + name + "'"; }
@@ -748,18 +772,22 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
     const std::string baseDir = fs::absolute(path).parent_path().string();
     tinygltf::Model gltf;
     std::string err, warn, json;
-    bool loaded = false;
+    std::optional<GlbLayout> glb;
     if (bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic) {
         Result<GlbLayout> layout = checkGlb(bytes, path);
         if (!layout) return layout.error();
-        json.assign(reinterpret_cast<const char*>(bytes.data()) + layout->jsonOffset, layout->jsonLength);
-        loaded = loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
-                                             static_cast<unsigned int>(layout->length), baseDir);
+        glb = layout.value();
+        json.assign(reinterpret_cast<const char*>(bytes.data()) + glb->jsonOffset, glb->jsonLength);
     } else {
         json.assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-        loaded = loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
-                                            baseDir);
     }
+    if (jsonNestingDepth(json.data(), json.size()) > kMaxJsonNesting)
+        return makeError(path, "JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+    const bool loaded =
+        glb ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), static_cast<unsigned int>(glb->length),
+                                          baseDir)
+            : loader.LoadASCIIFromString(&gltf, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
+                                         baseDir);
     if (!warn.empty()) log::warn(path + ": " + oneLine(warn));
     if (!loaded) return makeError(path, describeLoadError(err, json));
     return GltfConverter(gltf, path).convert();

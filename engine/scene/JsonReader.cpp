@@ -51,32 +51,29 @@ std::string withoutExceptionId(const std::string& message) {
     return message.rfind("[json.exception.", 0) == 0 && end != std::string::npos ? message.substr(end + 2) : message;
 }
 
-// Tracks where the parser is, to name duplicate keys by JSON pointer and to
-// bound nesting (a scene file is a handful of levels deep).
+// An nlohmann SAX handler that builds nothing: it tracks where the parser is,
+// to name duplicate keys by JSON pointer and to bound nesting (a scene file is
+// a handful of levels deep). It stops at the first syntax error.
 class StructureChecker {
 public:
-    struct TooDeep {};
-
-    bool onEvent(json::parse_event_t event, const json& parsed) {
-        switch (event) {
-            case json::parse_event_t::object_start:
-            case json::parse_event_t::array_start:
-                if (mFrames.size() >= kMaxNestingDepth) {
-                    throw TooDeep{};
-                }
-                mFrames.push_back(Frame{event == json::parse_event_t::object_start, {}, {}, 0});
-                break;
-            case json::parse_event_t::key: onKey(parsed.get_ref<const std::string&>()); break;
-            case json::parse_event_t::object_end:
-            case json::parse_event_t::array_end:
-                mFrames.pop_back();
-                elementDone();
-                break;
-            case json::parse_event_t::value: elementDone(); break;
-        }
+    bool null() { return value(); }
+    bool boolean(bool) { return value(); }
+    bool number_integer(json::number_integer_t) { return value(); }
+    bool number_unsigned(json::number_unsigned_t) { return value(); }
+    bool number_float(json::number_float_t, const json::string_t&) { return value(); }
+    bool string(json::string_t&) { return value(); }
+    bool binary(json::binary_t&) { return value(); }
+    bool start_object(std::size_t) { return open(true); }
+    bool start_array(std::size_t) { return open(false); }
+    bool key(json::string_t& name) {
+        onKey(name);
         return true;
     }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+    bool parse_error(std::size_t, const std::string&, const json::exception&) { return false; }
 
+    bool tooDeep() const { return mTooDeep; }
     const std::string& duplicatePointer() const { return mDuplicatePointer; }
     const std::string& duplicateKey() const { return mDuplicateKey; }
 
@@ -101,13 +98,30 @@ private:
         frame.currentKey = key;
     }
 
-    void elementDone() {
+    bool open(bool isObject) {
+        if (mFrames.size() >= kMaxNestingDepth) {
+            mTooDeep = true;
+            return false;
+        }
+        mFrames.push_back(Frame{isObject, {}, {}, 0});
+        return true;
+    }
+
+    bool close() {
+        mFrames.pop_back();
+        return value();
+    }
+
+    // An element of the enclosing array is complete.
+    bool value() {
         if (!mFrames.empty() && !mFrames.back().isObject) {
             ++mFrames.back().index;
         }
+        return true;
     }
 
     std::vector<Frame> mFrames;
+    bool mTooDeep = false;
     std::string mDuplicatePointer;
     std::string mDuplicateKey;
 };
@@ -120,14 +134,17 @@ Result<json> parseJsonText(const std::string& text, const std::string& where) {
                                     std::to_string(kMaxJsonTextBytes) + " bytes");
     }
     StructureChecker checker;
-    json::parser_callback_t callback = [&checker](int, json::parse_event_t event, json& parsed) {
-        return checker.onEvent(event, parsed);
-    };
     json document;
     try {
-        document = json::parse(text, callback);
-    } catch (const StructureChecker::TooDeep&) {
-        return makeError(where, "JSON nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
+        json::sax_parse(text, &checker);
+        if (checker.tooDeep()) {
+            return makeError(where, "JSON nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
+        }
+        // A second, plain parse builds the document, and throws the syntax
+        // error the checker stopped at. (nlohmann's parser with a callback
+        // rescans an array after each object in it: quadratic time, minutes
+        // for an array of a million objects.)
+        document = json::parse(text);
     } catch (const json::parse_error& e) {
         return makeError(where, printable(withoutExceptionId(e.what())));
     } catch (const json::out_of_range& e) {

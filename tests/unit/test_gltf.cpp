@@ -1,5 +1,7 @@
 #include "scene/GltfLoader.h"
 
+#include "FuzzSupport.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -91,11 +93,21 @@ struct GltfBuilder {
         std::ofstream(path) << out.dump(1);
     }
 
-    std::vector<unsigned char> glbBytes() {
+    // The document as a GLB stores it: one buffer, the BIN chunk.
+    json glbDocument() {
         json out = doc;
         while (bin.size() % 4) bin.push_back(0);
         out["buffers"] = {{{"byteLength", bin.size()}}};
-        std::string text = out.dump();
+        return out;
+    }
+    std::vector<unsigned char> glbBytes() { return packGlb(glbDocument(), bin); }
+    void writeGlb(const fs::path& path) {
+        std::vector<unsigned char> glb = glbBytes();
+        writeBytes(path, glb.data(), glb.size());
+    }
+
+    static std::vector<unsigned char> packGlb(const json& document, const std::vector<unsigned char>& bin) {
+        std::string text = document.dump();
         while (text.size() % 4) text += ' ';
         std::vector<unsigned char> glb;
         auto u32 = [&glb](uint32_t v) {
@@ -111,10 +123,6 @@ struct GltfBuilder {
         u32(0x004E4942);
         glb.insert(glb.end(), bin.begin(), bin.end());
         return glb;
-    }
-    void writeGlb(const fs::path& path) {
-        std::vector<unsigned char> glb = glbBytes();
-        writeBytes(path, glb.data(), glb.size());
     }
 };
 
@@ -168,6 +176,21 @@ protected:
         EXPECT_NE(message.find(file.filename().string()), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         if (!fragment.empty()) EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    }
+
+    // For input that may or may not be valid: a model with triangles, or an
+    // error that names the file on one line. Returns whether it loaded.
+    bool expectWellFormedOutcome(const fs::path& file) {
+        Result<Model> model = loadGltf(file.string());
+        if (model) {
+            EXPECT_GT(model->mesh.triangleCount(), 0u);
+            for (uint32_t index : model->mesh.indices) EXPECT_LT(index, model->mesh.vertices.size());
+            return true;
+        }
+        std::string message = model.error().message();
+        EXPECT_NE(message.find(file.filename().string()), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        return false;
     }
 
     fs::path mDir;
@@ -494,6 +517,159 @@ TEST_F(GltfTest, StructuralErrors) {
         b.doc["nodes"] = {{{"mesh", 0}, {"scale", {1e39, 1, 1}}}};
         b.writeGltf(path("inf.gltf"));
         expectError(path("inf.gltf"), "node 0");
+    }
+}
+
+namespace {
+
+// The quad with a base colour map in a buffer view: the GLB the fuzz tests
+// break, so that damage can land in the JSON, the geometry or the image.
+GltfBuilder texturedQuadBuilder(const fs::path& scratchPng) {
+    Image image;
+    image.width = 4;
+    image.height = 4;
+    for (int i = 0; i < 16; ++i) image.texels.emplace_back(0.1f * float(i % 5), 0.5f, 0.06f * float(i), 1.0f);
+    EXPECT_TRUE(saveImage(scratchPng.string(), image));
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["images"] = {{{"bufferView", b.imageView(readBytes(scratchPng))}, {"mimeType", "image/png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    return b;
+}
+
+}  // namespace
+
+TEST_F(GltfTest, GlbAndGltfTruncatedAtManyOffsetsAreErrors) {
+    GltfBuilder b = texturedQuadBuilder(path("map.png"));
+    std::vector<unsigned char> glb = b.glbBytes();
+    writeBytes(path("whole.glb"), glb.data(), glb.size());
+    Result<Model> whole = loadGltf(path("whole.glb").string());
+    ASSERT_TRUE(whole) << whole.error().message();
+    EXPECT_EQ(whole->albedoMap.width, 4);
+    for (size_t length : fuzz::truncationLengths(glb.size())) {
+        SCOPED_TRACE("first " + std::to_string(length) + " bytes of the GLB");
+        fs::path file = path("cut" + std::to_string(length) + ".glb");
+        writeBytes(file, glb.data(), length);
+        expectError(file);
+    }
+    b.writeGltf(path("whole.gltf"));
+    std::vector<unsigned char> text = readBytes(path("whole.gltf"));
+    for (size_t length : fuzz::truncationLengths(text.size(), 16, 64)) {
+        SCOPED_TRACE("first " + std::to_string(length) + " bytes of the glTF");
+        fs::path file = path("cut" + std::to_string(length) + ".gltf");
+        writeBytes(file, text.data(), length);
+        expectError(file);
+    }
+}
+
+// Every value of the GLB's JSON, in turn, replaced by a wrong type or an
+// extreme number (a string where a count goes, 2^31 and 2^64-1 counts, ...).
+TEST_F(GltfTest, EveryValueWithEveryWrongTypeIsAWellFormedOutcome) {
+    GltfBuilder b = texturedQuadBuilder(path("map.png"));
+    const json document = b.glbDocument();
+    const std::vector<json> replacements = {"6",        -1,          0.5,         nullptr,
+                                            json::array(), json::object(), 2147483648u, 4294967295u,
+                                            18446744073709551615u, 1e300};
+    const json flat = document.flatten();
+    size_t loaded = 0, total = 0;
+    for (const auto& [pointer, original] : flat.items()) {
+        for (const json& replacement : replacements) {
+            json edited = document;
+            edited[json::json_pointer(pointer)] = replacement;
+            SCOPED_TRACE(pointer + " = " + replacement.dump());
+            std::vector<unsigned char> glb = GltfBuilder::packGlb(edited, b.bin);
+            fs::path file = path("typed" + std::to_string(total++) + ".glb");
+            writeBytes(file, glb.data(), glb.size());
+            loaded += expectWellFormedOutcome(file) ? 1 : 0;
+            fs::remove(file);
+        }
+    }
+    EXPECT_GT(loaded, 0u);  // a mesh name can be anything, an unused value ignored
+    EXPECT_LT(loaded, total);
+}
+
+TEST_F(GltfTest, HugeCountsAndLengthsFailFast) {
+    struct Case {
+        const char* name;
+        const char* pointer;
+        json value;
+        const char* fragment;  // in the error; nullptr: loading may also succeed
+    };
+    const std::vector<Case> cases = {
+        {"count 2^31", "/accessors/0/count", 2147483648u, "accessor 0"},
+        {"count 2^64-1", "/accessors/0/count", 18446744073709551615u, ""},
+        {"byteOffset 2^32-1", "/accessors/0/byteOffset", 4294967295u, "accessor 0"},
+        {"view longer than buffer", "/bufferViews/0/byteLength", 1u << 30, ""},
+        {"view past buffer end", "/bufferViews/0/byteOffset", 4294967292u, ""},
+        {"stride 2^31", "/bufferViews/0/byteStride", 2147483648u, ""},
+        {"buffer 2 GiB", "/buffers/0/byteLength", 2147483648u, ""},
+        {"image view 2^31", "/bufferViews/4/byteLength", 2147483648u, ""},
+        {"index count 2^31", "/accessors/3/count", 2147483648u, "accessor 3"},
+        {"POSITION is MAT4", "/accessors/0/type", "MAT4", "accessor 0"},
+        {"POSITION is SCALAR", "/accessors/0/type", "SCALAR", "expected VEC3"},
+        {"unknown type", "/accessors/0/type", "VEC7", ""},
+        {"unknown component type", "/accessors/0/componentType", 1234, ""},
+        {"NORMAL count below POSITION's", "/accessors/2/count", 3, "NORMAL has 3 elements"},
+        {"indices VEC3", "/accessors/3/type", "VEC3", ""},
+        {"indices float", "/accessors/3/componentType", kFloat, ""},
+        {"count as a string", "/accessors/0/count", "4", ""},
+        {"mesh index as a string", "/nodes/0/mesh", "0", nullptr},
+        {"scale as a string", "/nodes/0/scale", "big", nullptr},
+    };
+    GltfBuilder b = texturedQuadBuilder(path("map.png"));
+    const json document = b.glbDocument();
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        json edited = document;
+        edited[json::json_pointer(c.pointer)] = c.value;
+        std::vector<unsigned char> glb = GltfBuilder::packGlb(edited, b.bin);
+        fs::path file = path(std::string(c.name) + ".glb");
+        writeBytes(file, glb.data(), glb.size());
+        if (c.fragment)
+            expectError(file, c.fragment);
+        else
+            expectWellFormedOutcome(file);
+    }
+}
+
+TEST_F(GltfTest, DeeplyNestedJsonIsAnError) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    json document = b.glbDocument();
+    std::string text = document.dump();
+    text.pop_back();  // the closing brace
+    text += ", \"extras\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+    std::ofstream(path("deep.gltf")) << text;
+    expectError(path("deep.gltf"), "nested");
+}
+
+// 300 seeded mutants of the textured GLB and 100 of the same file as
+// glTF text with a data URI.
+TEST_F(GltfTest, RandomMutationsNeverCrash) {
+    GltfBuilder b = texturedQuadBuilder(path("map.png"));
+    const std::vector<unsigned char> glb = b.glbBytes();
+    fuzz::Mutator mutator(31337u);
+    size_t loaded = 0;
+    constexpr int kGlbMutants = 300;
+    for (int mutant = 0; mutant < kGlbMutants; ++mutant) {
+        SCOPED_TRACE("GLB mutant " + std::to_string(mutant));
+        std::vector<unsigned char> bytes = mutator.mutate(glb);
+        fs::path file = path("mutant" + std::to_string(mutant) + ".glb");
+        writeBytes(file, bytes.data(), bytes.size());
+        loaded += expectWellFormedOutcome(file) ? 1 : 0;
+    }
+    EXPECT_GT(loaded, 0u);
+    EXPECT_LT(loaded, size_t(kGlbMutants));
+
+    b.writeGltf(path("whole.gltf"));
+    const std::vector<unsigned char> text = readBytes(path("whole.gltf"));
+    fuzz::Mutator textMutator(4242u, "{}[]\",:0123456789.-+eE truefalsnul\\/");
+    for (int mutant = 0; mutant < 100; ++mutant) {
+        SCOPED_TRACE("glTF mutant " + std::to_string(mutant));
+        std::vector<unsigned char> bytes = textMutator.mutate(text);
+        fs::path file = path("mutant" + std::to_string(mutant) + ".gltf");
+        writeBytes(file, bytes.data(), bytes.size());
+        expectWellFormedOutcome(file);
     }
 }
 

@@ -1,15 +1,20 @@
 #include "core/Image.h"
 
+#include "FuzzSupport.h"
+
 #include <gtest/gtest.h>
 #include <OpenImageIO/imageio.h>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <random>
 
 using namespace dermis;
 namespace fs = std::filesystem;
@@ -17,6 +22,9 @@ namespace fs = std::filesystem;
 namespace {
 
 class ImageTest : public ::testing::Test {
+public:
+    std::string path(const std::string& name) const { return (mDir / name).string(); }
+
 protected:
     void SetUp() override {
         const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -29,7 +37,6 @@ protected:
         std::error_code ignored;
         fs::remove_all(mDir, ignored);
     }
-    std::string path(const std::string& name) const { return (mDir / name).string(); }
     size_t fileCount() const { return static_cast<size_t>(std::distance(fs::directory_iterator(mDir), {})); }
 
     fs::path mDir;
@@ -64,6 +71,70 @@ void writeRaw(const std::string& path, int width, int height, int channels, OIIO
 std::vector<char> readBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::vector<char>(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeBytes(const std::string& path, const std::vector<char>& bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// Noise in every channel, so that the encoded data does not compress away and
+// a mutation anywhere lands in real pixel data.
+Image makeNoise(int width, int height, uint32_t seed) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    std::mt19937 random(seed);
+    for (int i = 0; i < width * height; ++i) {
+        glm::vec4 texel;
+        for (int c = 0; c < 4; ++c) texel[c] = static_cast<float>(random() & 0xffu) / 255.0f;
+        image.texels.push_back(texel);
+    }
+    return image;
+}
+
+uint32_t readBigEndian(const std::vector<char>& bytes, size_t at) {
+    uint32_t value = 0;
+    for (size_t i = 0; i < 4; ++i) value = value << 8 | static_cast<unsigned char>(bytes[at + i]);
+    return value;
+}
+
+void writeBigEndian(std::vector<char>& bytes, size_t at, uint32_t value) {
+    for (size_t i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>(value >> (24 - 8 * i));
+}
+
+uint32_t crc32(const char* data, size_t size) {
+    uint32_t crc = 0xffffffffu;
+    for (size_t i = 0; i < size; ++i) {
+        crc ^= static_cast<unsigned char>(data[i]);
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+// Recomputes every chunk's CRC, so that libpng looks past the checksums and
+// parses what a mutation did to the chunk itself. Stops at a chunk whose
+// length runs past the end.
+void repairPngCrcs(std::vector<char>& png) {
+    constexpr size_t kSignatureBytes = 8;
+    for (size_t at = kSignatureBytes; at + 12 <= png.size();) {
+        const size_t length = readBigEndian(png, at);
+        if (length > png.size() - at - 12) return;
+        writeBigEndian(png, at + 8 + length, crc32(png.data() + at + 4, length + 4));
+        at += 12 + length;
+    }
+}
+
+// Where an EXR header's box2i attribute `name` keeps its xMax (yMax follows).
+size_t exrBoxMaxOffset(const std::vector<char>& exr, const std::string& name) {
+    const std::string key = name + std::string("\0box2i\0", 7);
+    const auto found = std::search(exr.begin(), exr.end(), key.begin(), key.end());
+    if (found == exr.end()) return 0;
+    return static_cast<size_t>(found - exr.begin()) + key.size() + 4 + 8;  // size, then xMin and yMin
+}
+
+void writeLittleEndian(std::vector<char>& bytes, size_t at, uint32_t value) {
+    for (size_t i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>(value >> (8 * i));
 }
 
 }  // namespace
@@ -241,3 +312,106 @@ TEST_F(ImageTest, DecodesFromMemory) {
     EXPECT_FALSE(loadImageFromMemory(junk, sizeof junk, "junk", ColourSpace::Srgb));
     EXPECT_FALSE(loadImageFromMemory(nullptr, 0, "empty", ColourSpace::Srgb));
 }
+
+// Each outcome of a broken file: an image, or an error that names the file
+// (and, for memory, the name given) on one line.
+void expectWellFormedOutcome(const Result<Image>& loaded, const std::string& name) {
+    if (loaded) {
+        EXPECT_GT(loaded->width, 0);
+        EXPECT_EQ(loaded->texels.size(), static_cast<size_t>(loaded->width) * static_cast<size_t>(loaded->height));
+        return;
+    }
+    EXPECT_NE(loaded.error().message().find(name), std::string::npos) << loaded.error().message();
+    EXPECT_EQ(loaded.error().message().find('\n'), std::string::npos) << loaded.error().message();
+}
+
+TEST_F(ImageTest, PngAndExrTruncatedAtManyOffsetsAreErrors) {
+    for (const char* extension : {".png", ".exr"}) {
+        SCOPED_TRACE(extension);
+        ASSERT_TRUE(saveImage(path(std::string("whole") + extension), makeNoise(32, 32, 7)));
+        const std::vector<char> whole = readBytes(path(std::string("whole") + extension));
+        size_t accepted = 0;
+        for (const size_t length : fuzz::truncationLengths(whole.size(), 64, 48)) {
+            SCOPED_TRACE("first " + std::to_string(length) + " bytes");
+            const std::string file = path("cut" + std::to_string(length) + extension);
+            writeBytes(file, fuzz::truncated(whole, length));
+            const Result<Image> fromFile = loadImage(file, ColourSpace::Linear);
+            expectWellFormedOutcome(fromFile, file);
+            const std::string name = "cut" + std::to_string(length) + extension;
+            expectWellFormedOutcome(loadImageFromMemory(whole.data(), length, name, ColourSpace::Linear), name);
+            // A PNG may lose its 12-byte IEND chunk and still hold every pixel.
+            if (length + 12 < whole.size()) accepted += fromFile ? 1 : 0;
+        }
+        EXPECT_EQ(accepted, 0u);
+    }
+}
+
+TEST_F(ImageTest, HeaderClaimingHugeSizeIsRefusedBeforeAllocating) {
+    ASSERT_TRUE(saveImage(path("small.png"), makeNoise(4, 4, 1)));
+    std::vector<char> png = readBytes(path("small.png"));
+    ASSERT_EQ(std::string(png.data() + 12, 4), "IHDR");
+    writeBigEndian(png, 16, 100000);
+    writeBigEndian(png, 20, 100000);
+    repairPngCrcs(png);
+    writeBytes(path("huge.png"), png);
+    Result<Image> loaded = loadImage(path("huge.png"), ColourSpace::Linear);
+    ASSERT_FALSE(loaded);
+    EXPECT_NE(loaded.error().what.find("100000x100000"), std::string::npos) << loaded.error().message();
+    EXPECT_EQ(loaded.error().where, path("huge.png"));
+    loaded = loadImageFromMemory(png.data(), png.size(), "embedded huge", ColourSpace::Linear);
+    ASSERT_FALSE(loaded);
+    EXPECT_NE(loaded.error().what.find("100000x100000"), std::string::npos) << loaded.error().message();
+
+    writeBigEndian(png, 16, 0x7fffffffu);  // beyond libpng's own limits
+    repairPngCrcs(png);
+    writeBytes(path("huger.png"), png);
+    expectWellFormedOutcome(loadImage(path("huger.png"), ColourSpace::Linear), path("huger.png"));
+    EXPECT_FALSE(loadImage(path("huger.png"), ColourSpace::Linear));
+
+    ASSERT_TRUE(saveImage(path("small.exr"), makeNoise(4, 4, 1)));
+    std::vector<char> exr = readBytes(path("small.exr"));
+    for (const char* box : {"dataWindow", "displayWindow"}) {
+        const size_t at = exrBoxMaxOffset(exr, box);
+        ASSERT_NE(at, 0u) << box;
+        writeLittleEndian(exr, at, 99999);
+        writeLittleEndian(exr, at + 4, 99999);
+    }
+    writeBytes(path("huge.exr"), exr);
+    // OpenEXR itself refuses this one (its line offset table runs past the
+    // end of the file) before the size check is reached.
+    loaded = loadImage(path("huge.exr"), ColourSpace::Linear);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().where, path("huge.exr"));
+}
+
+// 300 seeded mutants of a small noise image saved as `extension`, each read
+// from disk and every fourth also from memory (the path of glTF-embedded
+// images). PNG mutants at odd indices have their chunk CRCs repaired, so that
+// libpng parses the damage instead of stopping at the checksum.
+void expectMutantsWellFormed(ImageTest& test, const std::string& extension, uint32_t seed) {
+    constexpr int kMutants = 300;
+    const bool png = extension == ".png";
+    ASSERT_TRUE(saveImage(test.path("valid" + extension), makeNoise(16, 16, 3)));
+    const std::vector<char> valid = readBytes(test.path("valid" + extension));
+    fuzz::Mutator mutator(seed);
+    size_t accepted = 0;
+    for (int mutant = 0; mutant < kMutants; ++mutant) {
+        SCOPED_TRACE("mutant " + std::to_string(mutant));
+        std::vector<char> bytes = mutator.mutate(valid);
+        if (png && mutant % 2 == 1) repairPngCrcs(bytes);
+        const std::string name = "mutant" + std::to_string(mutant) + extension;
+        writeBytes(test.path(name), bytes);
+        const Result<Image> fromFile = loadImage(test.path(name), ColourSpace::Srgb);
+        expectWellFormedOutcome(fromFile, test.path(name));
+        if (mutant % 4 == 0)
+            expectWellFormedOutcome(loadImageFromMemory(bytes.data(), bytes.size(), name, ColourSpace::Srgb), name);
+        accepted += fromFile ? 1 : 0;
+    }
+    // Mutations inside pixel data often still decode: both outcomes are exercised.
+    EXPECT_GT(accepted, 0u);
+    EXPECT_LT(accepted, size_t(kMutants));
+}
+
+TEST_F(ImageTest, RandomMutationsOfPngNeverCrash) { expectMutantsWellFormed(*this, ".png", 1009u); }
+
+TEST_F(ImageTest, RandomMutationsOfExrNeverCrash) { expectMutantsWellFormed(*this, ".exr", 2003u); }

@@ -4,9 +4,12 @@
 
 #include "scene/SceneLoader.h"
 
+#include "FuzzSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -825,10 +828,11 @@ TEST(SceneLoader, InvalidUtf8AndControlCharactersGiveOneLineMessages) {
 TEST(SceneLoader, TruncatedFilesNeverCrash) {
     const std::string full = kFullScene;
     size_t accepted = 0;
-    for (size_t length = 0; length < full.size(); length += 7) {
+    for (const size_t length : fuzz::truncationLengths(full.size(), 64, 400)) {
         SCOPED_TRACE("prefix of " + std::to_string(length) + " bytes");
-        expectWellFormedOutcome(full.substr(0, length));
-        accepted += parseScene(full.substr(0, length), "t.json").ok() ? 1 : 0;
+        const std::string prefix = fuzz::truncated(full, length);
+        expectWellFormedOutcome(prefix);
+        accepted += parseScene(prefix, "t.json").ok() ? 1 : 0;
     }
     EXPECT_EQ(accepted, 0u);  // no proper prefix of an object is a JSON document
     expectWellFormedOutcome(full);
@@ -836,29 +840,82 @@ TEST(SceneLoader, TruncatedFilesNeverCrash) {
 
 TEST(SceneLoader, RandomMutationsNeverCrash) {
     const std::string full = kFullScene;
-    const std::string interesting = "{}[]\",:0123456789.-+eE truefalsnul\\/~\n";
-    std::mt19937 random(20240611u);
+    fuzz::Mutator mutator(20240611u, "{}[]\",:0123456789.-+eE truefalsnul\\/~\n");
+    constexpr int kMutants = 300;
     size_t accepted = 0;
-    for (int mutation = 0; mutation < 200; ++mutation) {
-        std::string text = full;
-        const int edits = 1 + static_cast<int>(random() % 6);
-        for (int e = 0; e < edits && !text.empty(); ++e) {
-            const size_t at = random() % text.size();
-            switch (random() % 5) {
-                case 0: text[at] = interesting[random() % interesting.size()]; break;
-                case 1: text[at] = static_cast<char>(random() & 0xff); break;
-                case 2: text.insert(at, 1, interesting[random() % interesting.size()]); break;
-                case 3: text.erase(at, 1 + random() % 8); break;
-                default: text.insert(at, text.substr(random() % text.size(), random() % 40)); break;
-            }
-        }
-        SCOPED_TRACE("mutation " + std::to_string(mutation));
+    for (int mutant = 0; mutant < kMutants; ++mutant) {
+        const std::string text = mutator.mutate(full);
+        SCOPED_TRACE("mutant " + std::to_string(mutant));
         expectWellFormedOutcome(text);
         accepted += parseScene(text, "m.json").ok() ? 1 : 0;
     }
     // Some mutations (inside strings, digits) stay valid: both paths are exercised.
     EXPECT_GT(accepted, 0u);
-    EXPECT_LT(accepted, 200u);
+    EXPECT_LT(accepted, size_t(kMutants));
+}
+
+// Every value of the full scene, in turn, replaced by one of each JSON type.
+TEST(SceneLoader, EveryValueWithEveryWrongTypeIsAWellFormedOutcome) {
+    const nlohmann::json document = nlohmann::json::parse(kFullScene);
+    const nlohmann::json flat = document.flatten();
+    const std::vector<nlohmann::json> replacements = {
+        "text", -1, 1e30, 2147483648.0, nullptr, true, nlohmann::json::array(), nlohmann::json::object(), {1, 2, 3}};
+    size_t accepted = 0;
+    for (const auto& [pointer, original] : flat.items()) {
+        for (const nlohmann::json& replacement : replacements) {
+            nlohmann::json edited = document;
+            edited[nlohmann::json::json_pointer(pointer)] = replacement;
+            SCOPED_TRACE(pointer + " = " + replacement.dump());
+            const Result<Scene> scene = readSceneDocument(edited, "typed.json");
+            if (scene.ok()) {
+                ++accepted;
+                continue;
+            }
+            EXPECT_EQ(scene.error().where, "typed.json");
+            EXPECT_EQ(scene.error().what.find('\n'), std::string::npos) << scene.error().what;
+        }
+    }
+    EXPECT_GT(accepted, 0u);  // e.g. a name that is any string, a scale that is 1e30
+}
+
+TEST(SceneLoader, MillionEntryArraysAreRefusedByTheirCaps) {
+    auto repeated = [](const std::string& element, size_t count) {
+        std::string text = "[";
+        text.reserve(count * (element.size() + 1) + 2);
+        for (size_t i = 0; i < count; ++i) {
+            if (i) text += ',';
+            text += element;
+        }
+        return text + "]";
+    };
+    constexpr size_t kMillion = 1000000;
+    EXPECT_EQ(errorOf("{\"lights\": " + repeated("{}", kMillion) + "}"),
+              "/lights: too many lights (1000000; at most 1024)");
+    EXPECT_EQ(errorOf("{\"characters\": " + repeated("{}", kMillion) + "}"),
+              "/characters: too many characters (1000000; at most 1024)");
+    EXPECT_EQ(errorOf("{\"camera\": {\"up\": " + repeated("0", kMillion) + "}}"),
+              "/camera/up: expected an array of 3 numbers, got 1000000 elements");
+
+    // The same from a file: the error names it.
+    TempDir dir;
+    const fs::path file = dir.path() / "million.json";
+    std::ofstream(file) << "{\"lights\": " << repeated("{}", kMillion) << "}";
+    const Result<Scene> scene = loadScene(file.string());
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().where, file.string());
+    EXPECT_NE(scene.error().what.find("too many lights"), std::string::npos) << scene.error().what;
+}
+
+TEST(SceneLoader, TruncatedFilesOnDiskNameTheFile) {
+    TempDir dir;
+    const std::string full = kFullScene;
+    const fs::path file = dir.path() / "cut.json";
+    for (const size_t length : fuzz::truncationLengths(full.size(), 8, 24)) {
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << fuzz::truncated(full, length);
+        const Result<Scene> scene = loadScene(file.string());
+        ASSERT_FALSE(scene.ok()) << length;
+        EXPECT_EQ(scene.error().where, file.string());
+    }
 }
 
 TEST(SceneTransform, ScalesThenRotatesXThenYThenZThenTranslates) {
