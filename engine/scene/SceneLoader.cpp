@@ -373,6 +373,10 @@ Result<Scene> loadScene(const std::string& path, const std::vector<std::string>&
     if (std::filesystem::is_directory(path, ec)) {
         return makeError(path, "cannot open scene file: it is a directory");
     }
+    // A FIFO or a device would block or never end; only files are read.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+        return makeError(path, "cannot open scene file: it is not a regular file");
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         return makeError(path, "cannot open scene file");

@@ -18,6 +18,9 @@
 #include <random>
 #include <string>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace dermis {
 namespace {
 
@@ -553,6 +556,16 @@ TEST(SceneLoader, MissingFileNamesTheFile) {
     EXPECT_EQ(scene.error().where, path);
     EXPECT_EQ(scene.error().what, "cannot open scene file");
     EXPECT_NE(scene.error().message().find("missing_scene.json"), std::string::npos);
+}
+
+TEST(SceneLoader, FifoIsRefusedWithoutBlocking) {
+    const std::string path = (std::filesystem::temp_directory_path() / ("dermis_scene_fifo_" + std::to_string(::getpid()))).string();
+    ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+    const Result<Scene> scene = loadScene(path);  // opening a FIFO for reading would wait for a writer
+    std::filesystem::remove(path);
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().where, path);
+    EXPECT_EQ(scene.error().what, "cannot open scene file: it is not a regular file");
 }
 
 TEST(SceneLoader, MalformedJsonReportsFileLineAndColumn) {
