@@ -40,6 +40,17 @@ void bindUvTarget(const FrameContext& frame, GLuint texture, int size) {
     frame.setViewport(size, size);
 }
 
+// A pass that rasterises the mesh into its UV layout: the texels no triangle
+// covers stay 0 (alpha 0 is how the dilation finds empty irradiance texels),
+// and both faces count.
+void beginUvRaster(const FrameContext& frame, GLuint texture, int size) {
+    bindUvTarget(frame, texture, size);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+}
+
 const char* const kOffScreen = "character off screen";
 
 }  // namespace
@@ -127,11 +138,7 @@ graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& f
                 builder.skipIf(!plan.visible, kOffScreen);
             },
             [&frame, plan](const graph::PassResources& resources, const StretchData& d) {
-                bindUvTarget(frame, resources.texture(d.stretch), plan.size);
-                const float zero[4] = {0, 0, 0, 0};
-                glClearBufferfv(GL_COLOR, 0, zero);
-                glDisable(GL_DEPTH_TEST);
-                glDisable(GL_CULL_FACE);
+                beginUvRaster(frame, resources.texture(d.stretch), plan.size);
                 glUseProgram(frame.programs->tsStretch.get());
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 drawTsMesh(frame, plan);
@@ -155,11 +162,7 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& 
                 builder.skipIf(!plan.visible, kOffScreen);
             },
             [&frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
-                bindUvTarget(frame, resources.texture(d.out), plan.size);
-                const float empty[4] = {0, 0, 0, 0};
-                glClearBufferfv(GL_COLOR, 0, empty);
-                glDisable(GL_DEPTH_TEST);
-                glDisable(GL_CULL_FACE);
+                beginUvRaster(frame, resources.texture(d.out), plan.size);
                 glUseProgram(frame.programs->tsIrradiance.get());
                 const GpuCharacter& character = frame.gpuScene->characters()[static_cast<size_t>(plan.character)];
                 glBindTextureUnit(0, character.albedoMap.get());

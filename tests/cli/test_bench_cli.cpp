@@ -16,7 +16,7 @@ using dermis::test::TempDir;
 namespace {
 
 const std::string kDermis = DERMIS_BINARY;
-const std::string kScene = dermis::test::contentDir() + "/scenes/default.json";
+const std::string kScene = dermis::test::contentScene("default.json");
 // Tiny on purpose: the reference at density 1 and one frame per configuration.
 const std::string kSmall = " --size 64x36 --frames 1 --density 1 --quiet";
 const std::string kSweep = " --sweep 'ss:sss.taps=5,9;ts:ts.min_size+ts.max_size=256'";

@@ -16,7 +16,7 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-std::string defaultScene() { return dermis::test::contentDir() + "/scenes/default.json"; }
+std::string defaultScene() { return dermis::test::contentScene("default.json"); }
 
 // The error output is one "error: ..." line (progress lines aside).
 std::string errorLine(const ProcessResult& r) {

@@ -18,7 +18,7 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-std::string defaultScene() { return dermis::test::contentDir() + "/scenes/default.json"; }
+std::string defaultScene() { return dermis::test::contentScene("default.json"); }
 
 std::string writeNormalMap(const TempDir& dir) {
     dermis::Image image;

@@ -16,7 +16,7 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-std::string furnaceScene() { return dermis::test::contentDir() + "/scenes/furnace.json"; }
+std::string furnaceScene() { return dermis::test::contentScene("furnace.json"); }
 
 size_t errorLines(const std::string& err) {
     size_t count = 0;

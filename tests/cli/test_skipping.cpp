@@ -37,13 +37,12 @@ bool executed(const nlohmann::json& timings, const std::string& name) {
     return false;
 }
 
-std::string scene(const std::string& name) { return dermis::test::contentDir() + "/scenes/" + name; }
 
 }  // namespace
 
 TEST(Skipping, NoSssSceneExecutesNoSssPass) {
     TempDir dir;
-    const nlohmann::json timings = renderTimings(dir, scene("no_sss.json"));
+    const nlohmann::json timings = renderTimings(dir, dermis::test::contentScene("no_sss.json"));
     EXPECT_EQ(executedWithPrefix(timings, "sss"), 0);
     EXPECT_FALSE(executed(timings, "transmittance"));
     EXPECT_TRUE(executed(timings, "lighting"));
@@ -51,9 +50,9 @@ TEST(Skipping, NoSssSceneExecutesNoSssPass) {
 
 TEST(Skipping, FarHeadExecutesFewerBlurPassesThanNear) {
     TempDir dir;
-    const int near = executedWithPrefix(renderTimings(dir, scene("default.json")), "sss skin");
+    const int near = executedWithPrefix(renderTimings(dir, dermis::test::contentScene("default.json")), "sss skin");
     const int far =
-        executedWithPrefix(renderTimings(dir, scene("default.json"), "--set camera.position_m=[1.6,0.3,4.2]"), "sss skin");
+        executedWithPrefix(renderTimings(dir, dermis::test::contentScene("default.json"), "--set camera.position_m=[1.6,0.3,4.2]"), "sss skin");
     std::printf("blur passes executed: near %d, far %d\n", near, far);
     EXPECT_GT(near, 0);
     EXPECT_LT(far, near);
@@ -61,10 +60,10 @@ TEST(Skipping, FarHeadExecutesFewerBlurPassesThanNear) {
 
 TEST(Skipping, SceneWithoutBackLightExecutesNoTransmittancePass) {
     TempDir dir;
-    EXPECT_TRUE(executed(renderTimings(dir, scene("default.json")), "transmittance"));
+    EXPECT_TRUE(executed(renderTimings(dir, dermis::test::contentScene("default.json")), "transmittance"));
     // The default's second light is the back light; point it from the camera's side.
     const nlohmann::json timings = renderTimings(
-        dir, scene("default.json"), "--set lights.1.position_m=[0.25,0.12,0.6] --set lights.1.direction=[-0.4,-0.2,-0.9]");
+        dir, dermis::test::contentScene("default.json"), "--set lights.1.position_m=[0.25,0.12,0.6] --set lights.1.direction=[-0.4,-0.2,-0.9]");
     EXPECT_FALSE(executed(timings, "transmittance"));
     EXPECT_GT(executedWithPrefix(timings, "sss skin"), 0);
 }
@@ -72,7 +71,7 @@ TEST(Skipping, SceneWithoutBackLightExecutesNoTransmittancePass) {
 TEST(Skipping, DisabledEffectsAreCulledWithTheirReason) {
     TempDir dir;
     const nlohmann::json timings =
-        renderTimings(dir, scene("default.json"), "--set sss.enabled=false --set transmittance.enabled=false");
+        renderTimings(dir, dermis::test::contentScene("default.json"), "--set sss.enabled=false --set transmittance.enabled=false");
     EXPECT_EQ(executedWithPrefix(timings, "sss"), 0);
     for (const auto& pass : timings["passes"]) {
         if (pass["name"] == "sss init") EXPECT_EQ(pass["culled_because"], "predicate: SSS disabled");

@@ -15,7 +15,6 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-std::string scene(const std::string& name) { return dermis::test::contentDir() + "/scenes/" + name; }
 
 nlohmann::json renderTimings(const TempDir& dir, const std::string& scenePath, const std::string& extra) {
     const std::string timings = dir.file("t.json");
@@ -57,12 +56,12 @@ std::string writeTwoHeads(const TempDir& dir) {
 
 TEST(TextureSpaceCli, ModeOptionSelectsTheChain) {
     TempDir dir;
-    const nlohmann::json ts = renderTimings(dir, scene("default.json"), "--mode ts");
+    const nlohmann::json ts = renderTimings(dir, dermis::test::contentScene("default.json"), "--mode ts");
     EXPECT_GT(passes(ts, "ts head").first, 8);
     EXPECT_EQ(passes(ts, "sss ").first, 0);
-    const nlohmann::json ss = renderTimings(dir, scene("default.json"), "--mode ss");
+    const nlohmann::json ss = renderTimings(dir, dermis::test::contentScene("default.json"), "--mode ss");
     EXPECT_EQ(passes(ss, "ts ").second, 0) << "screen-space mode declares no texture-space pass";
-    const ProcessResult bad = runProcess(kDermis + " render " + scene("default.json") + " --mode tx --quiet --out " +
+    const ProcessResult bad = runProcess(kDermis + " render " + dermis::test::contentScene("default.json") + " --mode tx --quiet --out " +
                                          dir.file("bad.png"));
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.err.find("--mode tx: expected ss or ts"), std::string::npos) << bad.err;
@@ -89,7 +88,7 @@ TEST(TextureSpaceCli, CompareWritesImagesHeatmapAndMetrics) {
     TempDir dir;
     const std::string out = dir.file("cmp");
     const ProcessResult r =
-        runProcess(kDermis + " compare " + scene("default.json") + " --out " + out + " --size 160x90 --frames 2 --quiet");
+        runProcess(kDermis + " compare " + dermis::test::contentScene("default.json") + " --out " + out + " --size 160x90 --frames 2 --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* name : {"ss.exr", "ts.exr", "ss.png", "ts.png", "difference.png", "metrics.json"}) {
         EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + name)) << name;
@@ -112,7 +111,7 @@ TEST(TextureSpaceCli, CompareWritesImagesHeatmapAndMetrics) {
     EXPECT_GT(passes(m["timings"]["ts"], "ts head").first, 8);
     EXPECT_EQ(passes(m["timings"]["ss"], "ts ").second, 0);
 
-    const ProcessResult missing = runProcess(kDermis + " compare " + scene("default.json") + " --quiet");
+    const ProcessResult missing = runProcess(kDermis + " compare " + dermis::test::contentScene("default.json") + " --quiet");
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_NE(missing.err.find("--out DIR is required"), std::string::npos) << missing.err;
 }

@@ -20,7 +20,7 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-std::string defaultScene() { return dermis::test::contentDir() + "/scenes/default.json"; }
+std::string defaultScene() { return dermis::test::contentScene("default.json"); }
 
 bool onPath(const std::string& program) {
     const char* path = std::getenv("PATH");

@@ -82,7 +82,7 @@ protected:
     }
 
     void load(const std::string& sceneFile) {
-        auto scene = loadScene(test::contentDir() + "/scenes/" + sceneFile);
+        auto scene = loadScene(test::contentScene(sceneFile));
         ASSERT_TRUE(scene.ok()) << scene.error().message();
         mScene = std::make_unique<Scene>(std::move(*scene));
         auto gpuScene = GpuScene::create(*mScene);

@@ -1,5 +1,6 @@
 // Screen-space SSS against closed forms: the furnace, the analytic edge, the
 // slab's thickness and transmittance, and the stencil mask.
+#include "AnalyticEdge.h"
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
@@ -18,42 +19,9 @@ class Sss : public test::RenderFixture {};
 
 constexpr int kTapCounts[] = {5, 7, 9, 13, 17};
 
-// The analytic-edge set-up: a 40 mm skin plane seen straight down from
-// kEdgeHeightM, its albedo a hard black|white step at x = 0. With mix = 1 all
-// albedo is applied before the blur, so the blur's input is exactly a step in
-// irradiance (seed 000 §2.2.4) and the diffuse AOV is the blurred step.
-constexpr double kEdgeFovDeg = 30.0;
-constexpr double kEdgeHeightM = 0.0336;
+// The analytic edge (AnalyticEdge.h) at this size.
 constexpr int kEdgeWidth = 640;
 constexpr int kEdgeHeight = 360;
-
-std::string writeEdgeScene(const test::TempDir& dir) {
-    Image step;
-    step.width = 4096;
-    step.height = 4;
-    step.colourSpace = ColourSpace::Linear;
-    for (int y = 0; y < step.height; ++y) {
-        for (int x = 0; x < step.width; ++x) {
-            const float v = x < step.width / 2 ? 0.0f : 1.0f;
-            step.texels.push_back(glm::vec4(v, v, v, 1.0f));
-        }
-    }
-    EXPECT_TRUE(saveImage(dir.file("step.png"), step).ok());
-    char json[2048];
-    std::snprintf(json, sizeof json, R"({
-      "camera": {"position_m": [0, %.6f, 0], "target_m": [0, 0, 0], "up": [0, 0, -1],
-                 "vertical_fov_deg": %.1f, "near_m": 0.005, "far_m": 1},
-      "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1, "shadow": false}],
-      "characters": [{"name": "step", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.04},
-                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "skin"}}],
-      "background": {"colour": [0, 0, 0]},
-      "settings": {"ambient": [0, 0, 0], "energy_conservation": false, "ssao": {"enabled": false},
-                   "transmittance": {"enabled": false}, "sss": {"mix": 1}}
-    })",
-                  kEdgeHeightM, kEdgeFovDeg);
-    test::writeTextFile(dir.file("edge.json"), json);
-    return dir.file("edge.json");
-}
 
 }  // namespace
 
@@ -81,28 +49,12 @@ TEST_F(Sss, FurnaceUniformLightStaysUniformForEveryTapCount) {
 
 TEST_F(Sss, AnalyticEdgeMatchesSumOfGaussianCdfs) {
     test::TempDir dir;
-    const std::string scene = writeEdgeScene(dir);
-    const DiffusionProfile& skin = skinProfile();
-    const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / kEdgeHeight;
+    const std::string scene = test::writeEdgeScene(dir);
     for (int taps : kTapCounts) {
         load(scene, {"sss.taps=" + std::to_string(taps), "sss.min_width_px=0"});
-        const Image image = render(Aov::Diffuse, kEdgeWidth, kEdgeHeight);
-        double maxError = 0.0;
-        double sumSquares = 0.0;
-        int samples = 0;
-        const int row = kEdgeHeight / 2;
-        for (int x = 0; x < kEdgeWidth; ++x) {
-            const double xMm = (x + 0.5 - kEdgeWidth / 2.0) * mmPerPixel;
-            const glm::vec3 expected = skin.edgeResponse(static_cast<float>(xMm));
-            const glm::vec4 got = image.at(x, row);
-            for (int c = 0; c < 3; ++c) {
-                const double error = std::abs(double(got[c]) - expected[c]);
-                maxError = std::max(maxError, error);
-                sumSquares += error * error;
-                ++samples;
-            }
-        }
-        const double rms = std::sqrt(sumSquares / samples);
+        const test::EdgeError error = test::edgeError(render(Aov::Diffuse, kEdgeWidth, kEdgeHeight), kEdgeWidth, kEdgeHeight);
+        const double maxError = error.max;
+        const double rms = error.rms;
         std::printf("analytic edge, %2d taps: max error %.4f, RMS %.4f (of a unit step)\n", taps, maxError, rms);
         // Bounds from the measured errors with margin: taps are nearest-texel
         // (SssBlur.glsl), so a few taps spread over a narrow Gaussian miss

@@ -2,6 +2,7 @@
 // screen-space mode: the stretch map on the UV sphere, the furnace through
 // the five blurs, the analytic edge, agreement on edge.json, light through
 // the ears, what runs, and the UV-space AOVs (stretch, irradiance-texture).
+#include "AnalyticEdge.h"
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
@@ -28,66 +29,6 @@ gl::Buffer uniformBuffer(size_t bytes) {
     gl::Buffer buffer = gl::createBuffer();
     glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
     return buffer;
-}
-
-// The analytic-edge set-up of test_sss.cpp: a 40 mm skin plane seen straight
-// down, its albedo a hard black|white step at x = 0, all albedo pre-scatter
-// (mix = 1), so the diffuse AOV is the blurred step.
-constexpr double kEdgeFovDeg = 30.0;
-constexpr double kEdgeHeightM = 0.0336;
-
-std::string writeEdgeScene(const test::TempDir& dir) {
-    Image step;
-    step.width = 4096;
-    step.height = 4;
-    step.colourSpace = ColourSpace::Linear;
-    for (int y = 0; y < step.height; ++y) {
-        for (int x = 0; x < step.width; ++x) {
-            const float v = x < step.width / 2 ? 0.0f : 1.0f;
-            step.texels.push_back(glm::vec4(v, v, v, 1.0f));
-        }
-    }
-    EXPECT_TRUE(saveImage(dir.file("step.png"), step).ok());
-    char json[2048];
-    std::snprintf(json, sizeof json, R"({
-      "camera": {"position_m": [0, %.6f, 0], "target_m": [0, 0, 0], "up": [0, 0, -1],
-                 "vertical_fov_deg": %.1f, "near_m": 0.005, "far_m": 1},
-      "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1, "shadow": false}],
-      "characters": [{"name": "step", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.04},
-                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "skin"}}],
-      "background": {"colour": [0, 0, 0]},
-      "settings": {"ambient": [0, 0, 0], "energy_conservation": false, "ssao": {"enabled": false},
-                   "transmittance": {"enabled": false}, "sss": {"mix": 1}}
-    })",
-                  kEdgeHeightM, kEdgeFovDeg);
-    test::writeTextFile(dir.file("edge.json"), json);
-    return dir.file("edge.json");
-}
-
-struct EdgeError {
-    double max = 0.0;
-    double rms = 0.0;
-};
-
-EdgeError edgeError(const Image& image, int width, int height) {
-    const DiffusionProfile& skin = skinProfile();
-    const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / height;
-    EdgeError e;
-    double sumSquares = 0.0;
-    int samples = 0;
-    const int row = height / 2;
-    for (int x = 0; x < width; ++x) {
-        const double xMm = (x + 0.5 - width / 2.0) * mmPerPixel;
-        const glm::vec3 expected = skin.edgeResponse(static_cast<float>(xMm));
-        for (int c = 0; c < 3; ++c) {
-            const double error = std::abs(double(image.at(x, row)[c]) - expected[c]);
-            e.max = std::max(e.max, error);
-            sumSquares += error * error;
-            ++samples;
-        }
-    }
-    e.rms = std::sqrt(sumSquares / samples);
-    return e;
 }
 
 int executedWithPrefix(const std::vector<PassSummary>& passes, const std::string& prefix) {
@@ -219,15 +160,15 @@ TEST_F(TextureSpace, FurnaceStaysUniformThroughTheFiveBlurs) {
 
 TEST_F(TextureSpace, AnalyticEdgeMatchesSumOfGaussianCdfsInBothModes) {
     test::TempDir dir;
-    const std::string scene = writeEdgeScene(dir);
+    const std::string scene = test::writeEdgeScene(dir);
     const int width = 640;
     const int height = 360;
     load(scene, {"sss.min_width_px=0"});
     const Image ss = render(Aov::Diffuse, width, height);
     load(scene, {"mode=ts"});
     const Image ts = render(Aov::Diffuse, width, height);
-    const EdgeError ssError = edgeError(ss, width, height);
-    const EdgeError tsError = edgeError(ts, width, height);
+    const test::EdgeError ssError = test::edgeError(ss, width, height);
+    const test::EdgeError tsError = test::edgeError(ts, width, height);
     auto agreement = compareImages(ss, ts);
     ASSERT_TRUE(agreement.ok());
     std::printf("analytic edge: ss max %.4f RMS %.4f; ts max %.4f RMS %.4f; ts against ss: max %.4f, relative RMSE %.4f\n",

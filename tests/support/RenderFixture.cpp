@@ -10,7 +10,7 @@
 namespace dermis::test {
 
 void RenderFixture::load(const std::string& sceneFile, const std::vector<std::string>& overrides) {
-    const std::string path = std::filesystem::exists(sceneFile) ? sceneFile : contentDir() + "/scenes/" + sceneFile;
+    const std::string path = std::filesystem::exists(sceneFile) ? sceneFile : contentScene(sceneFile);
     auto scene = loadScene(path, overrides);
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     mScene = std::make_unique<Scene>(std::move(*scene));

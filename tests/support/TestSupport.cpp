@@ -48,6 +48,8 @@ std::string readTextFile(const std::string& path) {
 }
 
 std::string contentDir() { return DERMIS_SOURCE_CONTENT_DIR; }
+
+std::string contentScene(const std::string& name) { return contentDir() + "/scenes/" + name; }
 std::string sharedContentDir() { return DERMIS_SHARED_CONTENT_DIR; }
 
 }  // namespace dermis::test

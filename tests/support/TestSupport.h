@@ -33,6 +33,7 @@ void writeTextFile(const std::string& path, const std::string& text);
 std::string readTextFile(const std::string& path);
 
 std::string contentDir();  // the project's content/
+std::string contentScene(const std::string& name);  // content/scenes/<name>
 std::string sharedContentDir();  // ../shared/content (may not exist)
 
 }  // namespace dermis::test

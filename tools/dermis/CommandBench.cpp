@@ -252,7 +252,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
         }
         row.frameGpuMs = measured->timings.frameGpuMs();
         row.sssGpuMs = sssGpuMs(row.passes);
-        row.wallMs = nlohmann::json::parse(measured->timingsJson)["frame"]["wall_ms"].get<double>();
+        row.wallMs = measured->wallMsPerFrame;
         row.relativeRmse = error->relativeRmse;
         row.maxAbsDifference = error->maxAbsDifference;
         row.psnrDb = error->psnrDb;

@@ -29,6 +29,7 @@ Result<MeasuredRender> measureRender(Session& session, const std::string& sceneP
     MeasuredRender result;
     result.timings = renderer.timings();
     result.timingsJson = result.timings.toJson(info);
+    result.wallMsPerFrame = info.wallMsPerFrame;
     auto finalImage = renderer.readOutput();
     if (!finalImage.ok()) return finalImage.error();
     result.finalImage = std::move(*finalImage);

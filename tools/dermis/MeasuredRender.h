@@ -23,6 +23,7 @@ struct MeasuredRender {
     Image diffuse;         // the diffuse AOV (linear), one more frame
     FrameTimings timings;  // the timed frames only
     std::string timingsJson;
+    double wallMsPerFrame = 0.0;  // of the timed frames
 };
 
 // `warmUpFrames` are rendered and not timed (shader variants, cached shadow

@@ -1,0 +1,31 @@
+#pragma once
+// The analytic-edge set-up shared by the screen-space and texture-space render
+// tests: a 40 mm skin plane seen straight down from kEdgeHeightM, its albedo a
+// hard black|white step at x = 0. With mix = 1 all albedo is applied before
+// the blur, so the blur's input is exactly a step in irradiance (seed 000
+// §2.2.4) and the diffuse AOV is the blurred step, whose closed form is
+// sum_i w_i Phi(x / sqrt(v_i)) (DiffusionProfile::edgeResponse).
+
+#include "TestSupport.h"
+
+#include "core/Image.h"
+
+#include <string>
+
+namespace dermis::test {
+
+constexpr double kEdgeFovDeg = 30.0;
+constexpr double kEdgeHeightM = 0.0336;
+
+// Writes step.png and edge.json into `dir`; returns the scene's path.
+std::string writeEdgeScene(const TempDir& dir);
+
+struct EdgeError {
+    double max = 0.0;  // largest |rendered - closed form| of any channel, as a fraction of the unit step
+    double rms = 0.0;
+};
+
+// The diffuse AOV's middle row against the skin profile's edge response.
+EdgeError edgeError(const Image& diffuse, int width, int height);
+
+}  // namespace dermis::test
