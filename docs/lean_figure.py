@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Seed 001's three variants side by side, with difference heatmaps: the
-figure docs/lean_variants.png of docs/lean_section.md.
+"""The three variants of Vila Verde 2015 side by side, with difference heatmaps: the
+figure docs/lean_variants.png of docs/lean.md.
 
     for v in c lcb lbb; do
         build/dermis render content/scenes/default.json --size 960x540 --frames 1 \
@@ -75,7 +75,7 @@ def main(folder, out):
         axis.set_yticks([])
     bar = figure.colorbar(shown, ax=list(axes[1]), fraction=0.025, pad=0.01)
     bar.set_label("largest sRGB channel difference (display value, 0..1)")
-    figure.suptitle("default.json at 960x540: seed 001's variants, their differences, and the specular alone",
+    figure.suptitle("default.json at 960x540: the variants of Vila Verde 2015, their differences, and the specular alone",
                     fontsize=11)
     figure.savefig(out, dpi=100, bbox_inches="tight")
 
