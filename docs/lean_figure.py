@@ -75,8 +75,8 @@ def main(folder, out):
         axis.set_yticks([])
     bar = figure.colorbar(shown, ax=list(axes[1]), fraction=0.025, pad=0.01)
     bar.set_label("largest sRGB channel difference (display value, 0..1)")
-    figure.suptitle("default.json at 960x540: the variants of Vila Verde 2015, their differences, and the specular alone",
-                    fontsize=11)
+    figure.suptitle("default.json at 960x540: the variants of Vila Verde 2015, their differences, "
+                    "and the specular alone", fontsize=11)
     figure.savefig(out, dpi=100, bbox_inches="tight")
 
 
