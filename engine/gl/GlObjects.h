@@ -42,7 +42,6 @@ inline void deleteFramebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
 inline void deleteVertexArray(GLuint n) { glDeleteVertexArrays(1, &n); }
 inline void deleteProgram(GLuint n) { glDeleteProgram(n); }
 inline void deleteQuery(GLuint n) { glDeleteQueries(1, &n); }
-inline void deleteSampler(GLuint n) { glDeleteSamplers(1, &n); }
 }  // namespace detail
 
 using Texture = Object<detail::deleteTexture>;
@@ -51,7 +50,6 @@ using Framebuffer = Object<detail::deleteFramebuffer>;
 using VertexArray = Object<detail::deleteVertexArray>;
 using Program = Object<detail::deleteProgram>;
 using Query = Object<detail::deleteQuery>;
-using Sampler = Object<detail::deleteSampler>;
 
 inline Texture createTexture(GLenum target) {
     GLuint name = 0;
@@ -73,19 +71,5 @@ inline VertexArray createVertexArray() {
     glCreateVertexArrays(1, &name);
     return VertexArray(name);
 }
-inline Sampler createSampler() {
-    GLuint name = 0;
-    glCreateSamplers(1, &name);
-    return Sampler(name);
-}
-
-// A scoped KHR_debug group: shows in RenderDoc / apitrace captures.
-class DebugGroup {
-public:
-    explicit DebugGroup(const char* label) { glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, label); }
-    ~DebugGroup() { glPopDebugGroup(); }
-    DebugGroup(const DebugGroup&) = delete;
-    DebugGroup& operator=(const DebugGroup&) = delete;
-};
 
 }  // namespace dermis::gl

@@ -119,7 +119,6 @@ public:
 
     std::vector<PassReport> passReports() const;
     bool wasExecuted(const std::string& passName) const;
-    size_t passCount() const { return mPasses.size(); }
     std::string textureName(TextureHandle texture) const;
 
 private:

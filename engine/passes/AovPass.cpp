@@ -1,5 +1,7 @@
 #include "passes/AovPass.h"
 
+#include "passes/FullscreenPass.h"
+
 namespace dermis {
 namespace {
 struct AovData {
@@ -7,7 +9,7 @@ struct AovData {
 };
 }  // namespace
 
-graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const AovInputs& inputs,
+graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& frame, const AovInputs& inputs,
                                 graph::TextureHandle output) {
     return graph
         .addPass<AovData>(
@@ -16,26 +18,17 @@ graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, 
                 d.depth = builder.read(inputs.gbuffer.depthStencil);
                 d.albedo = builder.read(inputs.gbuffer.albedo);
                 d.normalMaterial = builder.read(inputs.gbuffer.normalMaterial);
-                if (frame.aov == Aov::Diffuse) d.diffuse = builder.read(inputs.diffuse);
-                if (frame.aov == Aov::Specular) d.specular = builder.read(inputs.specular);
+                if (frame.plan.aov == Aov::Diffuse) d.diffuse = builder.read(inputs.diffuse);
+                if (frame.plan.aov == Aov::Specular) d.specular = builder.read(inputs.specular);
                 if (inputs.component.isValid()) d.component = builder.read(inputs.component);
                 d.out = builder.write(output);
             },
-            [&frame](const graph::PassResources& resources, const AovData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
-                glUseProgram(frame.programs->aov.get());
-                const GLuint albedo = resources.texture(d.albedo);
-                auto orAlbedo = [&](graph::TextureHandle h) { return h.isValid() ? resources.texture(h) : albedo; };
-                glBindTextureUnit(0, resources.texture(d.depth));
-                glBindTextureUnit(1, albedo);
-                glBindTextureUnit(2, orAlbedo(d.diffuse));
-                glBindTextureUnit(3, orAlbedo(d.specular));
-                glBindTextureUnit(4, resources.texture(d.normalMaterial));
-                glBindTextureUnit(5, orAlbedo(d.component));
-                frame.drawFullscreenTriangle();
+            [frame](const graph::PassResources& resources, const AovData& d) {
+                // What the AOV does not read is bound as the albedo (every sampler needs a texture).
+                auto orAlbedo = [&](graph::TextureHandle h) { return h.isValid() ? h : d.albedo; };
+                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->aov.get(),
+                                  {d.depth, d.albedo, orAlbedo(d.diffuse), orAlbedo(d.specular), d.normalMaterial,
+                                   orAlbedo(d.component)});
             })
         .out;
 }

@@ -16,7 +16,7 @@ struct AovInputs {
     graph::TextureHandle component;  // irradiance, AO or transmittance: read as the AOV itself
 };
 
-graph::TextureHandle addAovPass(graph::RenderGraph& graph, FrameContext& frame, const AovInputs& inputs,
+graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& frame, const AovInputs& inputs,
                                 graph::TextureHandle output);
 
 }  // namespace dermis

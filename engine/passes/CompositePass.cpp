@@ -1,5 +1,7 @@
 #include "passes/CompositePass.h"
 
+#include "passes/FullscreenPass.h"
+
 namespace dermis {
 namespace {
 struct CompositeData {
@@ -11,11 +13,11 @@ struct TonemapData {
 };
 }  // namespace
 
-graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                       graph::TextureHandle diffuse, graph::TextureHandle specular,
                                       const LeanShading& lean) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     return graph
         .addPass<CompositeData>(
             "composite",
@@ -31,27 +33,18 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& f
                 }
                 d.out = builder.create("hdr colour", {w, h, graph::TextureFormat::Rgba16F});
             },
-            [&frame](const graph::PassResources& resources, const CompositeData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
-                glUseProgram(d.lean.isValid() ? frame.programs->compositeLean.get() : frame.programs->composite.get());
-                if (d.lean.isValid()) {
-                    glBindTextureUnit(5, resources.texture(d.lean.moments));
-                    glBindTextureUnit(6, resources.texture(d.lean.visibility));
-                }
-                glBindTextureUnit(0, resources.texture(d.depth));
-                glBindTextureUnit(1, resources.texture(d.albedo));
-                glBindTextureUnit(2, resources.texture(d.diffuse));
-                glBindTextureUnit(3, resources.texture(d.specular));
-                glBindTextureUnit(4, resources.texture(d.normalMaterial));
-                frame.drawFullscreenTriangle();
+            [frame](const graph::PassResources& resources, const CompositeData& d) {
+                const Programs& programs = *frame.gl->programs;
+                // Units 5 and 6 only in the LEAN variants (invalid handles otherwise).
+                runFullscreenPass(frame, resources, {{d.out}},
+                                  d.lean.isValid() ? programs.compositeLean.get() : programs.composite.get(),
+                                  {d.depth, d.albedo, d.diffuse, d.specular, d.normalMaterial, d.lean.moments,
+                                   d.lean.visibility});
             })
         .out;
 }
 
-graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle hdr,
+graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle hdr,
                                     graph::TextureHandle output) {
     return graph
         .addPass<TonemapData>(
@@ -60,14 +53,8 @@ graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& fra
                 d.hdr = builder.read(hdr);
                 d.out = builder.write(output);
             },
-            [&frame](const graph::PassResources& resources, const TonemapData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
-                glUseProgram(frame.programs->tonemap.get());
-                glBindTextureUnit(0, resources.texture(d.hdr));
-                frame.drawFullscreenTriangle();
+            [frame](const graph::PassResources& resources, const TonemapData& d) {
+                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tonemap.get(), {d.hdr});
             })
         .out;
 }

@@ -13,12 +13,12 @@ namespace dermis {
 // With `lean` (variants lcb and lbb) the specular of characters with LEAN
 // maps is computed here from the blurred moments (LeanSpecularPass.h), and
 // `specular` serves the others.
-graph::TextureHandle addCompositePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                       graph::TextureHandle diffuse, graph::TextureHandle specular,
                                       const LeanShading& lean = {});
 
 // Writes tone-mapped sRGB into `output` (an imported RGBA8 texture).
-graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, FrameContext& frame, graph::TextureHandle hdr,
+graph::TextureHandle addTonemapPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle hdr,
                                     graph::TextureHandle output);
 
 }  // namespace dermis

@@ -2,9 +2,9 @@
 
 namespace dermis {
 
-GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     return graph.addPass<GBuffer>(
         "gbuffer",
         [&](graph::PassBuilder& builder, GBuffer& g) {
@@ -12,12 +12,12 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
             g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
-            if (frame.lean) {
+            if (frame.plan.lean) {
                 g.leanMoments = builder.create("lean moments", {w, h, graph::TextureFormat::Rgba16F});
                 g.leanCross = builder.create("lean cross moment", {w, h, graph::TextureFormat::R16F});
             }
         },
-        [&frame](const graph::PassResources& resources, const GBuffer& g) {
+        [frame](const graph::PassResources& resources, const GBuffer& g) {
             gl::Attachments attachments;
             attachments.colour[0] = resources.texture(g.albedo);
             attachments.colour[1] = resources.texture(g.normalMaterial);
@@ -28,8 +28,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             }
             attachments.depth = resources.texture(g.depthStencil);
             attachments.depthHasStencil = true;
-            frame.framebuffers->bind(attachments);
-            frame.setViewport(frame.width, frame.height);
+            frame.gl->framebuffers->bind(attachments);
+            frame.gl->setViewport(frame.plan.width, frame.plan.height);
             const float zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 0, zero);
             glClearBufferfv(GL_COLOR, 1, zero);
@@ -50,12 +50,12 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             glStencilMask(0xFF);
             glDisable(GL_CULL_FACE);
-            glUseProgram(g.hasLean() ? frame.programs->gbufferLean.get() : frame.programs->gbuffer.get());
-            const auto& characters = frame.gpuScene->characters();
+            glUseProgram(g.hasLean() ? frame.gl->programs->gbufferLean.get() : frame.gl->programs->gbuffer.get());
+            const auto& characters = frame.gl->gpuScene->characters();
             for (size_t index = 0; index < characters.size(); ++index) {
                 const GpuCharacter& character = characters[index];
-                frame.uploadObject(frame.objectBlock(index));
-                glStencilFunc(GL_ALWAYS, frame.sss.slotOfCharacter[index], 0xFF);
+                frame.gl->uploadObject(frame.objectBlock(index));
+                glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOfCharacter[index], 0xFF);
                 glBindTextureUnit(0, character.albedoMap.get());
                 glBindTextureUnit(1, character.normalMap.get());
                 glBindTextureUnit(2, character.leanMap1.get());

@@ -27,6 +27,6 @@ struct GBuffer {
     }
 };
 
-GBuffer addGBufferPass(graph::RenderGraph& graph, FrameContext& frame);
+GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame);
 
 }  // namespace dermis

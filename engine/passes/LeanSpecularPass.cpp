@@ -1,5 +1,7 @@
 #include "passes/LeanSpecularPass.h"
 
+#include "passes/FullscreenPass.h"
+
 namespace dermis {
 namespace {
 struct LeanSpecularData {
@@ -7,10 +9,10 @@ struct LeanSpecularData {
 };
 }  // namespace
 
-graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                          const LeanShading& lean, graph::TextureHandle lightingSpecular) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     return graph
         .addPass<LeanSpecularData>(
             "lean specular",
@@ -24,20 +26,10 @@ graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, FrameContext
                 d.specular = builder.read(lightingSpecular);
                 d.out = builder.create("lean specular", {w, h, graph::TextureFormat::Rgba16F});
             },
-            [&frame](const graph::PassResources& resources, const LeanSpecularData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
-                glUseProgram(frame.programs->leanSpecular.get());
-                glBindTextureUnit(0, resources.texture(d.depth));
-                glBindTextureUnit(1, resources.texture(d.albedo));
-                glBindTextureUnit(2, resources.texture(d.normalMaterial));
-                glBindTextureUnit(3, resources.texture(d.moments));
-                glBindTextureUnit(4, resources.texture(d.accumulated));
-                glBindTextureUnit(5, resources.texture(d.visibility));
-                glBindTextureUnit(6, resources.texture(d.specular));
-                frame.drawFullscreenTriangle();
+            [frame](const graph::PassResources& resources, const LeanSpecularData& d) {
+                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->leanSpecular.get(),
+                                  {d.depth, d.albedo, d.normalMaterial, d.moments, d.accumulated, d.visibility,
+                                   d.specular});
             })
         .out;
 }

@@ -24,7 +24,7 @@ struct LeanShading {
 
 // Returns the specular (RGBA16F): LEAN where the character has LEAN maps,
 // `lightingSpecular` elsewhere.
-graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                          const LeanShading& lean, graph::TextureHandle lightingSpecular);
 
 }  // namespace dermis

@@ -1,5 +1,7 @@
 #include "passes/LightingPass.h"
 
+#include "passes/FullscreenPass.h"
+
 namespace dermis {
 namespace {
 struct LightingData {
@@ -14,16 +16,16 @@ struct LightingData {
 void bindShadowMaps(const FrameContext& frame, const graph::PassResources& resources,
                     const std::vector<graph::TextureHandle>& shadowMaps) {
     for (size_t slot = 0; slot < DERMIS_MAX_SHADOWED_LIGHTS; ++slot) {
-        const GLuint map = slot < shadowMaps.size() ? resources.texture(shadowMaps[slot]) : frame.whiteTexture;
+        const GLuint map = slot < shadowMaps.size() ? resources.texture(shadowMaps[slot]) : frame.gl->whiteTexture;
         glBindTextureUnit(static_cast<GLuint>(4 + slot), map);
     }
 }
 
-Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                          const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion,
                          bool shadowVisibility) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     return graph
         .addPass<LightingData>(
             "lighting",
@@ -38,22 +40,16 @@ Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const G
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
                 if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
             },
-            [&frame](const graph::PassResources& resources, const LightingData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out.irradiance);
-                attachments.colour[1] = resources.texture(d.out.specular);
-                if (d.out.visibility.isValid()) attachments.colour[2] = resources.texture(d.out.visibility);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
+            [frame](const graph::PassResources& resources, const LightingData& d) {
                 const bool lean = d.leanCross.isValid();
-                glUseProgram(lean ? frame.programs->lightingLean.get() : frame.programs->lighting.get());
-                if (lean) glBindTextureUnit(8, resources.texture(d.leanCross));
-                glBindTextureUnit(0, resources.texture(d.gbuffer.depthStencil));
-                glBindTextureUnit(1, resources.texture(d.gbuffer.albedo));
-                glBindTextureUnit(2, resources.texture(d.gbuffer.normalMaterial));
-                glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
+                const Programs& programs = *frame.gl->programs;
+                beginFullscreenPass(frame, resources, {{d.out.irradiance, d.out.specular, d.out.visibility}},
+                                    lean ? programs.lightingLean.get() : programs.lighting.get(),
+                                    {d.gbuffer.depthStencil, d.gbuffer.albedo, d.gbuffer.normalMaterial,
+                                     d.ambientOcclusion});
                 bindShadowMaps(frame, resources, d.shadowMaps);
-                frame.drawFullscreenTriangle();
+                if (lean) glBindTextureUnit(8, resources.texture(d.leanCross));
+                frame.gl->drawFullscreenTriangle();
             })
         .out;
 }

@@ -21,7 +21,7 @@ struct Lighting {
 // pass that shades with the same shadows (the LEAN specular). With LEAN
 // targets in the G-buffer the irradiance's alpha carries GBuffer::leanCross
 // into the SSS chain.
-Lighting addLightingPass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                          const std::vector<graph::TextureHandle>& shadowMaps, graph::TextureHandle ambientOcclusion,
                          bool shadowVisibility = false);
 

@@ -1,17 +1,19 @@
 #pragma once
-// Pass 1 (DESIGN.md): one per shadow-casting light. Renders every character
-// into the light's map as linear depth along the light's axis (metres).
-// Skipped by its predicate when the cached map is still current.
+// The shadow maps: one pass per shadow-casting light (FramePlan::shadows).
+// Renders every character into the light's map as linear depth along the
+// light's axis (metres). Skipped by its predicate when the plan found the
+// cached map current (render/ShadowCache.h).
 
 #include "graph/RenderGraph.h"
 #include "render/FrameContext.h"
-#include "render/ShadowCache.h"
 
 #include <vector>
 
 namespace dermis {
 
-// Returns one handle per shadow slot (in LightSetup::shadowedLights order).
-std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, FrameContext& frame, ShadowCache& cache);
+// `maps` are the backend's shadow maps, one per FramePlan::shadows entry (0 on
+// the test backend). Returns one handle per shadow slot.
+std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, const FrameContext& frame,
+                                                  const std::vector<graph::BackendTexture>& maps);
 
 }  // namespace dermis

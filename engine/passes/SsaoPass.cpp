@@ -1,5 +1,7 @@
 #include "passes/SsaoPass.h"
 
+#include "passes/FullscreenPass.h"
+
 #include <string>
 
 namespace dermis {
@@ -20,17 +22,17 @@ struct SsaoBlurData {
 
 // Why SSAO has nothing to do this frame; empty when it runs.
 std::string ssaoSkipReason(const FrameContext& frame) {
-    const SsaoSettings& ssao = frame.scene->settings.ssao;
+    const SsaoSettings& ssao = frame.plan.scene->settings.ssao;
     if (!ssao.enabled) return "SSAO is disabled (settings.ssao.enabled = false)";
     if (!(ssao.strength > 0.0f)) return "SSAO strength is 0";
-    if (frame.scene->characters.empty()) return "no characters";
+    if (frame.plan.scene->characters.empty()) return "no characters";
     return {};
 }
 
 void uploadSsaoBlock(const FrameContext& frame) {
-    const gpu::SsaoBlock block = makeSsaoBlock(frame.scene->settings.ssao);
-    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, frame.passUniforms);
-    frame.uploadPassBlock(&block, sizeof block);
+    const gpu::SsaoBlock block = makeSsaoBlock(frame.plan.scene->settings.ssao);
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, frame.gl->passUniforms);
+    frame.gl->uploadPassBlock(&block, sizeof block);
 }
 
 }  // namespace
@@ -43,10 +45,10 @@ gpu::SsaoBlock makeSsaoBlock(const SsaoSettings& settings) {
     return block;
 }
 
-graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                    graph::TextureHandle white) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     const std::string skipReason = ssaoSkipReason(frame);
 
     const graph::TextureHandle rawAo =
@@ -61,17 +63,10 @@ graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, FrameContext& fram
                     builder.passThrough(d.ao, white);
                     builder.skipIf(!skipReason.empty(), skipReason);
                 },
-                [&frame](const graph::PassResources& resources, const SsaoData& d) {
-                    gl::Attachments attachments;
-                    attachments.colour[0] = resources.texture(d.ao);
-                    frame.framebuffers->bind(attachments);
-                    frame.setViewport(frame.width, frame.height);
+                [frame](const graph::PassResources& resources, const SsaoData& d) {
                     uploadSsaoBlock(frame);
-                    glUseProgram(frame.programs->ssao.get());
-                    glBindTextureUnit(0, resources.texture(d.depth));
-                    glBindTextureUnit(1, resources.texture(d.normalMaterial));
-                    glBindTextureUnit(2, resources.texture(d.albedo));
-                    frame.drawFullscreenTriangle();
+                    runFullscreenPass(frame, resources, {{d.ao}}, frame.gl->programs->ssao.get(),
+                                      {d.depth, d.normalMaterial, d.albedo});
                 })
             .ao;
 
@@ -85,18 +80,11 @@ graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, FrameContext& fram
                 // Culled with "ssao" (below), this resolves through "ao raw" to white.
                 builder.passThrough(d.ao, rawAo);
                 builder.skipIf(!skipReason.empty(), skipReason);
-                builder.skipIf(!frame.scene->settings.ssao.blur, "SSAO blur is off (settings.ssao.blur = false)");
+                builder.skipIf(!frame.plan.scene->settings.ssao.blur, "SSAO blur is off (settings.ssao.blur = false)");
             },
-            [&frame](const graph::PassResources& resources, const SsaoBlurData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.ao);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
+            [frame](const graph::PassResources& resources, const SsaoBlurData& d) {
                 uploadSsaoBlock(frame);
-                glUseProgram(frame.programs->ssaoBlur.get());
-                glBindTextureUnit(0, resources.texture(d.rawAo));
-                glBindTextureUnit(1, resources.texture(d.depthKey));
-                frame.drawFullscreenTriangle();
+                runFullscreenPass(frame, resources, {{d.ao}}, frame.gl->programs->ssaoBlur.get(), {d.rawAo, d.depthKey});
             })
         .ao;
 }

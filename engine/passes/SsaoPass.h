@@ -26,7 +26,7 @@ constexpr float kSsaoBlurDepthTolerance = 0.05f;  // fraction of the view depth
 
 // Returns the (blurred) AO texture, R8, 1 = unoccluded. `white` is an
 // imported 1x1 white texture: the result when SSAO does not run.
-graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addSsaoPasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                    graph::TextureHandle white);
 
 // The SsaoBlock both SSAO passes upload, from the scene's settings.

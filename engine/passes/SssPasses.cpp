@@ -1,5 +1,6 @@
 #include "passes/SssPasses.h"
 
+#include "passes/FullscreenPass.h"
 #include "render/SssVariant.h"
 #include "sss/BlurKernel.h"
 
@@ -21,7 +22,7 @@ struct BlurData {
 
 gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel, const SssGaussianStep& step,
                             int slot, bool horizontal) {
-    const SssSettings& settings = frame.scene->settings.sss;
+    const SssSettings& settings = frame.plan.scene->settings.sss;
     gpu::SssBlurBlock block{};
     for (size_t i = 0; i < kernel.weights.size(); ++i) {
         block.kernel[i] = glm::vec4(kernel.offsetsSigma[i], kernel.weights[i], 0.0f, 0.0f);
@@ -35,6 +36,73 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
     block.edges = glm::vec4(mode, settings.bilateralDepthMm,
                             settings.controlDepthScalePerMm, float(slot));
     return block;
+}
+
+// One direction of one Gaussian step of one profile slot (Jimenez et al.
+// 2009: a separable blur, horizontal then vertical). The vertical pass also
+// adds w_i x its result into the accumulations by blending (d'Eon & Luebke
+// 2007 §16.4.3) and hands readers `previous` when it cannot run; the
+// horizontal pass carries the step's predicate, and a culled horizontal
+// pass culls its vertical one as a missing input.
+struct BlurStep {
+    std::string name;       // "sss <profile> g<i>"
+    const SssSlotPlan* slot = nullptr;
+    SssGaussianStep step;
+    bool horizontal = true;
+    bool packed = false;    // the chain packs irradiance and LEAN moments (SssBlur.glsl, "PACKING")
+    std::string skipReason;
+};
+
+const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                            const BlurStep& blur, graph::TextureHandle in, graph::TextureHandle previous,
+                            SssChain& chain, const graph::TextureDesc& chainDesc) {
+    const std::string passName = blur.name + (blur.horizontal ? " h" : " v");
+    return graph.addPass<BlurData>(
+        passName,
+        [&](graph::PassBuilder& builder, BlurData& d) {
+            d.colour = builder.read(in);
+            d.depthKey = builder.read(gbuffer.depthKey);
+            d.stencil = builder.read(gbuffer.depthStencil);
+            if (blur.horizontal) {
+                d.out = builder.create(passName, chainDesc);
+                builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
+                builder.skipIf(blur.step.skipped, blur.skipReason);
+                return;
+            }
+            d.accumulatedIn = builder.read(chain.diffuse);
+            d.out = builder.create(passName, chainDesc);
+            d.accumulatedOut = builder.write(chain.diffuse);
+            builder.passThrough(d.out, previous);
+            for (graph::TextureHandle accumulated : chain.extras) {
+                d.extrasAccumulatedIn.push_back(builder.read(accumulated));
+                d.extrasAccumulatedOut.push_back(builder.write(accumulated));
+            }
+        },
+        [frame, step = blur.step, slot = blur.slot->slot, scissor = blur.slot->scissor, horizontal = blur.horizontal,
+         packed = blur.packed](const graph::PassResources& resources, const BlurData& d) {
+            std::vector<graph::TextureHandle> targets = {d.out, d.accumulatedOut};
+            targets.insert(targets.end(), d.extrasAccumulatedOut.begin(), d.extrasAccumulatedOut.end());
+            const Programs& programs = *frame.gl->programs;
+            beginFullscreenPass(frame, resources, {targets, d.stencil},
+                                packed ? programs.sssBlurLean.get() : programs.sssBlur.get(), {d.colour, d.depthKey});
+            const gpu::SssBlurBlock block = blurBlock(frame, frame.plan.sssKernel, step, slot, horizontal);
+            frame.gl->uploadPassBlock(&block, sizeof block);
+            const ScopedSssState state(frame, scissor, slot);
+            if (horizontal) {
+                frame.gl->drawFullscreenTriangle();
+                return;
+            }
+            // Irradiance: += w_i (RGB) x value; its alpha and the moments: += mean(w_i) x value (SssVariant.h).
+            glEnablei(GL_BLEND, 1);
+            glBlendFuncSeparatei(1, GL_CONSTANT_COLOR, GL_ONE, GL_CONSTANT_ALPHA, GL_ONE);
+            for (size_t k = 0; k < d.extrasAccumulatedOut.size(); ++k) {
+                glEnablei(GL_BLEND, static_cast<GLuint>(2 + k));
+                glBlendFunci(static_cast<GLuint>(2 + k), GL_CONSTANT_ALPHA, GL_ONE);
+            }
+            glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
+            frame.gl->drawFullscreenTriangle();
+            for (size_t k = 0; k <= d.extrasAccumulatedOut.size(); ++k) glDisablei(GL_BLEND, static_cast<GLuint>(1 + k));
+        });
 }
 
 }  // namespace
@@ -60,7 +128,7 @@ ScopedSssState::ScopedSssState(const FrameContext& frame, const glm::ivec4& scis
     if (scissor.z > 0 && scissor.w > 0) {
         glScissor(scissor.x, scissor.y, scissor.z, scissor.w);
     } else {
-        glScissor(0, 0, frame.width, frame.height);
+        glScissor(0, 0, frame.plan.width, frame.plan.height);
     }
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -81,18 +149,15 @@ ScopedSssState::~ScopedSssState() {
     glDepthMask(GL_TRUE);
 }
 
-SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                      graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    const auto w = static_cast<uint32_t>(frame.width);
-    const auto h = static_cast<uint32_t>(frame.height);
+    const auto w = static_cast<uint32_t>(frame.plan.width);
+    const auto h = static_cast<uint32_t>(frame.plan.height);
     const graph::TextureDesc colourDesc{w, h, graph::TextureFormat::Rgba16F};
-    const bool anyVisible = frame.sss.anyVisible();
+    const bool anyVisible = frame.plan.sss.anyVisible();
     assert(extras.empty() || extras.size() == kLeanSssTargets);
     const bool packed = !extras.empty();  // the chain carries colour and moments as halves (SssBlur.glsl)
     const graph::TextureDesc chainDesc{w, h, packed ? graph::TextureFormat::Rgba32UI : graph::TextureFormat::Rgba16F};
-    const Programs& programs = *frame.programs;
-    const GLuint initProgram = packed ? programs.sssInitLean.get() : programs.sssInit.get();
-    const GLuint blurProgram = packed ? programs.sssBlurLean.get() : programs.sssBlur.get();
 
     const InitData& init = graph.addPass<InitData>(
         "sss init",
@@ -108,121 +173,43 @@ SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuff
                 builder.passThrough(d.extrasAccumulated.back(), extra);
             }
             if (packed) d.chain = builder.create("sss chain", chainDesc);
-            builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
+            builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
             builder.skipIf(!anyVisible, "no SSS pixel on screen");
         },
-        [&frame, initProgram](const graph::PassResources& resources, const InitData& d) {
-            gl::Attachments attachments;
-            attachments.colour[0] = resources.texture(d.accumulated);
-            if (d.chain.isValid()) {
-                attachments.colour[1] = resources.texture(d.extrasAccumulated[0]);
-                attachments.colour[2] = resources.texture(d.chain);
+        [frame](const graph::PassResources& resources, const InitData& d) {
+            const Programs& programs = *frame.gl->programs;
+            if (!d.chain.isValid()) {
+                runFullscreenPass(frame, resources, {{d.accumulated}}, programs.sssInit.get(), {d.irradiance, d.depthKey});
+                return;
             }
-            frame.framebuffers->bind(attachments);
-            frame.setViewport(frame.width, frame.height);
-            glUseProgram(initProgram);
-            glBindTextureUnit(0, resources.texture(d.irradiance));
-            glBindTextureUnit(1, resources.texture(d.depthKey));
-            if (d.chain.isValid()) glBindTextureUnit(2, resources.texture(d.extras[0]));
-            frame.drawFullscreenTriangle();
+            runFullscreenPass(frame, resources, {{d.accumulated, d.extrasAccumulated[0], d.chain}},
+                              programs.sssInitLean.get(), {d.irradiance, d.depthKey, d.extras[0]});
         });
     SssChain chain{init.accumulated, init.extrasAccumulated};
     const graph::TextureHandle chainStart = packed ? init.chain : irradiance;
 
-    auto kernel = makeGaussianKernel(frame.scene->settings.sss.taps);
-    if (!kernel.ok()) return chain;  // the scene loader validates taps; nothing to blur with
-    const BlurKernel taps = *kernel;  // copied into each pass: it outlives this function
-
-    for (const SssSlotPlan& slot : frame.sss.slots) {
+    for (const SssSlotPlan& slot : frame.plan.sss.slots) {
         graph::TextureHandle current = chainStart;
-        const std::string prefix = "sss " + slot.profile->name() + " g";
         for (const SssGaussianStep& step : slot.steps) {
-            const std::string name = prefix + std::to_string(step.gaussian);
+            BlurStep blur;
+            blur.name = "sss " + slot.profile->name() + " g" + std::to_string(step.gaussian);
+            blur.slot = &slot;
+            blur.step = step;
+            blur.packed = packed;
             char why[96];
             std::snprintf(why, sizeof why, slot.visible ? "%.2f px wide at the nearest SSS pixel (< %g px)"
                                                         : "no pixel of this profile on screen",
-                          double(step.widthPxAtNearest), double(frame.scene->settings.sss.minWidthPx));
-            const BlurData& horizontal = graph.addPass<BlurData>(
-                name + " h",
-                [&](graph::PassBuilder& builder, BlurData& d) {
-                    d.colour = builder.read(current);
-                    d.depthKey = builder.read(gbuffer.depthKey);
-                    d.stencil = builder.read(gbuffer.depthStencil);
-                    d.out = builder.create(name + " h", chainDesc);
-                    builder.skipIf(!frame.scene->settings.sss.enabled, "SSS disabled");
-                    builder.skipIf(step.skipped, why);
-                },
-                [&frame, taps, step, blurProgram, slotIndex = slot.slot, scissor = slot.scissor](
-                    const graph::PassResources& resources, const BlurData& d) {
-                    gl::Attachments attachments;
-                    attachments.colour[0] = resources.texture(d.out);
-                    attachments.depth = resources.texture(d.stencil);
-                    attachments.depthHasStencil = true;
-                    frame.framebuffers->bind(attachments);
-                    frame.setViewport(frame.width, frame.height);
-                    const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, true);
-                    frame.uploadPassBlock(&block, sizeof block);
-                    glUseProgram(blurProgram);
-                    glBindTextureUnit(0, resources.texture(d.colour));
-                    glBindTextureUnit(1, resources.texture(d.depthKey));
-                    const ScopedSssState state(frame, scissor, slotIndex);
-                    frame.drawFullscreenTriangle();
-                });
-            const BlurData& vertical = graph.addPass<BlurData>(
-                name + " v",
-                [&](graph::PassBuilder& builder, BlurData& d) {
-                    d.colour = builder.read(horizontal.out);
-                    d.depthKey = builder.read(gbuffer.depthKey);
-                    d.stencil = builder.read(gbuffer.depthStencil);
-                    d.accumulatedIn = builder.read(chain.diffuse);
-                    d.out = builder.create(name + " v", chainDesc);
-                    d.accumulatedOut = builder.write(chain.diffuse);
-                    builder.passThrough(d.out, current);
-                    for (graph::TextureHandle accumulated : chain.extras) {
-                        d.extrasAccumulatedIn.push_back(builder.read(accumulated));
-                        d.extrasAccumulatedOut.push_back(builder.write(accumulated));
-                    }
-                },
-                [&frame, taps, step, blurProgram, slotIndex = slot.slot, scissor = slot.scissor](
-                    const graph::PassResources& resources, const BlurData& d) {
-                    gl::Attachments attachments;
-                    attachments.colour[0] = resources.texture(d.out);
-                    attachments.colour[1] = resources.texture(d.accumulatedOut);
-                    for (size_t k = 0; k < d.extrasAccumulatedOut.size(); ++k) {
-                        attachments.colour[2 + k] = resources.texture(d.extrasAccumulatedOut[k]);
-                    }
-                    attachments.depth = resources.texture(d.stencil);
-                    attachments.depthHasStencil = true;
-                    frame.framebuffers->bind(attachments);
-                    frame.setViewport(frame.width, frame.height);
-                    const gpu::SssBlurBlock block = blurBlock(frame, taps, step, slotIndex, false);
-                    frame.uploadPassBlock(&block, sizeof block);
-                    glUseProgram(blurProgram);
-                    glBindTextureUnit(0, resources.texture(d.colour));
-                    glBindTextureUnit(1, resources.texture(d.depthKey));
-                    const ScopedSssState state(frame, scissor, slotIndex);
-                    // Irradiance: += w_i (RGB) x value; its alpha and the moments: += mean(w_i) x value (SssVariant.h).
-                    glEnablei(GL_BLEND, 1);
-                    glBlendFuncSeparatei(1, GL_CONSTANT_COLOR, GL_ONE, GL_CONSTANT_ALPHA, GL_ONE);
-                    for (size_t k = 0; k < d.extrasAccumulatedOut.size(); ++k) {
-                        glEnablei(GL_BLEND, static_cast<GLuint>(2 + k));
-                        glBlendFunci(static_cast<GLuint>(2 + k), GL_CONSTANT_ALPHA, GL_ONE);
-                    }
-                    glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
-                    frame.drawFullscreenTriangle();
-                    for (size_t k = 0; k <= d.extrasAccumulatedOut.size(); ++k) glDisablei(GL_BLEND, static_cast<GLuint>(1 + k));
-                });
+                          double(step.widthPxAtNearest), double(frame.plan.scene->settings.sss.minWidthPx));
+            blur.skipReason = why;
+            const BlurData& horizontal = addBlurPass(graph, frame, gbuffer, blur, current, {}, chain, chainDesc);
+            blur.horizontal = false;
+            const BlurData& vertical = addBlurPass(graph, frame, gbuffer, blur, horizontal.out, current, chain, chainDesc);
             current = vertical.out;
             chain.diffuse = vertical.accumulatedOut;
             chain.extras = vertical.extrasAccumulatedOut;
         }
     }
     return chain;
-}
-
-graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                  graph::TextureHandle irradiance) {
-    return addSssChain(graph, frame, gbuffer, irradiance, {}).diffuse;
 }
 
 }  // namespace dermis

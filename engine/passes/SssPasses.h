@@ -22,10 +22,6 @@
 
 namespace dermis {
 
-// Returns the accumulated diffuse irradiance (what the composite reads).
-graph::TextureHandle addSssPasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
-                                  graph::TextureHandle irradiance);
-
 struct SssChain {
     graph::TextureHandle diffuse;               // accumulated irradiance
     std::vector<graph::TextureHandle> extras;   // accumulated extra targets, in the order given
@@ -39,7 +35,7 @@ struct SssChain {
 // Gaussian (include/SssBlur.glsl, "EXTRA TARGETS AND ALPHA", "PACKING").
 // Pixels no blur touches keep their values; with nothing to blur, readers
 // get the inputs themselves.
-SssChain addSssChain(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                      graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 
 constexpr int kAnySssPixel = -1;

@@ -1,7 +1,8 @@
 #pragma once
-// Texture-space SSS, the "ts" mode (DESIGN.md "Texture-space mode";
+// Texture-space SSS, the "ts" mode (d'Eon & Luebke 2007;
 // shaders/include/TextureSpace.glsl is the method's manual, render/TsPlan.h
-// decides what runs). It takes the place of the screen-space chain
+// decides what runs, FramePlan::ts holds the decisions). It takes the place
+// of the screen-space chain
 // (SssPasses.h) and returns what the composite reads in its stead:
 //
 //   ts init                    the accumulation starts as the lighting's irradiance
@@ -17,8 +18,8 @@
 // A character off screen has every one of its passes skipped by predicate;
 // with none on screen "ts init" is skipped too and the composite reads the
 // irradiance itself (passThrough). Textures are the graph's transients
-// (pooled); what lives across frames (the meshes' UV-layout buffers) is in
-// TextureSpaceState, owned by the FrameContext.
+// (pooled); what lives across frames (the meshes' UV-layout buffers,
+// render/TsMeshes.h) is made by the prepare step (render/FrameResources.h).
 //
 // The screen-space transmittance pass is not read in this mode (the TSM
 // carries light through thin regions instead), so the graph culls it.
@@ -27,17 +28,11 @@
 #include "passes/GBufferPass.h"
 #include "render/Aov.h"
 #include "render/FrameContext.h"
-#include "render/TsMeshes.h"
 #include "render/TsPlan.h"
 
 #include <vector>
 
 namespace dermis {
-
-struct TextureSpaceState {
-    TsMeshes meshes;
-    TsPlan plan;  // the last frame's
-};
 
 // c in the stored exp(-c d) of the thickness (1/mm): 50 mm (the front) is
 // e^-5, well inside fp16 (seed 000 listing 2.7 uses 0.1 in its units).
@@ -47,26 +42,24 @@ constexpr float kTsThicknessPerMm = 0.1f;
 // listing 2.11: three of six).
 constexpr int kTsmGaussians = 3;
 
-// Plans the frame (frame.textureSpace->plan) and declares its passes.
-// `irradiance` is the lighting pass's diffuse irradiance (before the
-// screen-space transmittance).
-graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+// Declares the passes of FramePlan::ts. `irradiance` is the lighting pass's
+// diffuse irradiance (before the screen-space transmittance); `black` an
+// imported 1x1 black texture (the TSM of a character without one).
+graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
-                                           graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance);
+                                           graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
+                                           graph::TextureHandle black);
 
 // The UV-space AOVs (render/Aov.h), in either SSS mode: the stretch map, or
 // the irradiance texture before dilation and blurs, of the first SSS character
 // on screen. Only the passes that texture needs are declared (stretch; tsm and
 // irradiance), so in screen-space mode nothing else of this mode runs. `none`
 // when no SSS character is on screen (or SSS is off).
-graph::TextureHandle addTsAovPasses(graph::RenderGraph& graph, FrameContext& frame, Aov aov, const GBuffer& gbuffer,
+graph::TextureHandle addTsAovPasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                     const std::vector<graph::TextureHandle>& shadowMaps,
                                     graph::TextureHandle ambientOcclusion, graph::TextureHandle none);
 
-// Plans the frame into frame.textureSpace (made on first use). Errors from planTextureSpace.
-Status planTextureSpaceFrame(FrameContext& frame);
-
 // The stretch pass alone, for tests of it: the stretch map of `plan`'s character.
-graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan);
+graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan);
 
 }  // namespace dermis

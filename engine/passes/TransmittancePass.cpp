@@ -1,5 +1,6 @@
 #include "passes/TransmittancePass.h"
 
+#include "passes/FullscreenPass.h"
 #include "passes/LightingPass.h"
 #include "passes/SssPasses.h"
 
@@ -13,17 +14,10 @@ struct TransmittanceData {
 };
 }  // namespace
 
-bool anyBackLight(const FrameContext& frame) {
-    for (int index : frame.lights.shadowedLights) {
-        if (frame.lights.block.lights[index].shadowDepth.w > 0.5f) return true;
-    }
-    return false;
-}
-
-graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                           const std::vector<graph::TextureHandle>& shadowMaps,
                                           graph::TextureHandle addInto, graph::TextureHandle black) {
-    const TransmittanceSettings& settings = frame.scene->settings.transmittance;
+    const TransmittanceSettings& settings = frame.plan.scene->settings.transmittance;
     const bool ownTarget = !addInto.isValid();
     return graph
         .addPass<TransmittanceData>(
@@ -35,8 +29,8 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, FrameContex
                 d.gbuffer.depthKey = builder.read(gbuffer.depthKey);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 if (ownTarget) {
-                    d.out = builder.create("transmitted", {static_cast<uint32_t>(frame.width),
-                                                           static_cast<uint32_t>(frame.height),
+                    d.out = builder.create("transmitted", {static_cast<uint32_t>(frame.plan.width),
+                                                           static_cast<uint32_t>(frame.plan.height),
                                                            graph::TextureFormat::Rgba16F});
                     builder.passThrough(d.out, black);
                 } else {
@@ -44,29 +38,23 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, FrameContex
                     d.out = builder.write(addInto);
                 }
                 builder.skipIf(!settings.enabled, "transmittance disabled");
-                builder.skipIf(!frame.sss.anyVisible(), "no SSS pixel on screen");
-                builder.skipIf(!anyBackLight(frame), "no shadowed light behind an SSS character");
+                builder.skipIf(!frame.plan.sss.anyVisible(), "no SSS pixel on screen");
+                builder.skipIf(!frame.plan.anyBackLight, "no shadowed light behind an SSS character");
             },
-            [&frame, ownTarget](const graph::PassResources& resources, const TransmittanceData& d) {
-                gl::Attachments attachments;
-                attachments.colour[0] = resources.texture(d.out);
-                attachments.depth = resources.texture(d.gbuffer.depthStencil);
-                attachments.depthHasStencil = true;
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(frame.width, frame.height);
+            [frame, ownTarget](const graph::PassResources& resources, const TransmittanceData& d) {
+                // Unit 0 is not sampled: depth comes from the depth key.
+                beginFullscreenPass(frame, resources, {{d.out}, d.gbuffer.depthStencil},
+                                    frame.gl->programs->transmittance.get(),
+                                    {{}, d.gbuffer.albedo, d.gbuffer.normalMaterial, d.gbuffer.depthKey});
                 if (ownTarget) {
                     const float zero[4] = {0, 0, 0, 0};
                     glClearBufferfv(GL_COLOR, 0, zero);
                 }
-                glUseProgram(frame.programs->transmittance.get());
-                glBindTextureUnit(1, resources.texture(d.gbuffer.albedo));
-                glBindTextureUnit(2, resources.texture(d.gbuffer.normalMaterial));
-                glBindTextureUnit(3, resources.texture(d.gbuffer.depthKey));
                 bindShadowMaps(frame, resources, d.shadowMaps);
-                const ScopedSssState state(frame, sssScissor(frame.sss), kAnySssPixel);
+                const ScopedSssState state(frame, sssScissor(frame.plan.sss), kAnySssPixel);
                 glEnablei(GL_BLEND, 0);
                 glBlendFunci(0, GL_ONE, GL_ONE);
-                frame.drawFullscreenTriangle();
+                frame.gl->drawFullscreenTriangle();
                 glDisablei(GL_BLEND, 0);
             })
         .out;

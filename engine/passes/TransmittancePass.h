@@ -12,13 +12,11 @@
 
 namespace dermis {
 
-// True when some shadow-casting light is marked as a back light this frame.
-bool anyBackLight(const FrameContext& frame);
 
 // Adds into `addInto` (the irradiance) and returns its new version; with an
 // invalid `addInto` it writes a texture of its own, cleared first (for the
 // transmittance AOV), falling back to `black` when the pass is skipped.
-graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, FrameContext& frame, const GBuffer& gbuffer,
+graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                           const std::vector<graph::TextureHandle>& shadowMaps,
                                           graph::TextureHandle addInto, graph::TextureHandle black);
 

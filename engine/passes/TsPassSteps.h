@@ -6,7 +6,6 @@
 #include "passes/GBufferPass.h"
 #include "render/FrameContext.h"
 #include "render/TsPlan.h"
-#include "sss/BlurKernel.h"
 
 #include <string>
 #include <vector>
@@ -21,17 +20,17 @@ void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, cons
 void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan);
 std::string tsPassName(const TsCharacterPlan& plan, const std::string& step);
 
-graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                 graph::TextureHandle black);
-graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                        const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
                                        graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm);
-graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addDilatePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                    graph::TextureHandle irradiance);
 // One texture per Gaussian step, the first blurred from `dilated` (a skipped
-// step's texture is the previous one).
-std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
-                                                const TsCharacterPlan& plan, const BlurKernel& kernel,
-                                                graph::TextureHandle stretch, graph::TextureHandle dilated);
+// step's texture is the previous one), with FramePlan::tsKernel.
+std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const FrameContext& frame,
+                                                const TsCharacterPlan& plan, graph::TextureHandle stretch,
+                                                graph::TextureHandle dilated);
 
 }  // namespace dermis

@@ -1,4 +1,5 @@
 // The texture-space passes that work in a character's UV layout (TextureSpacePasses.h).
+#include "passes/FullscreenPass.h"
 #include "passes/LightingPass.h"
 #include "passes/TextureSpacePasses.h"
 #include "passes/TsPassSteps.h"
@@ -33,18 +34,14 @@ graph::TextureDesc uvDesc(const TsCharacterPlan& plan, graph::TextureFormat form
     return {side, side, format};
 }
 
-void bindUvTarget(const FrameContext& frame, GLuint texture, int size) {
-    gl::Attachments attachments;
-    attachments.colour[0] = texture;
-    frame.framebuffers->bind(attachments);
-    frame.setViewport(size, size);
-}
-
 // A pass that rasterises the mesh into its UV layout: the texels no triangle
 // covers stay 0 (alpha 0 is how the dilation finds empty irradiance texels),
 // and both faces count.
 void beginUvRaster(const FrameContext& frame, GLuint texture, int size) {
-    bindUvTarget(frame, texture, size);
+    gl::Attachments attachments;
+    attachments.colour[0] = texture;
+    frame.gl->framebuffers->bind(attachments);
+    frame.gl->setViewport(size, size);
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glDisable(GL_DEPTH_TEST);
@@ -56,12 +53,12 @@ const char* const kOffScreen = "character off screen";
 }  // namespace
 
 gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsCharacterPlan& plan) {
-    const TextureSpaceSettings& ts = frame.scene->settings.ts;
+    const TextureSpaceSettings& ts = frame.plan.scene->settings.ts;
     gpu::TextureSpaceBlock block{};
     block.tsmClipFromWorld = plan.tsmClipFromWorld;
     block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
     block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
-    const float strength = ts.tsmStrength * frame.scene->settings.transmittance.strength;
+    const float strength = ts.tsmStrength * frame.plan.scene->settings.transmittance.strength;
     // Seed 000 listing 2.11 adds the TSM terms for the three widest of six
     // Gaussians: the narrow ones fade within a fraction of a millimetre and
     // only add speckle where the thickness vanishes at the light's silhouette.
@@ -69,7 +66,7 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
     block.tsm = glm::vec4(kTsThicknessPerMm, strength, float(plan.tsmSize), firstTsmGaussian);
     block.size = glm::vec4(float(plan.size), 1.0f / float(std::max(plan.size, 1)), ts.seamBlend,
                            float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS)));
-    const glm::mat4& worldFromObject = frame.gpuScene->characters()[static_cast<size_t>(plan.character)].worldFromObject;
+    const glm::mat4& worldFromObject = frame.plan.characters[static_cast<size_t>(plan.character)].worldFromObject;
     block.params = glm::vec4(float(dilationRadiusTexels(plan.size)), glm::length(glm::vec3(worldFromObject[0])), 0.0f, 0.0f);
     for (size_t i = 0; i < plan.gaussians.size() && i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
         block.gaussians[i] = plan.gaussians[i];
@@ -78,18 +75,18 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
 }
 
 void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, const gpu::TextureSpaceBlock& block) {
-    frame.uploadObject(frame.objectBlock(static_cast<size_t>(plan.character)));
-    frame.uploadPassBlock(&block, sizeof block);
+    frame.gl->uploadObject(frame.objectBlock(static_cast<size_t>(plan.character)));
+    frame.gl->uploadPassBlock(&block, sizeof block);
 }
 
 void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan) {
     const auto index = static_cast<size_t>(plan.character);
-    frame.textureSpace->meshes.get(index, frame.gpuScene->characters()[index]).draw();
+    frame.gl->tsMeshes->get(index).draw();
 }
 
 std::string tsPassName(const TsCharacterPlan& plan, const std::string& step) { return "ts " + plan.label + " " + step; }
 
-graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                 graph::TextureHandle black) {
     const auto side = static_cast<uint32_t>(std::max(plan.tsmSize, 1));
     const std::string name = tsPassName(plan, "tsm");
@@ -101,16 +98,16 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, 
                 d.depth = builder.create(name + " depth", {side, side, graph::TextureFormat::Depth32F});
                 builder.passThrough(d.tsm, black);
                 builder.skipIf(!plan.visible, kOffScreen);
-                builder.skipIf(!frame.scene->settings.ts.tsm, "translucent shadow map off");
-                builder.skipIf(!frame.scene->settings.transmittance.enabled, "transmittance disabled");
+                builder.skipIf(!frame.plan.scene->settings.ts.tsm, "translucent shadow map off");
+                builder.skipIf(!frame.plan.scene->settings.transmittance.enabled, "transmittance disabled");
                 builder.skipIf(plan.tsmLight < 0, "no shadow-casting light behind the character");
             },
-            [&frame, plan](const graph::PassResources& resources, const TsmData& d) {
+            [frame, plan](const graph::PassResources& resources, const TsmData& d) {
                 gl::Attachments attachments;
                 attachments.colour[0] = resources.texture(d.tsm);
                 attachments.depth = resources.texture(d.depth);
-                frame.framebuffers->bind(attachments);
-                frame.setViewport(plan.tsmSize, plan.tsmSize);
+                frame.gl->framebuffers->bind(attachments);
+                frame.gl->setViewport(plan.tsmSize, plan.tsmSize);
                 const float empty[4] = {1e30f, 0.0f, 0.0f, 0.0f};
                 glClearBufferfv(GL_COLOR, 0, empty);
                 const float farDepth = 1.0f;
@@ -120,7 +117,7 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, 
                 glDepthFunc(GL_LESS);
                 glDepthMask(GL_TRUE);
                 glDisable(GL_CULL_FACE);  // thin ears need both faces
-                glUseProgram(frame.programs->tsTsm.get());
+                glUseProgram(frame.gl->programs->tsTsm.get());
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 drawTsMesh(frame, plan);
                 glDisable(GL_DEPTH_TEST);
@@ -128,7 +125,7 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, FrameContext& frame, 
         .tsm;
 }
 
-graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan) {
+graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan) {
     const std::string name = tsPassName(plan, "stretch");
     return graph
         .addPass<StretchData>(
@@ -137,16 +134,16 @@ graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, FrameContext& f
                 d.stretch = builder.create(name, uvDesc(plan, graph::TextureFormat::Rg16F));
                 builder.skipIf(!plan.visible, kOffScreen);
             },
-            [&frame, plan](const graph::PassResources& resources, const StretchData& d) {
+            [frame, plan](const graph::PassResources& resources, const StretchData& d) {
                 beginUvRaster(frame, resources.texture(d.stretch), plan.size);
-                glUseProgram(frame.programs->tsStretch.get());
+                glUseProgram(frame.gl->programs->tsStretch.get());
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 drawTsMesh(frame, plan);
             })
         .stretch;
 }
 
-graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                        const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
                                        graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm) {
     const std::string name = tsPassName(plan, "irradiance");
@@ -161,10 +158,10 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& 
                 d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
                 builder.skipIf(!plan.visible, kOffScreen);
             },
-            [&frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
+            [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
-                glUseProgram(frame.programs->tsIrradiance.get());
-                const GpuCharacter& character = frame.gpuScene->characters()[static_cast<size_t>(plan.character)];
+                glUseProgram(frame.gl->programs->tsIrradiance.get());
+                const GpuCharacter& character = frame.gl->gpuScene->characters()[static_cast<size_t>(plan.character)];
                 glBindTextureUnit(0, character.albedoMap.get());
                 glBindTextureUnit(1, character.normalMap.get());
                 glBindTextureUnit(2, resources.texture(d.tsm));
@@ -177,7 +174,7 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, FrameContext& 
         .out;
 }
 
-graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& frame, const TsCharacterPlan& plan,
+graph::TextureHandle addDilatePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                    graph::TextureHandle irradiance) {
     const std::string name = tsPassName(plan, "dilate");
     return graph
@@ -188,19 +185,17 @@ graph::TextureHandle addDilatePass(graph::RenderGraph& graph, FrameContext& fram
                 d.out = builder.create(tsPassName(plan, "dilated"), uvDesc(plan, graph::TextureFormat::Rgba16F));
                 builder.skipIf(!plan.visible, kOffScreen);
             },
-            [&frame, plan](const graph::PassResources& resources, const FilterData& d) {
-                bindUvTarget(frame, resources.texture(d.out), plan.size);
-                glUseProgram(frame.programs->tsDilate.get());
+            [frame, plan](const graph::PassResources& resources, const FilterData& d) {
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
-                glBindTextureUnit(0, resources.texture(d.in));
-                frame.drawFullscreenTriangle();
+                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tsDilate.get(), {d.in});
             })
         .out;
 }
 
-std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, FrameContext& frame,
-                                                const TsCharacterPlan& plan, const BlurKernel& kernel,
-                                                graph::TextureHandle stretch, graph::TextureHandle dilated) {
+std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const FrameContext& frame,
+                                                const TsCharacterPlan& plan, graph::TextureHandle stretch,
+                                                graph::TextureHandle dilated) {
+    const BlurKernel& kernel = frame.plan.tsKernel;
     std::vector<graph::TextureHandle> textures;
     const size_t taps = std::min<size_t>(kernel.weights.size(), DERMIS_MAX_BLUR_TAPS);
     const float kernelVariance = kernelVarianceSigma2(kernel);
@@ -216,14 +211,10 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, Frame
         std::snprintf(narrow, sizeof narrow, "%.2f texels wide where the layout is densest (under %.2f)",
                       double(step.widthTexels), double(kMinStepTexels));
         const std::string why = !plan.visible ? std::string(kOffScreen) : std::string(narrow);
-        const auto run = [&frame, plan](const graph::PassResources& resources, const FilterData& d,
+        const auto run = [frame, plan](const graph::PassResources& resources, const FilterData& d,
                                         const gpu::TextureSpaceBlock& b) {
-            bindUvTarget(frame, resources.texture(d.out), plan.size);
-            glUseProgram(frame.programs->tsBlur.get());
             uploadTsBlocks(frame, plan, b);
-            glBindTextureUnit(0, resources.texture(d.in));
-            glBindTextureUnit(1, resources.texture(d.stretch));
-            frame.drawFullscreenTriangle();
+            runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tsBlur.get(), {d.in, d.stretch});
         };
         block.blur = glm::vec4(1.0f, 0.0f, sigmaMm, float(taps));
         const FilterData& u = graph.addPass<FilterData>(

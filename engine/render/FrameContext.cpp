@@ -6,26 +6,27 @@
 
 namespace dermis {
 
-void FrameContext::drawFullscreenTriangle() const {
+void FrameServices::drawFullscreenTriangle() const {
     glBindVertexArray(emptyVertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void FrameContext::uploadObject(const gpu::ObjectBlock& block) const {
+void FrameServices::uploadObject(const gpu::ObjectBlock& block) const {
     glNamedBufferSubData(objectUniforms, 0, sizeof block, &block);
 }
 
-void FrameContext::uploadPassBlock(const void* data, size_t size) const {
+void FrameServices::uploadPassBlock(const void* data, size_t size) const {
     assert(size <= kMaxPassBlockBytes);
     glNamedBufferSubData(passUniforms, 0, static_cast<GLsizeiptr>(size), data);
 }
 
 gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
-    const GpuCharacter& character = gpuScene->characters()[characterIndex];
-    const Material& material = character.source->material;
+    const GpuCharacter& character = gl->gpuScene->characters()[characterIndex];
+    const Material& material = plan.scene->characters[characterIndex].material;
+    const glm::mat4& worldFromObject = plan.characters[characterIndex].worldFromObject;
     gpu::ObjectBlock block{};
-    block.worldFromObject = character.worldFromObject;
-    block.normalWorldFromObject = glm::inverseTranspose(character.worldFromObject);
+    block.worldFromObject = worldFromObject;
+    block.normalWorldFromObject = glm::inverseTranspose(worldFromObject);
     block.albedoRoughness = glm::vec4(material.albedo, material.roughness);
     block.material = glm::vec4(material.rhoS, float(characterIndex + 1), character.albedoMap.isValid() ? 1.0f : 0.0f,
                                character.normalMap.isValid() ? 1.0f : 0.0f);

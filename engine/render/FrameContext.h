@@ -1,59 +1,52 @@
 #pragma once
-// What every pass of a frame may use: the scene, its GPU copy, programs,
-// shared uniform buffers, the frame's SSS plan and GL helpers. Owned by the
-// Renderer; passes keep a reference in their execute lambdas, so it outlives
-// the graph.
+// What a pass sees: the frame's plan while it is declared, and the GL objects
+// its execute step draws with. Declaring reads only `plan` (no GL), so the
+// frame can be declared and compiled on the test backend with `gl` null.
+// Passes copy the context (two pointers) into their execute steps: the plan
+// and the services must outlive the graph's execution.
 
 #include "gl/FramebufferCache.h"
 #include "gl/GlObjects.h"
-#include "render/Aov.h"
+#include "render/FramePlan.h"
 #include "render/GpuScene.h"
-#include "render/LightSetup.h"
 #include "render/Programs.h"
-#include "render/SssPlan.h"
+#include "render/TsMeshes.h"
 #include "render/UniformBlocks.h"
-#include "scene/Scene.h"
-
-#include <memory>
 
 namespace dermis {
-
-struct TextureSpaceState;
 
 // Texture units every fullscreen pass agrees on for shared tables.
 constexpr GLuint kBeckmannUnit = 14;
 constexpr GLuint kEnergyUnit = 15;
 
-struct FrameContext {
-    const Scene* scene = nullptr;
-    GpuScene* gpuScene = nullptr;
-    Programs* programs = nullptr;
+constexpr size_t kMaxPassBlockBytes = 4096;
+
+// The GL objects passes execute with, owned by the renderer
+// (render/FrameResources.h) and made before the frame is declared.
+struct FrameServices {
+    const GpuScene* gpuScene = nullptr;
+    const Programs* programs = nullptr;
     gl::FramebufferCache* framebuffers = nullptr;
+    const TsMeshes* tsMeshes = nullptr;  // the texture-space meshes of the characters in FramePlan::ts
     GLuint objectUniforms = 0;  // ObjectBlock, rewritten per draw
     GLuint passUniforms = 0;    // the per-pass block at DERMIS_BINDING_PASS, rewritten per pass
     GLuint emptyVertexArray = 0;
-    GLuint beckmannTable = 0;
-    GLuint energyTable = 0;
     GLuint whiteTexture = 0;    // 1x1 RGBA8 white: a neutral input (AO = 1)
     GLuint blackTexture = 0;    // 1x1 RGBA8 black: nothing (no transmitted light)
-    LightSetup lights;
-    SssPlan sss;
-    // Texture-space mode's state across frames (its meshes, this frame's plan),
-    // made on first use by passes/TextureSpacePasses.cpp.
-    std::shared_ptr<TextureSpaceState> textureSpace;
-    int width = 0;
-    int height = 0;
-    Aov aov = Aov::Final;
-    bool lean = false;  // this frame carries LEAN moments (render/SssVariant.h, frameUsesLean); set by the renderer
 
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;
     void uploadObject(const gpu::ObjectBlock& block) const;
-    // Copies `size` bytes to the per-pass block; it must be at most 4 KiB.
+    // Copies `size` bytes to the per-pass block; it must be at most kMaxPassBlockBytes.
     void uploadPassBlock(const void* data, size_t size) const;
-    gpu::ObjectBlock objectBlock(size_t characterIndex) const;
 };
 
-constexpr size_t kMaxPassBlockBytes = 4096;
+struct FrameContext {
+    const FramePlan& plan;
+    const FrameServices* gl = nullptr;  // null where the graph is only compiled, never executed
+
+    // The character's ObjectBlock (execute steps only).
+    gpu::ObjectBlock objectBlock(size_t characterIndex) const;
+};
 
 }  // namespace dermis

@@ -1,8 +1,7 @@
 #include "render/GpuScene.h"
 
-#include "core/Log.h"
 #include "lean/LeanBake.h"
-#include "scene/ModelLoader.h"
+#include "render/SceneGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,18 +41,6 @@ GpuMesh uploadMesh(const MeshData& mesh) {
     return gpu;
 }
 
-Bounds transformBounds(const Bounds& b, const glm::mat4& m) {
-    Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                          (corner & 4) ? b.max.z : b.min.z);
-        const glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
-        out.min = glm::min(out.min, w);
-        out.max = glm::max(out.max, w);
-    }
-    return out;
-}
-
 }  // namespace
 
 gl::Texture uploadImage(const Image& image) {
@@ -90,47 +77,30 @@ gl::Texture uploadMipChain(const std::vector<Image>& levels, GLenum internalForm
 }
 
 Result<GpuScene> GpuScene::create(const Scene& scene) {
+    auto models = loadSceneModels(scene);
+    if (!models.ok()) return models.error();
+    return create(scene, *models);
+}
+
+Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& models) {
     GpuScene gpuScene;
-    for (const Character& character : scene.characters) {
-        log::info("loading character '" + character.name + "'");
-        auto model = loadCharacterModel(character);
-        if (!model.ok()) return model.error();
-        if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+    for (size_t c = 0; c < scene.characters.size() && c < models.size(); ++c) {
+        const Character& character = scene.characters[c];
+        const Model& model = models[c];
         GpuCharacter gpu;
         gpu.name = character.name;
-        gpu.mesh = uploadMesh(model->mesh);
-        if (!model->albedoMap.empty()) gpu.albedoMap = uploadImage(model->albedoMap);
-        if (!model->normalMap.empty()) {
-            gpu.normalMap = uploadImage(model->normalMap);
-            auto lean = bakeLeanMaps(model->normalMap);
+        gpu.mesh = uploadMesh(model.mesh);
+        if (!model.albedoMap.empty()) gpu.albedoMap = uploadImage(model.albedoMap);
+        if (!model.normalMap.empty()) {
+            gpu.normalMap = uploadImage(model.normalMap);
+            auto lean = bakeLeanMaps(model.normalMap);
             if (!lean.ok()) return makeError(character.name, lean.error().what);
             gpu.leanMap1 = uploadMipChain(lean->lean1, GL_RGBA16F);
             gpu.leanMap2 = uploadMipChain(lean->lean2, GL_RG16F);
         }
-        gpu.source = &character;
         gpuScene.mCharacters.push_back(std::move(gpu));
     }
-    gpuScene.updateTransforms(scene);
     return gpuScene;
-}
-
-void GpuScene::updateTransforms(const Scene& scene) {
-    for (size_t i = 0; i < mCharacters.size() && i < scene.characters.size(); ++i) {
-        const Character& character = scene.characters[i];
-        mCharacters[i].source = &character;
-        mCharacters[i].worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
-        mCharacters[i].worldBounds = transformBounds(mCharacters[i].mesh.objectBounds, mCharacters[i].worldFromObject);
-    }
-}
-
-Bounds GpuScene::worldBounds() const {
-    if (mCharacters.empty()) return Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
-    Bounds out = mCharacters.front().worldBounds;
-    for (const GpuCharacter& c : mCharacters) {
-        out.min = glm::min(out.min, c.worldBounds.min);
-        out.max = glm::max(out.max, c.worldBounds.max);
-    }
-    return out;
 }
 
 }  // namespace dermis

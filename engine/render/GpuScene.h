@@ -1,12 +1,13 @@
 #pragma once
 // Everything of a scene that lives on the GPU: one mesh and its maps per
-// character, plus world transforms and bounds. Built once from a Scene;
-// transforms can be updated per frame.
+// character. Built once from a Scene; where the characters are this frame is
+// the frame plan's (render/FramePlan.h).
 
 #include "core/Image.h"
 #include "core/Result.h"
 #include "gl/GlObjects.h"
 #include "scene/Mesh.h"
+#include "scene/Model.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -33,22 +34,17 @@ struct GpuCharacter {
     // with the baked mip chain.
     gl::Texture leanMap1;
     gl::Texture leanMap2;
-    glm::mat4 worldFromObject{1.0f};
-    Bounds worldBounds;
-    const Character* source = nullptr;
 };
 
 class GpuScene {
 public:
     // Loads every character's model (procedural or glTF) and uploads it.
     static Result<GpuScene> create(const Scene& scene);
+    // Uploads models already loaded (render/SceneGeometry.h, loadSceneModels), one per character.
+    static Result<GpuScene> create(const Scene& scene, const std::vector<Model>& models);
 
     std::vector<GpuCharacter>& characters() { return mCharacters; }
     const std::vector<GpuCharacter>& characters() const { return mCharacters; }
-    Bounds worldBounds() const;  // of all characters; a unit box at the origin when there are none
-
-    // Recomputes world transforms and bounds from the scene's transforms.
-    void updateTransforms(const Scene& scene);
 
 private:
     std::vector<GpuCharacter> mCharacters;

@@ -1,6 +1,9 @@
 #pragma once
-// The renderer: owns the GPU copy of a scene and, every frame, declares the
-// render graph, lets it cull, and runs it. A GL context must be current.
+// The renderer: owns the GPU copy of a scene and, every frame, plans it
+// (render/FramePlan.h, no GL), prepares its GL resources
+// (render/FrameResources.h), declares the render graph
+// (render/FrameDeclaration.h), lets it cull, and runs it. A GL context must
+// be current.
 //
 //   Renderer renderer = *Renderer::create(scene);
 //   renderer.renderFrame({640, 360, Aov::Final});
@@ -11,28 +14,19 @@
 #include "gl/GlGraphBackend.h"
 #include "gl/GpuProfiler.h"
 #include "render/Aov.h"
-#include "render/FrameContext.h"
+#include "render/FramePlan.h"
+#include "render/FrameResources.h"
 #include "render/FrameTimings.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
+#include "render/SceneGeometry.h"
 #include "render/ShadowCache.h"
 #include "scene/Scene.h"
 
 #include <memory>
+#include <optional>
 
 namespace dermis {
-
-struct FrameRequest {
-    int width = 640;
-    int height = 360;
-    Aov aov = Aov::Final;
-    // Added to the mip level of material maps (albedo, normal, LEAN); tests
-    // force level 0 with a large negative bias for supersampled references.
-    float materialMipBias = 0.0f;
-};
-
-// Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).
-constexpr int kMaxFrameDimension = 16384;
 
 class Renderer {
 public:
@@ -48,7 +42,7 @@ public:
     void finishTimings();
     // The last frame's output texture (RGBA8 for Aov::Final, RGBA32F
     // otherwise), for a viewer to draw without a CPU read-back.
-    GLuint outputTexture() const { return mOutput.get(); }
+    GLuint outputTexture() const { return mResources->output(); }
     // Inspect every texture each pass writes (gl/NonFiniteCounter.h); slow.
     void setPassInspector(gl::PassInspector inspector) { mBackend.setInspector(std::move(inspector)); }
     // Recompiles every shader from disk. On an error the old programs stay
@@ -57,40 +51,21 @@ public:
 
     const FrameTimings& timings() const { return mTimings; }
     void resetTimings() { mTimings = FrameTimings{}; }
-    uint64_t frameCount() const { return mFrame; }
     GpuScene& gpuScene() { return mGpuScene; }
-    const SssPlan& sssPlan() const { return mFrameContext.sss; }
 
 private:
-    Renderer(const Scene& scene, GpuScene gpuScene, Programs programs);
-    Status planFrame(const FrameRequest& request);
-    void uploadFrameUniforms(const FrameRequest& request);
-    void uploadSssUniforms();
-    void declareFrame(graph::RenderGraph& graph, const FrameRequest& request);
-    void ensureOutput(const FrameRequest& request);
+    Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, Programs programs);
 
     const Scene& mScene;
+    SceneGeometry mGeometry;
     GpuScene mGpuScene;
     Programs mPrograms;
     gl::GpuProfiler mProfiler;
     gl::GlGraphBackend mBackend;
     ShadowCache mShadowCache;
+    std::unique_ptr<FrameResources> mResources;
+    std::optional<FramePlan> mPlan;  // the frame being run: its passes read it while they execute
     FrameTimings mTimings;
-    FrameContext mFrameContext;
-    gl::Buffer mFrameUniforms;
-    gl::Buffer mLightUniforms;
-    gl::Buffer mObjectUniforms;
-    gl::Buffer mCharacterUniforms;
-    gl::Buffer mProfileUniforms;
-    gl::Buffer mPassUniforms;
-    gl::VertexArray mEmptyVertexArray;
-    gl::Texture mBeckmann;
-    gl::Texture mEnergy;
-    gl::Texture mWhite;
-    gl::Texture mBlack;
-    ViewParams mView;
-    gl::Texture mOutput;
-    graph::TextureDesc mOutputDesc{};
     Aov mOutputAov = Aov::Final;
     uint64_t mFrame = 0;
 };

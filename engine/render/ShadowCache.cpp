@@ -1,26 +1,8 @@
 #include "render/ShadowCache.h"
 
-#include "gl/TexturePool.h"
-
 #include <cstring>
 
 namespace dermis {
-
-ShadowCache::Slot& ShadowCache::slot(int index, int mapSize) {
-    Slot& s = mSlots[static_cast<size_t>(index)];
-    const graph::TextureDesc desc{static_cast<uint32_t>(mapSize), static_cast<uint32_t>(mapSize),
-                                  graph::TextureFormat::R32F};
-    if (!s.depthM.isValid() || s.desc != desc) {
-        s.depthM = gl::createTexture2D(desc);
-        // Outside the map means "unoccluded": clamp to a far border.
-        glTextureParameteri(s.depthM.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(s.depthM.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        s.desc = desc;
-        s.valid = false;
-        s.key.clear();
-    }
-    return s;
-}
 
 std::vector<float> ShadowCache::makeKey(const gpu::GpuLight& light, const std::vector<glm::mat4>& casters) {
     std::vector<float> key(sizeof(gpu::GpuLight) / sizeof(float) + casters.size() * 16);
@@ -31,9 +13,16 @@ std::vector<float> ShadowCache::makeKey(const gpu::GpuLight& light, const std::v
     return key;
 }
 
-bool ShadowCache::isCurrent(int index, const std::vector<float>& key) const {
+bool ShadowCache::isCurrent(int index, const graph::TextureDesc& desc, const std::vector<float>& key) const {
     const Slot& s = mSlots[static_cast<size_t>(index)];
-    return s.valid && s.key == key;
+    return s.valid && s.desc == desc && s.key == key;
+}
+
+void ShadowCache::record(int index, const graph::TextureDesc& desc, std::vector<float> key) {
+    Slot& s = mSlots[static_cast<size_t>(index)];
+    s.desc = desc;
+    s.key = std::move(key);
+    s.valid = true;
 }
 
 }  // namespace dermis

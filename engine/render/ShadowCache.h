@@ -1,10 +1,10 @@
 #pragma once
-// Shadow maps persist across frames. Each slot remembers what it was
-// rendered from (the light's matrices, the map size and every caster's
-// transform); when nothing changed, the shadow pass's predicate skips it and
-// the map is reused as it is.
+// Shadow maps persist across frames. The cache remembers, per shadow slot,
+// what its map was last rendered from (the map's size, the light's matrices
+// and every caster's transform); when the frame plan finds nothing changed,
+// the shadow pass's predicate skips it and the map is reused as it is. No GL:
+// the maps themselves are the frame resources' (render/FrameResources.h).
 
-#include "gl/GlObjects.h"
 #include "graph/TextureDesc.h"
 #include "render/UniformBlocks.h"
 
@@ -15,19 +15,20 @@ namespace dermis {
 
 class ShadowCache {
 public:
-    struct Slot {
-        gl::Texture depthM;  // R32F linear light depth
-        graph::TextureDesc desc;
-        std::vector<float> key;  // what it was rendered from
-        bool valid = false;
-    };
-
-    // Ensures slot `slot` has a map of this size; returns it.
-    Slot& slot(int slot, int mapSize);
+    // What a map is rendered from: the light's block and the casters' transforms.
     static std::vector<float> makeKey(const gpu::GpuLight& light, const std::vector<glm::mat4>& casters);
-    bool isCurrent(int slot, const std::vector<float>& key) const;
+
+    // Whether slot `slot` holds a map of this size rendered from `key`.
+    bool isCurrent(int slot, const graph::TextureDesc& desc, const std::vector<float>& key) const;
+    // Slot `slot`'s map was just rendered from `key` at this size.
+    void record(int slot, const graph::TextureDesc& desc, std::vector<float> key);
 
 private:
+    struct Slot {
+        graph::TextureDesc desc;
+        std::vector<float> key;
+        bool valid = false;
+    };
     std::array<Slot, DERMIS_MAX_SHADOWED_LIGHTS> mSlots;
 };
 

@@ -1,7 +1,5 @@
 #include "render/TsMeshes.h"
 
-#include "scene/UvLayout.h"
-
 #include <algorithm>
 #include <cstddef>
 
@@ -14,23 +12,8 @@ struct LayoutVertex {
     float borderDistance;
 };
 
-MeshData readBack(const GpuCharacter& character) {
-    MeshData mesh;
-    GLint64 bytes = 0;
-    glGetNamedBufferParameteri64v(character.mesh.vertexBuffer.get(), GL_BUFFER_SIZE, &bytes);
-    mesh.vertices.resize(static_cast<size_t>(bytes) / sizeof(Vertex));
-    glGetNamedBufferSubData(character.mesh.vertexBuffer.get(), 0,
-                            static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)), mesh.vertices.data());
-    mesh.indices.resize(static_cast<size_t>(character.mesh.indexCount));
-    glGetNamedBufferSubData(character.mesh.indexBuffer.get(), 0,
-                            static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data());
-    return mesh;
-}
-
-TsMesh makeTsMesh(const GpuCharacter& character) {
-    const MeshData mesh = readBack(character);
-    const UvLayout layout = analyseUvLayout(mesh);
-    std::vector<LayoutVertex> vertices(mesh.vertices.size());
+TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
+    std::vector<LayoutVertex> vertices(layout.dPdu.size());
     for (size_t v = 0; v < vertices.size(); ++v) {
         vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v]};
     }
@@ -38,8 +21,6 @@ TsMesh makeTsMesh(const GpuCharacter& character) {
     TsMesh out;
     out.sourceVertexBuffer = character.mesh.vertexBuffer.get();
     out.indexCount = character.mesh.indexCount;
-    out.medianStretch = layout.medianStretch;
-    out.denseStretch = layout.denseStretch;
     out.layoutBuffer = gl::createBuffer();
     glNamedBufferStorage(out.layoutBuffer.get(), static_cast<GLsizeiptr>(std::max<size_t>(vertices.size(), 1) * sizeof(LayoutVertex)),
                          vertices.empty() ? nullptr : vertices.data(), 0);
@@ -77,13 +58,12 @@ void TsMesh::draw() const {
     glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
-const TsMesh& TsMeshes::get(size_t characterIndex, const GpuCharacter& character) {
+void TsMeshes::prepare(size_t characterIndex, const GpuCharacter& character, const UvLayout& layout) {
     if (mMeshes.size() <= characterIndex) mMeshes.resize(characterIndex + 1);
     TsMesh& mesh = mMeshes[characterIndex];
     if (!mesh.vertexArray.isValid() || mesh.sourceVertexBuffer != character.mesh.vertexBuffer.get()) {
-        mesh = makeTsMesh(character);
+        mesh = makeTsMesh(character, layout);
     }
-    return mesh;
 }
 
 }  // namespace dermis

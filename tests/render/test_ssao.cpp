@@ -15,6 +15,8 @@
 #include "passes/GBufferPass.h"
 #include "passes/SsaoPass.h"
 #include "render/FrameContext.h"
+#include "render/FramePlan.h"
+#include "render/SceneGeometry.h"
 #include "scene/SceneLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -85,7 +87,10 @@ protected:
         auto scene = loadScene(test::contentScene(sceneFile));
         ASSERT_TRUE(scene.ok()) << scene.error().message();
         mScene = std::make_unique<Scene>(std::move(*scene));
-        auto gpuScene = GpuScene::create(*mScene);
+        auto models = loadSceneModels(*mScene);
+        ASSERT_TRUE(models.ok()) << models.error().message();
+        mGeometry = SceneGeometry(*models);
+        auto gpuScene = GpuScene::create(*mScene, *models);
         ASSERT_TRUE(gpuScene.ok()) << gpuScene.error().message();
         mGpuScene = std::make_unique<GpuScene>(std::move(*gpuScene));
     }
@@ -135,33 +140,33 @@ protected:
         glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_CHARACTERS, mCharacterUniforms.get());
     }
 
-    FrameContext frameContext() {
-        FrameContext frame;
-        frame.scene = mScene.get();
-        frame.gpuScene = mGpuScene.get();
-        frame.programs = &mPrograms;
-        frame.framebuffers = &mBackend->framebuffers();
-        frame.objectUniforms = mObjectUniforms.get();
-        frame.passUniforms = mPassUniforms.get();
-        frame.emptyVertexArray = mEmptyVertexArray.get();
-        frame.whiteTexture = mWhite.get();
-        frame.sss.slotOfCharacter.assign(mScene->characters.size(), 0);  // profile "none" everywhere
-        frame.width = kWidth;
-        frame.height = kHeight;
-        return frame;
+    // The frame's plan (profile "none" everywhere: no SSS slot) and the GL
+    // objects the G-buffer and SSAO passes draw with.
+    void planTestFrame() {
+        auto plan = planFrame(*mScene, mGeometry, {kWidth, kHeight, Aov::Final}, ShadowCache{});
+        ASSERT_TRUE(plan.ok()) << plan.error().message();
+        mPlan = std::make_unique<FramePlan>(std::move(*plan));
+        mPlan->lean = false;  // the test builds the plain G-buffer program only
+        mServices.gpuScene = mGpuScene.get();
+        mServices.programs = &mPrograms;
+        mServices.framebuffers = &mBackend->framebuffers();
+        mServices.objectUniforms = mObjectUniforms.get();
+        mServices.passUniforms = mPassUniforms.get();
+        mServices.emptyVertexArray = mEmptyVertexArray.get();
+        mServices.whiteTexture = mWhite.get();
     }
 
     // Renders the G-buffer and SSAO and reads back what addSsaoPasses returned.
     AoImage renderAo() {
-        mGpuScene->updateTransforms(*mScene);
+        planTestFrame();
         uploadUniforms();
-        FrameContext frame = frameContext();
+        const FrameContext frame{*mPlan, &mServices};
         mProfiler.beginFrame(mFrame++);
 
         AoImage image;
         graph::RenderGraph graph;
         const graph::TextureHandle white =
-            graph.importTexture("white", {1, 1, graph::TextureFormat::Rgba8}, frame.whiteTexture);
+            graph.importTexture("white", {1, 1, graph::TextureFormat::Rgba8}, mServices.whiteTexture);
         const GBuffer gbuffer = addGBufferPass(graph, frame);
         const graph::TextureHandle ao = addSsaoPasses(graph, frame, gbuffer, white);
         struct ReadbackData {
@@ -264,7 +269,10 @@ protected:
     }
 
     std::unique_ptr<Scene> mScene;
+    SceneGeometry mGeometry;
     std::unique_ptr<GpuScene> mGpuScene;
+    std::unique_ptr<FramePlan> mPlan;
+    FrameServices mServices;
     Programs mPrograms;
     gl::GpuProfiler mProfiler;
     std::unique_ptr<gl::GlGraphBackend> mBackend;

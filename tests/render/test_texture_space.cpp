@@ -9,7 +9,10 @@
 #include "core/ImageMetrics.h"
 #include "gl/GlGraphBackend.h"
 #include "passes/TextureSpacePasses.h"
+#include "render/FramePlan.h"
+#include "render/SceneGeometry.h"
 #include "render/ScreenFootprint.h"
+#include "render/TsMeshes.h"
 #include "scene/ProceduralShapes.h"
 #include "scene/SceneLoader.h"
 #include "sss/DiffusionProfile.h"
@@ -44,7 +47,10 @@ TEST_F(TextureSpace, StretchMapOnTheUvSphereMatchesTheClosedForm) {
     // v = polar angle / pi, radius r): |dP/du| = 2 pi r sin(theta), |dP/dv| = pi r.
     auto scene = parseScene(R"({"characters": [{"name": "ball", "mesh": {"procedural": "sphere"}}]})", "sphere.json");
     ASSERT_TRUE(scene.ok());
-    auto gpuScene = GpuScene::create(*scene);
+    auto models = loadSceneModels(*scene);
+    ASSERT_TRUE(models.ok());
+    SceneGeometry geometry(*models);
+    auto gpuScene = GpuScene::create(*scene, *models);
     ASSERT_TRUE(gpuScene.ok());
     auto programs = Programs::build();
     ASSERT_TRUE(programs.ok()) << programs.error().message();
@@ -54,14 +60,18 @@ TEST_F(TextureSpace, StretchMapOnTheUvSphereMatchesTheClosedForm) {
     const gl::Buffer passUniforms = uniformBuffer(kMaxPassBlockBytes);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_OBJECT, objectUniforms.get());
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, passUniforms.get());
-    FrameContext frame;
-    frame.scene = &*scene;
-    frame.gpuScene = &*gpuScene;
-    frame.programs = &*programs;
-    frame.framebuffers = &backend.framebuffers();
-    frame.objectUniforms = objectUniforms.get();
-    frame.passUniforms = passUniforms.get();
-    frame.textureSpace = std::make_shared<TextureSpaceState>();
+    auto framePlan = planFrame(*scene, geometry, {512, 512, Aov::Stretch}, ShadowCache{});
+    ASSERT_TRUE(framePlan.ok());
+    TsMeshes meshes;
+    meshes.prepare(0, gpuScene->characters()[0], geometry.uvLayout(0));
+    FrameServices services;
+    services.gpuScene = &*gpuScene;
+    services.programs = &*programs;
+    services.framebuffers = &backend.framebuffers();
+    services.tsMeshes = &meshes;
+    services.objectUniforms = objectUniforms.get();
+    services.passUniforms = passUniforms.get();
+    const FrameContext frame{*framePlan, &services};
 
     TsCharacterPlan plan;
     plan.label = "ball";

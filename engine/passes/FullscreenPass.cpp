@@ -1,0 +1,35 @@
+#include "passes/FullscreenPass.h"
+
+#include <cassert>
+
+namespace dermis {
+
+void beginFullscreenPass(const FrameContext& frame, const graph::PassResources& resources,
+                         const FullscreenTargets& targets, GLuint program,
+                         const std::vector<graph::TextureHandle>& inputs) {
+    assert(!targets.colour.empty() && targets.colour.size() <= gl::kMaxColourAttachments);
+    gl::Attachments attachments;
+    for (size_t i = 0; i < targets.colour.size() && targets.colour[i].isValid(); ++i) {
+        attachments.colour[i] = resources.texture(targets.colour[i]);
+    }
+    if (targets.depthStencil.isValid()) {
+        attachments.depth = resources.texture(targets.depthStencil);
+        attachments.depthHasStencil = true;
+    }
+    frame.gl->framebuffers->bind(attachments);
+    const graph::TextureDesc& size = resources.desc(targets.colour.front());
+    frame.gl->setViewport(static_cast<int>(size.width), static_cast<int>(size.height));
+    glUseProgram(program);
+    for (size_t unit = 0; unit < inputs.size(); ++unit) {
+        if (inputs[unit].isValid()) glBindTextureUnit(static_cast<GLuint>(unit), resources.texture(inputs[unit]));
+    }
+}
+
+void runFullscreenPass(const FrameContext& frame, const graph::PassResources& resources,
+                       const FullscreenTargets& targets, GLuint program,
+                       const std::vector<graph::TextureHandle>& inputs) {
+    beginFullscreenPass(frame, resources, targets, program, inputs);
+    frame.gl->drawFullscreenTriangle();
+}
+
+}  // namespace dermis

@@ -1,0 +1,149 @@
+#include "render/FramePlan.h"
+
+#include "render/ScreenFootprint.h"
+#include "render/SssVariant.h"
+
+#include <algorithm>
+
+namespace dermis {
+namespace {
+
+Bounds unionBounds(const std::vector<CharacterPlacement>& characters) {
+    if (characters.empty()) return Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
+    Bounds out = characters.front().worldBounds;
+    for (const CharacterPlacement& c : characters) {
+        out.min = glm::min(out.min, c.worldBounds.min);
+        out.max = glm::max(out.max, c.worldBounds.max);
+    }
+    return out;
+}
+
+// A shadowed light is a back light when it is behind some visible SSS
+// character as the camera sees it (Jimenez et al. 2010).
+void markBackLights(const Scene& scene, FramePlan& plan) {
+    for (int index : plan.lights.shadowedLights) {
+        const Light& light = scene.lights[static_cast<size_t>(index)];
+        bool behind = false;
+        for (size_t c = 0; c < plan.characters.size() && !behind; ++c) {
+            const int slot = plan.sss.slotOfCharacter[c];
+            behind = slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible &&
+                     isBackLight(light, plan.characters[c].worldBounds, scene.camera.positionM);
+        }
+        plan.lights.block.lights[index].shadowDepth.w = behind ? 1.0f : 0.0f;
+        plan.anyBackLight = plan.anyBackLight || behind;
+    }
+}
+
+std::string shadowPassName(const Scene& scene, int lightIndex) {
+    const bool directional = scene.lights[static_cast<size_t>(lightIndex)].type == LightType::Directional;
+    return "shadow:light" + std::to_string(lightIndex) + (directional ? "(dir)" : "(spot)");
+}
+
+void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) {
+    const auto mapSize = static_cast<uint32_t>(scene.settings.shadow.mapSize);
+    std::vector<glm::mat4> casters;
+    for (const CharacterPlacement& c : plan.characters) casters.push_back(c.worldFromObject);
+    for (size_t slot = 0; slot < plan.lights.shadowedLights.size(); ++slot) {
+        ShadowSlotPlan s;
+        s.light = plan.lights.shadowedLights[slot];
+        s.passName = shadowPassName(scene, s.light);
+        s.desc = {mapSize, mapSize, graph::TextureFormat::R32F};
+        s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], casters);
+        s.current = cache.isCurrent(static_cast<int>(slot), s.desc, s.key);
+        plan.shadows.push_back(std::move(s));
+    }
+}
+
+// The texture-space planner's inputs: bounds and the UV layout's stretch in
+// world millimetres (d'Eon & Luebke 2007 §16.3.2).
+std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeometry& geometry, const FramePlan& plan) {
+    std::vector<TsCharacterInput> inputs;
+    for (size_t c = 0; c < plan.characters.size(); ++c) {
+        TsCharacterInput input;
+        input.worldBounds = plan.characters[c].worldBounds;
+        if (scene.characters[c].material.profile != "none") {
+            const UvLayout& layout = geometry.uvLayout(c);
+            const float mmPerUnit = glm::length(glm::vec3(plan.characters[c].worldFromObject[0])) * 1000.0f;
+            input.mmPerUv = layout.medianStretch * mmPerUnit;
+            input.denseMmPerUv = layout.denseStretch * mmPerUnit;
+        }
+        inputs.push_back(input);
+    }
+    return inputs;
+}
+
+Status planKernel(int taps, const char* setting, BlurKernel& kernel) {
+    auto made = makeGaussianKernel(taps);
+    if (!made.ok()) return makeError(setting, made.error().what);
+    kernel = std::move(*made);
+    return success();
+}
+
+}  // namespace
+
+bool aovReadsSss(Aov aov, bool lean) {
+    return aov == Aov::Final || aov == Aov::Diffuse || (aov == Aov::Specular && lean);
+}
+
+Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const FrameRequest& request,
+                            const ShadowCache& shadows) {
+    if (request.width <= 0 || request.height <= 0 || request.width > kMaxFrameDimension ||
+        request.height > kMaxFrameDimension) {
+        return makeError("frame size", std::to_string(request.width) + "x" + std::to_string(request.height) +
+                                           " is outside 1x1 .. " + std::to_string(kMaxFrameDimension) + "x" +
+                                           std::to_string(kMaxFrameDimension));
+    }
+    FramePlan plan;
+    plan.scene = &scene;
+    plan.width = request.width;
+    plan.height = request.height;
+    plan.aov = request.aov;
+    plan.materialMipBias = request.materialMipBias;
+    plan.view = makeViewParams(scene.camera, request.width, request.height);
+    plan.lean = frameUsesLean(scene.settings);
+
+    const size_t count = std::min(scene.characters.size(), geometry.size());
+    std::vector<Bounds> bounds;
+    for (size_t c = 0; c < count; ++c) {
+        const Character& character = scene.characters[c];
+        CharacterPlacement placement;
+        placement.worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
+        placement.worldBounds = transformBounds(geometry.objectBounds(c), placement.worldFromObject);
+        plan.characters.push_back(placement);
+        bounds.push_back(placement.worldBounds);
+    }
+    plan.worldBounds = unionBounds(plan.characters);
+
+    auto sss = planSss(scene, bounds, plan.view);
+    if (!sss.ok()) return sss.error();
+    plan.sss = std::move(*sss);
+    plan.lights = setupLights(scene.lights, plan.worldBounds, scene.settings.shadow);
+    markBackLights(scene, plan);
+    planShadows(scene, shadows, plan);
+
+    const bool textureSpaceMode = scene.settings.mode == "ts";
+    if (!textureSpaceMode) {
+        if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
+            return kernel.error();
+        }
+    }
+    plan.textureSpace = aovIsUvLayout(request.aov) || (textureSpaceMode && aovReadsSss(request.aov, plan.lean));
+    if (plan.textureSpace) {
+        auto ts = planTextureSpace(scene, textureSpaceInputs(scene, geometry, plan), plan.view, plan.lights);
+        if (!ts.ok()) return ts.error();
+        plan.ts = std::move(*ts);
+        if (const Status kernel = planKernel(scene.settings.ts.taps, "ts.taps", plan.tsKernel); !kernel.ok()) {
+            return kernel.error();
+        }
+    }
+    return plan;
+}
+
+void recordShadowMaps(const FramePlan& plan, const graph::RenderGraph& graph, ShadowCache& shadows) {
+    for (size_t slot = 0; slot < plan.shadows.size(); ++slot) {
+        const ShadowSlotPlan& s = plan.shadows[slot];
+        if (graph.wasExecuted(s.passName)) shadows.record(static_cast<int>(slot), s.desc, s.key);
+    }
+}
+
+}  // namespace dermis

@@ -1,0 +1,166 @@
+#include "render/FrameResources.h"
+
+#include "gl/TexturePool.h"
+#include "render/BeckmannTable.h"
+#include "sss/EnergyTable.h"
+
+#include <algorithm>
+
+namespace dermis {
+namespace {
+
+gl::Texture makeTableTexture(const std::vector<float>& table, int size) {
+    const auto side = static_cast<uint32_t>(size);
+    gl::Texture texture = gl::createTexture2D({side, side, graph::TextureFormat::R32F});
+    glTextureSubImage2D(texture.get(), 0, 0, 0, size, size, GL_RED, GL_FLOAT, table.data());
+    return texture;
+}
+
+gl::Texture makeSolidTexture(float value) {
+    gl::Texture texture = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8});
+    const float texel[4] = {value, value, value, value};
+    glTextureSubImage2D(texture.get(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel);
+    return texture;
+}
+
+gl::Buffer makeUniformBuffer(size_t bytes) {
+    gl::Buffer buffer = gl::createBuffer();
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    return buffer;
+}
+
+}  // namespace
+
+FrameResources::FrameResources(const GpuScene& gpuScene, const Programs& programs, gl::FramebufferCache& framebuffers)
+    : mGpuScene(gpuScene) {
+    mFrameUniforms = makeUniformBuffer(sizeof(gpu::FrameBlock));
+    mLightUniforms = makeUniformBuffer(sizeof(gpu::LightsBlock));
+    mObjectUniforms = makeUniformBuffer(sizeof(gpu::ObjectBlock));
+    mCharacterUniforms = makeUniformBuffer(sizeof(gpu::CharactersBlock));
+    mProfileUniforms = makeUniformBuffer(sizeof(gpu::ProfilesBlock));
+    mPassUniforms = makeUniformBuffer(kMaxPassBlockBytes);
+    mEmptyVertexArray = gl::createVertexArray();
+    mBeckmann = makeTableTexture(makeBeckmannTable(kBeckmannTableSize), kBeckmannTableSize);
+    mEnergy = makeTableTexture(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
+    mWhite = makeSolidTexture(1.0f);
+    mBlack = makeSolidTexture(0.0f);
+
+    mServices.gpuScene = &mGpuScene;
+    mServices.programs = &programs;
+    mServices.framebuffers = &framebuffers;
+    mServices.tsMeshes = &mTsMeshes;
+    mServices.objectUniforms = mObjectUniforms.get();
+    mServices.passUniforms = mPassUniforms.get();
+    mServices.emptyVertexArray = mEmptyVertexArray.get();
+    mServices.whiteTexture = mWhite.get();
+    mServices.blackTexture = mBlack.get();
+}
+
+Status FrameResources::prepare(const FramePlan& plan, SceneGeometry& geometry) {
+    GLint maxTexture = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+    if (plan.width > maxTexture || plan.height > maxTexture) {
+        return makeError("frame size", "larger than this GL's maximum texture size " + std::to_string(maxTexture));
+    }
+    uploadFrameBlocks(plan);
+    uploadSssBlocks(plan);
+    prepareOutput(plan);
+    prepareShadowMaps(plan);
+    for (const TsCharacterPlan& character : plan.ts.characters) {
+        const auto index = static_cast<size_t>(character.character);
+        mTsMeshes.prepare(index, mGpuScene.characters()[index], geometry.uvLayout(index));
+    }
+    return success();
+}
+
+void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
+    const Scene& scene = *plan.scene;
+    const Camera& camera = scene.camera;
+    const RenderSettings& settings = scene.settings;
+    gpu::FrameBlock frame{};
+    frame.viewFromWorld = plan.view.viewFromWorld;
+    frame.worldFromView = glm::inverse(frame.viewFromWorld);
+    frame.clipFromView = plan.view.clipFromView;
+    frame.viewFromClip = glm::inverse(frame.clipFromView);
+    frame.clipFromWorld = frame.clipFromView * frame.viewFromWorld;
+    frame.cameraPositionM = glm::vec4(camera.positionM, 1.0f);
+    frame.viewport = glm::vec4(plan.width, plan.height, 1.0f / float(plan.width), 1.0f / float(plan.height));
+    frame.depthRangeM = glm::vec4(camera.nearM, camera.farM, 0.0f, 0.0f);
+    frame.ambient = glm::vec4(settings.ambient, 0.0f);
+    frame.background = glm::vec4(scene.background.colour, 1.0f);
+    frame.shading = glm::vec4(settings.exposure, settings.sss.mix, float(plan.lights.lightCount), float(int(plan.aov)));
+    frame.features = glm::vec4(settings.energyConservation ? 1.0f : 0.0f, plan.view.pixelsPerMetreAtUnitDepth(),
+                               settings.ssao.strength, plan.materialMipBias);
+    glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
+    glNamedBufferSubData(mLightUniforms.get(), 0, sizeof(gpu::LightsBlock), &plan.lights.block);
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_FRAME, mFrameUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_LIGHTS, mLightUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_OBJECT, mObjectUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_CHARACTERS, mCharacterUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PROFILES, mProfileUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, mPassUniforms.get());
+    glBindTextureUnit(kBeckmannUnit, mBeckmann.get());
+    glBindTextureUnit(kEnergyUnit, mEnergy.get());
+}
+
+void FrameResources::uploadSssBlocks(const FramePlan& plan) {
+    const Scene& scene = *plan.scene;
+    const SsaoSettings& ssao = scene.settings.ssao;
+    gpu::CharactersBlock characters{};
+    const size_t count = std::min<size_t>(scene.characters.size(), DERMIS_MAX_CHARACTERS);
+    for (size_t c = 0; c < count; ++c) {
+        const Character& character = scene.characters[c];
+        const float radiusM = character.ssao.radiusM > 0.0f ? character.ssao.radiusM : ssao.radiusM;
+        const int samples = character.ssao.samples > 0 ? character.ssao.samples : ssao.samples;
+        const bool lean = c < mGpuScene.characters().size() && mGpuScene.characters()[c].leanMap1.isValid();
+        characters.characters[c + 1].params =
+            glm::vec4(float(plan.sss.slotOfCharacter[c]), radiusM, float(samples), lean ? 1.0f : 0.0f);
+    }
+    glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
+
+    gpu::ProfilesBlock profiles{};
+    for (const SssSlotPlan& slot : plan.sss.slots) {
+        gpu::ProfileParams& p = profiles.profiles[slot.slot];
+        const auto& gaussians = slot.profile->gaussians();
+        const size_t n = std::min<size_t>(gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS);
+        for (size_t i = 0; i < n; ++i) p.gaussians[i] = glm::vec4(gaussians[i].weight, gaussians[i].varianceMm2);
+        p.info = glm::vec4(float(n), slot.initWeight);
+    }
+    profiles.transmittance =
+        glm::vec4(scene.settings.transmittance.shrinkMm, scene.settings.transmittance.strength, 0.0f, 0.0f);
+    glNamedBufferSubData(mProfileUniforms.get(), 0, sizeof profiles, &profiles);
+}
+
+void FrameResources::prepareOutput(const FramePlan& plan) {
+    const graph::TextureDesc desc = frameOutputDesc(plan);
+    if (mOutput.isValid() && desc == mOutputDesc) return;
+    if (mOutput.isValid()) mServices.framebuffers->forget(mOutput.get());
+    mOutput = gl::createTexture2D(desc);
+    mOutputDesc = desc;
+}
+
+void FrameResources::prepareShadowMaps(const FramePlan& plan) {
+    mShadowMapsUsed = plan.shadows.size();
+    for (size_t slot = 0; slot < plan.shadows.size(); ++slot) {
+        ShadowMap& map = mShadowMaps[slot];
+        const graph::TextureDesc& desc = plan.shadows[slot].desc;
+        if (map.texture.isValid() && map.desc == desc) continue;
+        map.texture = gl::createTexture2D(desc);
+        // Outside the map means "unoccluded": clamp to a far border.
+        glTextureParameteri(map.texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(map.texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        map.desc = desc;
+    }
+}
+
+FrameInputs FrameResources::inputs() const {
+    FrameInputs inputs;
+    inputs.output = mOutput.get();
+    inputs.white = mWhite.get();
+    inputs.black = mBlack.get();
+    for (size_t slot = 0; slot < mShadowMapsUsed; ++slot) inputs.shadowMaps.push_back(mShadowMaps[slot].texture.get());
+    inputs.services = &mServices;
+    return inputs;
+}
+
+}  // namespace dermis

@@ -1,0 +1,44 @@
+#include "render/SceneGeometry.h"
+
+#include "core/Log.h"
+#include "scene/ModelLoader.h"
+
+#include <cmath>
+
+namespace dermis {
+
+Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
+    std::vector<Model> models;
+    for (const Character& character : scene.characters) {
+        log::info("loading character '" + character.name + "'");
+        auto model = loadCharacterModel(character);
+        if (!model.ok()) return model.error();
+        if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+        models.push_back(std::move(*model));
+    }
+    return models;
+}
+
+SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
+    for (const Model& model : models) mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr});
+}
+
+const UvLayout& SceneGeometry::uvLayout(size_t character) {
+    Character& c = mCharacters[character];
+    if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.mesh));
+    return *c.uvLayout;
+}
+
+Bounds transformBounds(const Bounds& b, const glm::mat4& m) {
+    Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                          (corner & 4) ? b.max.z : b.min.z);
+        const glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        out.min = glm::min(out.min, w);
+        out.max = glm::max(out.max, w);
+    }
+    return out;
+}
+
+}  // namespace dermis

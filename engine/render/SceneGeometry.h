@@ -1,0 +1,53 @@
+#pragma once
+// The CPU side of a scene's meshes that the frame plan needs, kept from load
+// time (no GL): each character's mesh and object-space bounds, and its UV
+// layout (scene/UvLayout.h), analysed the first time a texture-space plan
+// needs it (d'Eon & Luebke 2007 §16.3: the stretch sets the texture size and
+// the blur's tap spacing).
+//
+//   auto models = loadSceneModels(scene);      // as the renderer loads them
+//   SceneGeometry geometry(*models);
+//   FramePlan plan = *planFrame(scene, geometry, request, shadowCache);
+
+#include "core/Result.h"
+#include "scene/Mesh.h"
+#include "scene/Model.h"
+#include "scene/Scene.h"
+#include "scene/UvLayout.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace dermis {
+
+// Loads every character's model (scene/ModelLoader.h), in scene order. Errors
+// name the character; a mesh without triangles is one.
+Result<std::vector<Model>> loadSceneModels(const Scene& scene);
+
+class SceneGeometry {
+public:
+    SceneGeometry() = default;
+    explicit SceneGeometry(const std::vector<Model>& models);
+
+    size_t size() const { return mCharacters.size(); }
+    const MeshData& mesh(size_t character) const { return mCharacters[character].mesh; }
+    const Bounds& objectBounds(size_t character) const { return mCharacters[character].objectBounds; }
+    // The character's UV layout, analysed on first use (CPU; the procedural
+    // head takes a fraction of a second).
+    const UvLayout& uvLayout(size_t character);
+
+private:
+    struct Character {
+        MeshData mesh;
+        Bounds objectBounds;
+        std::shared_ptr<const UvLayout> uvLayout;
+    };
+    std::vector<Character> mCharacters;
+};
+
+// A box's world bounds: the bounds of its eight transformed corners.
+Bounds transformBounds(const Bounds& bounds, const glm::mat4& worldFromObject);
+
+}  // namespace dermis

@@ -1,0 +1,267 @@
+// The real frame on the test backend, without GL: content scenes are loaded
+// and planned (render/FramePlan.h), the frame is declared
+// (render/FrameDeclaration.h) with 0 for every imported texture, and the
+// graph is compiled but never executed. The tests read which passes run and
+// why the others are culled, in the words of the timings JSON
+// (describeCull), so what they assert is what `dermis render --timings`
+// reports.
+#include "TestSupport.h"
+
+#include "graph/RenderGraph.h"
+#include "render/FrameDeclaration.h"
+#include "render/FramePlan.h"
+#include "render/FrameTimings.h"
+#include "render/SceneGeometry.h"
+#include "scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace dermis;
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 90;
+
+// Overrides that move the camera so that it sees none of the default scene.
+const std::vector<std::string> kLookAway = {"camera.target_m=[0,0,5]"};
+// The default head from 4.5 m: every Gaussian is under half a pixel.
+const std::string kFarCamera = "camera.position_m=[1.6,0.3,4.2]";
+// The default scene's back light moved to the camera's side.
+const std::vector<std::string> kNoBackLight = {"lights.1.position_m=[0.25,0.12,0.6]",
+                                               "lights.1.direction=[-0.4,-0.2,-0.9]"};
+
+// The CPU meshes of a content scene, as the renderer loads them (the
+// procedural head takes about a second): made once per scene file and process.
+// Overrides in these tests move cameras, lights and settings, never meshes.
+SceneGeometry geometryOf(const std::string& sceneFile, const Scene& scene) {
+    static std::map<std::string, SceneGeometry> cache;
+    auto found = cache.find(sceneFile);
+    if (found == cache.end()) {
+        auto models = loadSceneModels(scene);
+        EXPECT_TRUE(models.ok()) << models.error().message();
+        found = cache.emplace(sceneFile, models.ok() ? SceneGeometry(*models) : SceneGeometry{}).first;
+    }
+    return found->second;
+}
+
+// One scene, planned and declared frame after frame like the renderer does,
+// with the shadow cache carried across frames.
+class DeclaredFrames {
+public:
+    DeclaredFrames(const std::string& sceneFile, const std::vector<std::string>& overrides = {}) {
+        auto scene = loadScene(test::contentScene(sceneFile), overrides);
+        EXPECT_TRUE(scene.ok()) << scene.error().message();
+        if (!scene.ok()) return;
+        mScene = std::make_unique<Scene>(std::move(*scene));
+        mGeometry = geometryOf(sceneFile, *mScene);
+    }
+
+    Scene& scene() { return *mScene; }
+
+    // Plans, declares and compiles one frame; false (with a test failure) on an error.
+    bool declare(Aov aov = Aov::Final) {
+        mReports.clear();
+        if (!mScene) return false;
+        auto plan = planFrame(*mScene, mGeometry, {kWidth, kHeight, aov}, mShadowCache);
+        EXPECT_TRUE(plan.ok()) << plan.error().message();
+        if (!plan.ok()) return false;
+        graph::RenderGraph graph;
+        declareFrame(graph, *plan, FrameInputs{});
+        const Status compiled = graph.compile();
+        EXPECT_TRUE(compiled.ok()) << compiled.error().message();
+        if (!compiled.ok()) return false;
+        // As the renderer does after running the graph.
+        recordShadowMaps(*plan, graph, mShadowCache);
+        mReports = graph.passReports();
+        return true;
+    }
+
+    bool declared(const std::string& name) const { return find(name) != nullptr; }
+    bool executed(const std::string& name) const {
+        const graph::PassReport* report = find(name);
+        EXPECT_NE(report, nullptr) << "no pass named '" << name << "' in\n" << listing();
+        return report && report->executed;
+    }
+    // The timings JSON's culled_because of the named pass ("" when it ran).
+    std::string culledBecause(const std::string& name) const {
+        const graph::PassReport* report = find(name);
+        EXPECT_NE(report, nullptr) << "no pass named '" << name << "' in\n" << listing();
+        return report ? describeCull(*report) : "(not declared)";
+    }
+    int executedWithPrefix(const std::string& prefix) const {
+        int n = 0;
+        for (const graph::PassReport& r : mReports) n += r.name.rfind(prefix, 0) == 0 && r.executed ? 1 : 0;
+        return n;
+    }
+    int declaredWithPrefix(const std::string& prefix) const {
+        int n = 0;
+        for (const graph::PassReport& r : mReports) n += r.name.rfind(prefix, 0) == 0 ? 1 : 0;
+        return n;
+    }
+    // The timings JSON's culled_because of every pass whose name starts with `prefix`.
+    std::map<std::string, std::string> culledWithPrefix(const std::string& prefix) const {
+        std::map<std::string, std::string> out;
+        for (const graph::PassReport& r : mReports) {
+            if (r.name.rfind(prefix, 0) == 0) out[r.name] = describeCull(r);
+        }
+        return out;
+    }
+    // Every pass and why it was culled, for failure messages.
+    std::string listing() const {
+        std::ostringstream out;
+        for (const graph::PassReport& r : mReports) out << "  " << r.name << ": " << (r.executed ? "ran" : describeCull(r)) << "\n";
+        return out.str();
+    }
+
+private:
+    const graph::PassReport* find(const std::string& name) const {
+        for (const graph::PassReport& r : mReports) {
+            if (r.name == name) return &r;
+        }
+        return nullptr;
+    }
+
+    std::unique_ptr<Scene> mScene;
+    SceneGeometry mGeometry;
+    ShadowCache mShadowCache;
+    std::vector<graph::PassReport> mReports;
+};
+
+}  // namespace
+
+TEST(FrameDeclaration, DefaultSceneRunsTheWholeScreenSpaceChain) {
+    DeclaredFrames frames("default.json");
+    ASSERT_TRUE(frames.declare());
+    for (const char* pass : {"gbuffer", "ssao", "ssao blur", "lighting", "transmittance", "sss init", "composite", "tonemap"}) {
+        EXPECT_TRUE(frames.executed(pass)) << pass << "\n" << frames.listing();
+    }
+    EXPECT_EQ(frames.executedWithPrefix("shadow:light"), 2) << frames.listing();
+    EXPECT_EQ(frames.declaredWithPrefix("ts "), 0);
+    EXPECT_FALSE(frames.declared("aov"));
+}
+
+TEST(FrameDeclaration, NoSssOnScreenRunsNoSssPass) {
+    DeclaredFrames frames("no_sss.json");
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
+    EXPECT_EQ(frames.culledBecause("sss init"), "predicate: no SSS pixel on screen");
+    EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: no SSS pixel on screen");
+    EXPECT_TRUE(frames.executed("lighting"));
+    EXPECT_TRUE(frames.executed("composite"));
+}
+
+TEST(FrameDeclaration, OffScreenScreenSpaceCharacterRunsNoBlur) {
+    DeclaredFrames frames("default.json", kLookAway);
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
+    EXPECT_EQ(frames.culledBecause("sss init"), "predicate: no SSS pixel on screen");
+    int horizontalBlurs = 0;
+    for (const auto& [name, why] : frames.culledWithPrefix("sss skin g")) {
+        if (name.back() != 'h') continue;  // a vertical pass is culled by its horizontal one
+        ++horizontalBlurs;
+        EXPECT_EQ(why, "predicate: no pixel of this profile on screen") << name;
+    }
+    EXPECT_EQ(horizontalBlurs, 6);
+    EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: no SSS pixel on screen");
+}
+
+TEST(FrameDeclaration, OffScreenTextureSpaceCharacterRunsNoTextureSpacePass) {
+    std::vector<std::string> overrides = kLookAway;
+    overrides.push_back("mode=ts");
+    DeclaredFrames frames("default.json", overrides);
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.declaredWithPrefix("sss"), 0) << frames.listing();
+    EXPECT_EQ(frames.culledBecause("ts init"), "predicate: no texture-space character on screen");
+    const std::map<std::string, std::string> headPasses = frames.culledWithPrefix("ts head ");
+    for (const auto& [name, why] : headPasses) EXPECT_EQ(why, "predicate: character off screen") << name;
+    EXPECT_GT(headPasses.size(), 10u) << frames.listing();
+
+    // The same view on the head: its passes run.
+    DeclaredFrames onScreen("default.json", {"mode=ts"});
+    ASSERT_TRUE(onScreen.declare());
+    EXPECT_TRUE(onScreen.executed("ts init"));
+    for (const char* step : {"stretch", "irradiance", "dilate", "gather"}) {
+        EXPECT_TRUE(onScreen.executed(std::string("ts head ") + step)) << step << "\n" << onScreen.listing();
+    }
+    EXPECT_EQ(onScreen.culledBecause("transmittance"), "nothing reads its output");
+}
+
+TEST(FrameDeclaration, GaussiansUnderTheMinimumWidthAreSkipped) {
+    DeclaredFrames near("default.json");
+    ASSERT_TRUE(near.declare());
+    const int nearBlurs = near.executedWithPrefix("sss skin g");
+    EXPECT_GT(nearBlurs, 0) << near.listing();
+    EXPECT_LT(nearBlurs, 12) << near.listing();
+    // Gaussian 0 (0.0064 mm^2) is under half a pixel at any ordinary distance.
+    EXPECT_EQ(near.culledBecause("sss skin g0 h").rfind("predicate: ", 0), 0u);
+    EXPECT_NE(near.culledBecause("sss skin g0 h").find("px wide at the nearest SSS pixel (< 0.5 px)"), std::string::npos);
+    EXPECT_EQ(near.culledBecause("sss skin g0 v"), "input 'sss skin g0 h' not produced");
+    EXPECT_TRUE(near.executed("sss skin g5 h"));
+    EXPECT_TRUE(near.executed("sss skin g5 v"));
+
+    DeclaredFrames far("default.json", {kFarCamera});
+    ASSERT_TRUE(far.declare());
+    EXPECT_EQ(far.executedWithPrefix("sss skin g"), 0) << far.listing();
+    EXPECT_NE(far.culledBecause("sss skin g5 h").find("px wide at the nearest SSS pixel (< 0.5 px)"), std::string::npos);
+    EXPECT_TRUE(far.executed("sss init"));  // the head is on screen: its identity weight still starts the sum
+}
+
+TEST(FrameDeclaration, NoBackLightRunsNoTransmittance) {
+    DeclaredFrames frames("default.json", kNoBackLight);
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: no shadowed light behind an SSS character");
+    EXPECT_GT(frames.executedWithPrefix("sss skin"), 0) << frames.listing();
+}
+
+TEST(FrameDeclaration, DisabledEffectsAreCulledWithTheirReason) {
+    DeclaredFrames frames("default.json", {"ssao.enabled=false", "sss.enabled=false", "transmittance.enabled=false"});
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.culledBecause("ssao"), "predicate: SSAO is disabled (settings.ssao.enabled = false)");
+    EXPECT_EQ(frames.culledBecause("ssao blur"), "predicate: SSAO is disabled (settings.ssao.enabled = false)");
+    EXPECT_EQ(frames.culledBecause("sss init"), "predicate: SSS disabled");
+    EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: transmittance disabled");
+    EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
+    EXPECT_TRUE(frames.executed("lighting"));
+}
+
+TEST(FrameDeclaration, CachedShadowMapIsCulledOnTheSecondFrame) {
+    DeclaredFrames frames("default.json");
+    ASSERT_TRUE(frames.declare());
+    const std::vector<std::string> shadows = {"shadow:light0(dir)", "shadow:light1(spot)"};
+    for (const std::string& pass : shadows) EXPECT_TRUE(frames.executed(pass)) << frames.listing();
+
+    ASSERT_TRUE(frames.declare());
+    for (const std::string& pass : shadows) {
+        EXPECT_EQ(frames.culledBecause(pass), "predicate: light and casters unchanged since the cached map");
+    }
+    EXPECT_TRUE(frames.executed("lighting"));  // it reads the cached maps
+
+    // A light that moves makes its own map stale, and only its own.
+    frames.scene().lights[1].positionM += glm::vec3(0.01f, 0.0f, 0.0f);
+    ASSERT_TRUE(frames.declare());
+    EXPECT_FALSE(frames.executed("shadow:light0(dir)"));
+    EXPECT_TRUE(frames.executed("shadow:light1(spot)"));
+}
+
+TEST(FrameDeclaration, AnAovCullsTheLightingChain) {
+    DeclaredFrames frames("default.json");
+    ASSERT_TRUE(frames.declare(Aov::Albedo));
+    EXPECT_TRUE(frames.executed("gbuffer"));
+    EXPECT_TRUE(frames.executed("aov"));
+    for (const char* pass : {"lighting", "ssao", "ssao blur", "shadow:light0(dir)", "shadow:light1(spot)"}) {
+        EXPECT_EQ(frames.culledBecause(pass), "nothing reads its output") << pass;
+    }
+    EXPECT_FALSE(frames.declared("composite"));
+    EXPECT_EQ(frames.declaredWithPrefix("sss"), 0);
+
+    // A shadow map that did not run is not cached: the final frame renders it.
+    ASSERT_TRUE(frames.declare(Aov::Final));
+    EXPECT_TRUE(frames.executed("shadow:light0(dir)")) << frames.listing();
+}
