@@ -46,6 +46,9 @@ struct SweepConfig {
     std::string label;                   // "taps=5 scale=0.5"; "" for no swept key
 };
 
+// "[ss:|ts:]": the optional mode prefix of an axis, for help and errors.
+std::string modePrefixSyntax();
+
 // The sweep `dermis bench` runs when no --sweep is given: the knobs.
 extern const char* const kDefaultSweepSpec;
 

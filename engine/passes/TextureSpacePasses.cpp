@@ -99,7 +99,7 @@ Status planTextureSpaceFrame(FrameContext& frame) {
     for (size_t c = 0; c < characters.size() && c < scene.characters.size(); ++c) {
         TsCharacterInput input;
         input.worldBounds = characters[c].worldBounds;
-        if (scene.characters[c].material.profile != "none") {
+        if (scene.characters[c].material.profile != kOpaqueProfile) {
             const TsMesh& mesh = state.meshes.get(c, characters[c]);
             const float mmPerUnit = glm::length(glm::vec3(characters[c].worldFromObject[0])) * 1000.0f;
             input.mmPerUv = mesh.medianStretch * mmPerUnit;

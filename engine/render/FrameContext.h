@@ -21,8 +21,8 @@ namespace dermis {
 struct TextureSpaceState;
 
 // Texture units every fullscreen pass agrees on for shared tables.
-constexpr GLuint kBeckmannUnit = 14;
-constexpr GLuint kEnergyUnit = 15;
+constexpr GLuint kBeckmannUnit = DERMIS_UNIT_BECKMANN;
+constexpr GLuint kEnergyUnit = DERMIS_UNIT_ENERGY;
 
 struct FrameContext {
     const Scene* scene = nullptr;

@@ -212,7 +212,7 @@ void Renderer::declareFrame(graph::RenderGraph& graph, const FrameRequest& reque
             addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
         graph::TextureHandle diffuse;
         LeanShading lean;
-        if (mScene.settings.mode == "ts") {
+        if (mScene.settings.mode == SssMode::TextureSpace) {
             diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance);
         } else {
             const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());

@@ -1,5 +1,6 @@
 #include "scene/SceneLoader.h"
 
+#include "core/Limits.h"
 #include "scene/JsonReader.h"
 #include "scene/ScenePaths.h"
 
@@ -14,23 +15,12 @@ namespace {
 
 using nlohmann::json;
 
-constexpr size_t kMaxLights = 1024;
-constexpr size_t kMaxCharacters = 1024;
 // A direction within this of unit length is kept as written, so that a
 // direction the loader normalised reads back bit-identical (normalising twice
 // can move the last bit).
 constexpr double kUnitLengthTolerance = 1e-6;
 constexpr double kParallelTolerance = 1e-6;
 
-const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
-const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
-const std::vector<std::string> kSssBlurs = {"variant", "bilateral", "control", "fetch-only"};
-const std::vector<std::string> kSssVariants = {"c", "lcb", "lbb"};
-const std::vector<std::string> kSssModes = {"ss", "ts"};
-constexpr int kMinTsSize = 64;
-constexpr int kMaxTsSize = 4096;
-constexpr int kMinSsaoSamples = 8;
-constexpr int kMaxSsaoSamples = 128;
 
 double length(const glm::vec3& v) {
     const double x = v.x, y = v.y, z = v.z;
@@ -39,6 +29,16 @@ double length(const glm::vec3& v) {
 
 glm::dvec3 normalised(const glm::vec3& v) {
     return glm::dvec3(v) / length(v);
+}
+
+// A name from `table`, stored as its enum value.
+template <typename E, size_t N>
+void choice(JsonObject& object, const char* key, const EnumTable<E, N>& table, E& out) {
+    int index = -1;
+    object.choice(key, std::string(table.noun()).c_str(), table.names(), index);
+    if (index >= 0) {
+        out = table.begin()[index].value;
+    }
 }
 
 void readCamera(JsonObject& root, Camera& camera) {
@@ -77,9 +77,7 @@ void readLight(JsonContext& context, const json& value, const std::string& point
     JsonObject object(
         context, value, pointer,
         {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow"});
-    int type = static_cast<int>(light.type);
-    object.choice("type", "light type", kLightTypes, type);
-    light.type = static_cast<LightType>(type);
+    choice(object, "type", kLightTypes, light.type);
     object.vec3("position_m", light.positionM);
     object.vec3("direction", light.direction);
     object.vec3("colour", light.colour, Range::atLeast(0.0));
@@ -207,15 +205,12 @@ void readBackground(JsonObject& root, Background& background) {
     object.vec3("colour", background.colour, Range::atLeast(0.0));
 }
 
-// A string from `options`, stored as that string.
-void choiceString(JsonObject& object, const char* key, const char* noun, const std::vector<std::string>& options,
-                  std::string& out) {
-    int index = 0;
-    object.choice(key, noun, options, index);
-    if (object.has(key)) {
-        out = options[static_cast<size_t>(index)];
-    }
+bool isBlurTapCount(int taps) {
+    return taps >= kMinBlurTaps && taps <= kMaxBlurTaps && taps % 2 == 1;
 }
+
+const std::string kBlurTapsRequirement =
+    "must be an odd number of taps in [" + std::to_string(kMinBlurTaps) + ", " + std::to_string(kMaxBlurTaps) + "]";
 
 void readShadow(JsonObject& parent, ShadowSettings& shadow) {
     const json* value = parent.member("shadow");
@@ -224,10 +219,10 @@ void readShadow(JsonObject& parent, ShadowSettings& shadow) {
     }
     JsonObject object(parent.context(), *value, parent.pointer("shadow"),
                       {"map_size", "bias_constant_m", "bias_slope_texels", "filter"});
-    object.integer("map_size", shadow.mapSize, Range::closed(64.0, 8192.0));
+    object.integer("map_size", shadow.mapSize, Range::closed(kMinShadowMapSize, kMaxShadowMapSize));
     object.number("bias_constant_m", shadow.biasConstantM, Range::atLeast(0.0));
     object.number("bias_slope_texels", shadow.biasSlopeTexels, Range::atLeast(0.0));
-    choiceString(object, "filter", "shadow filter", kShadowFilters, shadow.filter);
+    choice(object, "filter", kShadowFilters, shadow.filter);
 }
 
 void readSss(JsonObject& parent, SssSettings& sss) {
@@ -239,14 +234,12 @@ void readSss(JsonObject& parent, SssSettings& sss) {
                       {"enabled", "variant", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm",
                        "gaussians", "width_scale", "min_width_px", "mix"});
     object.boolean("enabled", sss.enabled);
-    choiceString(object, "variant", "SSS variant", kSssVariants, sss.variant);
-    choiceString(object, "blur", "SSS blur", kSssBlurs, sss.blur);
-    constrainedInteger(
-        object, "taps", sss.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
-        "must be an odd number of taps in [3, 33]");
+    choice(object, "variant", kSssVariants, sss.variant);
+    choice(object, "blur", kSssBlurs, sss.blur);
+    constrainedInteger(object, "taps", sss.taps, isBlurTapCount, kBlurTapsRequirement);
     object.number("bilateral_depth_mm", sss.bilateralDepthMm, Range::above(0.0));
     object.number("control_depth_scale_per_mm", sss.controlDepthScalePerMm, Range::atLeast(0.0));
-    object.integer("gaussians", sss.gaussians, Range::closed(1.0, 8.0));
+    object.integer("gaussians", sss.gaussians, Range::closed(1, kMaxProfileGaussians));
     object.number("width_scale", sss.widthScale, Range::atLeast(0.0));
     object.number("min_width_px", sss.minWidthPx, Range::atLeast(0.0));
     object.number("mix", sss.mix, Range::closed(0.0, 1.0));
@@ -288,9 +281,7 @@ void readTextureSpace(JsonObject& parent, TextureSpaceSettings& ts) {
     }
     JsonObject object(parent.context(), *value, parent.pointer("ts"),
                       {"taps", "min_size", "max_size", "tsm", "tsm_strength", "seam_blend"});
-    constrainedInteger(
-        object, "taps", ts.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
-        "must be an odd number of taps in [3, 33]");
+    constrainedInteger(object, "taps", ts.taps, isBlurTapCount, kBlurTapsRequirement);
     const std::string sizes =
         "must be a power of two in [" + std::to_string(kMinTsSize) + ", " + std::to_string(kMaxTsSize) + "]";
     constrainedInteger(object, "min_size", ts.minSize, isTsSize, sizes);
@@ -317,7 +308,7 @@ void readSettings(JsonObject& root, RenderSettings& settings) {
     object.number("exposure", settings.exposure, Range::above(0.0));
     object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
     object.boolean("energy_conservation", settings.energyConservation);
-    choiceString(object, "mode", "SSS mode", kSssModes, settings.mode);
+    choice(object, "mode", kSssModes, settings.mode);
     readShadow(object, settings.shadow);
     readSss(object, settings.sss);
     readTransmittance(object, settings.transmittance);
@@ -334,13 +325,13 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
     JsonObject root(context, document, "", {"camera", "lights", "characters", "background", "settings"});
     readCamera(root, scene.camera);
 
-    if (const json* lights = root.array("lights", kMaxLights, "lights")) {
+    if (const json* lights = root.array("lights", kMaxSceneLights, "lights")) {
         scene.lights.resize(lights->size());
         for (size_t i = 0; i < lights->size() && !context.failed(); ++i) {
             readLight(context, (*lights)[i], root.pointer("lights") + "/" + std::to_string(i), scene.lights[i]);
         }
     }
-    if (const json* characters = root.array("characters", kMaxCharacters, "characters")) {
+    if (const json* characters = root.array("characters", kMaxSceneCharacters, "characters")) {
         scene.characters.resize(characters->size());
         for (size_t i = 0; i < characters->size() && !context.failed(); ++i) {
             readCharacter(context, (*characters)[i], root.pointer("characters") + "/" + std::to_string(i),

@@ -33,13 +33,9 @@ Json vec3(const glm::vec3& v) {
     return Json::array({number(v.x), number(v.y), number(v.z)});
 }
 
-const char* lightTypeName(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "directional";
-        case LightType::Spot: return "spot";
-        case LightType::Point: return "point";
-    }
-    return "directional";
+template <typename E, size_t N>
+Json name(const EnumTable<E, N>& table, E value) {
+    return Json(std::string(table.name(value)));
 }
 
 Json cameraJson(const Camera& camera) {
@@ -55,7 +51,7 @@ Json cameraJson(const Camera& camera) {
 
 Json lightJson(const Light& light) {
     Json j;
-    j["type"] = lightTypeName(light.type);
+    j["type"] = name(kLightTypes, light.type);
     j["position_m"] = vec3(light.positionM);
     j["direction"] = vec3(light.direction);
     j["colour"] = vec3(light.colour);
@@ -106,13 +102,13 @@ Json settingsJson(const RenderSettings& settings) {
     shadowJson["map_size"] = shadow.mapSize;
     shadowJson["bias_constant_m"] = number(shadow.biasConstantM);
     shadowJson["bias_slope_texels"] = number(shadow.biasSlopeTexels);
-    shadowJson["filter"] = shadow.filter;
+    shadowJson["filter"] = name(kShadowFilters, shadow.filter);
 
     const SssSettings& sss = settings.sss;
     Json sssJson;
     sssJson["enabled"] = sss.enabled;
-    sssJson["variant"] = sss.variant;
-    sssJson["blur"] = sss.blur;
+    sssJson["variant"] = name(kSssVariants, sss.variant);
+    sssJson["blur"] = name(kSssBlurs, sss.blur);
     sssJson["taps"] = sss.taps;
     sssJson["bilateral_depth_mm"] = number(sss.bilateralDepthMm);
     sssJson["control_depth_scale_per_mm"] = number(sss.controlDepthScalePerMm);
@@ -148,7 +144,7 @@ Json settingsJson(const RenderSettings& settings) {
     j["exposure"] = number(settings.exposure);
     j["ambient"] = vec3(settings.ambient);
     j["energy_conservation"] = settings.energyConservation;
-    j["mode"] = settings.mode;
+    j["mode"] = name(kSssModes, settings.mode);
     j["shadow"] = std::move(shadowJson);
     j["sss"] = std::move(sssJson);
     j["transmittance"] = std::move(transmittanceJson);
