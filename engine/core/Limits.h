@@ -16,8 +16,8 @@ static_assert(kMinBlurTaps % 2 == 1 && kMaxBlurTaps % 2 == 1, "tap counts are od
 constexpr int kMaxProfileGaussians = DERMIS_MAX_PROFILE_GAUSSIANS;
 
 // SSAO hemisphere samples (ssao.samples, the per-character override).
-constexpr int kMinSsaoSamples = 8;
-constexpr int kMaxSsaoSamples = 128;
+constexpr int kMinSsaoSamples = DERMIS_MIN_SSAO_SAMPLES;
+constexpr int kMaxSsaoSamples = DERMIS_MAX_SSAO_SAMPLES;
 
 // Shadow-map side in texels (shadow.map_size).
 constexpr int kMinShadowMapSize = 64;

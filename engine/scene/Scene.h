@@ -123,7 +123,7 @@ struct ShadowSettings {
 
 // Texture-space SSS (d'Eon & Luebke, seed 000 §2.2-§2.8; DESIGN.md "Texture-space mode").
 struct TextureSpaceSettings {
-    int taps = 7;              // taps per 1-D blur pass (seed 000 §2.2.4 uses seven), odd, kMinBlurTaps..kMaxBlurTaps
+    int taps = 7;              // taps per 1-D blur pass (Chappuis 2011 §2.2.4 uses seven), odd, kMinBlurTaps..kMaxBlurTaps
     int minSize = 256;         // irradiance texture side in texels, a power of two: the screen coverage
     int maxSize = 2048;        // picks a power of two within [minSize, maxSize]
     bool tsm = true;           // modified translucent shadow map: light through thin regions (seed 000 §2.5)

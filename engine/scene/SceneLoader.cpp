@@ -3,6 +3,7 @@
 #include "core/Limits.h"
 #include "scene/JsonReader.h"
 #include "scene/ScenePaths.h"
+#include "scene/SettingsFields.h"
 
 #include <cmath>
 #include <filesystem>
@@ -205,115 +206,54 @@ void readBackground(JsonObject& root, Background& background) {
     object.vec3("colour", background.colour, Range::atLeast(0.0));
 }
 
-bool isBlurTapCount(int taps) {
-    return taps >= kMinBlurTaps && taps <= kMaxBlurTaps && taps % 2 == 1;
-}
+// Reads the fields a visit lists (SettingsFields.h) from one JSON object.
+class FieldReader {
+public:
+    explicit FieldReader(JsonObject& object) : mObject(object) {}
 
-const std::string kBlurTapsRequirement =
-    "must be an odd number of taps in [" + std::to_string(kMinBlurTaps) + ", " + std::to_string(kMaxBlurTaps) + "]";
-
-void readShadow(JsonObject& parent, ShadowSettings& shadow) {
-    const json* value = parent.member("shadow");
-    if (value == nullptr) {
-        return;
+    void number(const char* key, float& out, const Range& range) { mObject.number(key, out, range); }
+    void integer(const char* key, int& out, const Range& range) { mObject.integer(key, out, range); }
+    void rule(const char* key, int& out, const IntegerRule& rule) {
+        constrainedInteger(mObject, key, out, rule.valid, rule.requirement);
     }
-    JsonObject object(parent.context(), *value, parent.pointer("shadow"),
-                      {"map_size", "bias_constant_m", "bias_slope_texels", "filter"});
-    object.integer("map_size", shadow.mapSize, Range::closed(kMinShadowMapSize, kMaxShadowMapSize));
-    object.number("bias_constant_m", shadow.biasConstantM, Range::atLeast(0.0));
-    object.number("bias_slope_texels", shadow.biasSlopeTexels, Range::atLeast(0.0));
-    choice(object, "filter", kShadowFilters, shadow.filter);
-}
-
-void readSss(JsonObject& parent, SssSettings& sss) {
-    const json* value = parent.member("sss");
-    if (value == nullptr) {
-        return;
+    void boolean(const char* key, bool& out) { mObject.boolean(key, out); }
+    void vec3(const char* key, glm::vec3& out, const Range& range) { mObject.vec3(key, out, range); }
+    template <typename E, size_t N>
+    void choice(const char* key, const EnumTable<E, N>& table, E& out) {
+        dermis::choice(mObject, key, table, out);
     }
-    JsonObject object(parent.context(), *value, parent.pointer("sss"),
-                      {"enabled", "variant", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm",
-                       "gaussians", "width_scale", "min_width_px", "mix"});
-    object.boolean("enabled", sss.enabled);
-    choice(object, "variant", kSssVariants, sss.variant);
-    choice(object, "blur", kSssBlurs, sss.blur);
-    constrainedInteger(object, "taps", sss.taps, isBlurTapCount, kBlurTapsRequirement);
-    object.number("bilateral_depth_mm", sss.bilateralDepthMm, Range::above(0.0));
-    object.number("control_depth_scale_per_mm", sss.controlDepthScalePerMm, Range::atLeast(0.0));
-    object.integer("gaussians", sss.gaussians, Range::closed(1, kMaxProfileGaussians));
-    object.number("width_scale", sss.widthScale, Range::atLeast(0.0));
-    object.number("min_width_px", sss.minWidthPx, Range::atLeast(0.0));
-    object.number("mix", sss.mix, Range::closed(0.0, 1.0));
-}
-
-void readTransmittance(JsonObject& parent, TransmittanceSettings& transmittance) {
-    const json* value = parent.member("transmittance");
-    if (value == nullptr) {
-        return;
+    // A nested object, read when present.
+    template <typename G, typename Visit>
+    void group(const char* key, G& out, Visit&& visit) {
+        const json* value = mObject.member(key);
+        if (value == nullptr) {
+            return;
+        }
+        JsonObject object(mObject.context(), *value, mObject.pointer(key), fieldKeys(out, visit));
+        FieldReader reader(object);
+        visit(out, reader);
     }
-    JsonObject object(parent.context(), *value, parent.pointer("transmittance"), {"enabled", "shrink_mm", "strength"});
-    object.boolean("enabled", transmittance.enabled);
-    object.number("shrink_mm", transmittance.shrinkMm, Range::atLeast(0.0));
-    object.number("strength", transmittance.strength, Range::atLeast(0.0));
-}
 
-void readSsao(JsonObject& parent, SsaoSettings& ssao) {
-    const json* value = parent.member("ssao");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("ssao"),
-                      {"enabled", "samples", "radius_m", "strength", "blur"});
-    object.boolean("enabled", ssao.enabled);
-    object.integer("samples", ssao.samples, Range::closed(kMinSsaoSamples, kMaxSsaoSamples));
-    object.number("radius_m", ssao.radiusM, Range::above(0.0));
-    object.number("strength", ssao.strength, Range::closed(0.0, 1.0));
-    object.boolean("blur", ssao.blur);
-}
-
-bool isTsSize(int size) {
-    return size >= kMinTsSize && size <= kMaxTsSize && (size & (size - 1)) == 0;
-}
-
-void readTextureSpace(JsonObject& parent, TextureSpaceSettings& ts) {
-    const json* value = parent.member("ts");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("ts"),
-                      {"taps", "min_size", "max_size", "tsm", "tsm_strength", "seam_blend"});
-    constrainedInteger(object, "taps", ts.taps, isBlurTapCount, kBlurTapsRequirement);
-    const std::string sizes =
-        "must be a power of two in [" + std::to_string(kMinTsSize) + ", " + std::to_string(kMaxTsSize) + "]";
-    constrainedInteger(object, "min_size", ts.minSize, isTsSize, sizes);
-    constrainedInteger(object, "max_size", ts.maxSize, isTsSize, sizes);
-    object.boolean("tsm", ts.tsm);
-    object.number("tsm_strength", ts.tsmStrength, Range::atLeast(0.0));
-    object.number("seam_blend", ts.seamBlend, Range::atLeast(0.0));
-    JsonContext& context = parent.context();
-    if (context.failed()) {
-        return;
-    }
-    context.check(ts.minSize <= ts.maxSize, object.pointer("min_size"),
-                  "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
-}
+private:
+    JsonObject& mObject;
+};
 
 void readSettings(JsonObject& root, RenderSettings& settings) {
     const json* value = root.member("settings");
     if (value == nullptr) {
         return;
     }
-    JsonObject object(root.context(), *value, root.pointer("settings"),
-                      {"exposure", "ambient", "energy_conservation", "mode", "shadow", "sss", "transmittance", "ssao",
-                       "ts"});
-    object.number("exposure", settings.exposure, Range::above(0.0));
-    object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
-    object.boolean("energy_conservation", settings.energyConservation);
-    choice(object, "mode", kSssModes, settings.mode);
-    readShadow(object, settings.shadow);
-    readSss(object, settings.sss);
-    readTransmittance(object, settings.transmittance);
-    readSsao(object, settings.ssao);
-    readTextureSpace(object, settings.ts);
+    const auto visit = [](auto& s, auto& v) { visitSettingsFields(s, v); };
+    JsonObject object(root.context(), *value, root.pointer("settings"), fieldKeys(settings, visit));
+    FieldReader reader(object);
+    visit(settings, reader);
+    JsonContext& context = root.context();
+    if (context.failed()) {
+        return;
+    }
+    const TextureSpaceSettings& ts = settings.ts;
+    context.check(ts.minSize <= ts.maxSize, object.pointer("ts") + "/min_size",
+                  "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
 }
 
 }  // namespace

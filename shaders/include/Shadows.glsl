@@ -7,9 +7,9 @@
 // footprint * tan(angle between N and L) (seed 003 §3).
 //
 // Two filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
-//   PCF4X4: a 4x4 grid of taps, box-weighted (seed 000 §2.4);
+//   PCF4X4: a 4x4 grid of taps, box-weighted (Chappuis 2011 §2.4);
 //   POISSON: 16 Poisson-disc taps rotated per pixel by interleaved gradient noise
-//      (seed 003 §3), trading banding for noise.
+//      (Papanikolaou 2013 §3), trading banding for noise.
 #ifndef DERMIS_SHADOWS_GLSL
 #define DERMIS_SHADOWS_GLSL
 

@@ -14,6 +14,9 @@
 #define DERMIS_MAX_CHARACTERS 255       // object ids 1..255 in the G-buffer (0 = background)
 #define DERMIS_MAX_PROFILES 8           // profile slots per frame; the stencil holds the slot (0 = no SSS)
 #define DERMIS_MAX_PROFILE_GAUSSIANS 8
+// Hemisphere samples of SSAO per pixel (settings.ssao.samples).
+#define DERMIS_MIN_SSAO_SAMPLES 8
+#define DERMIS_MAX_SSAO_SAMPLES 128
 // Taps per direction of a separable blur kernel (odd counts from 3 up to this).
 #define DERMIS_MIN_BLUR_TAPS 3
 #define DERMIS_MAX_BLUR_TAPS 33
