@@ -31,8 +31,8 @@ enum class SssVariant { C, Lcb, Lbb };
 
 inline constexpr EnumTable<SssVariant, 3> kSssVariants{
     "SSS variant",
-    {{{SssVariant::C, "c", "Jimenez: control blur, KS specular from the unblurred normal"},
-      {SssVariant::Lcb, "lcb", "LEAN specular from moments blurred with the irradiance, control blur"},
+    {{{SssVariant::C, "c", "Jimenez: control blur, KS specular"},
+      {SssVariant::Lcb, "lcb", "LEAN specular, control blur"},
       {SssVariant::Lbb, "lbb", "LEAN specular, bilateral blur"}}}};
 
 // Edge handling of the screen-space blur. Variant is the setting "the
