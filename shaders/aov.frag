@@ -4,26 +4,13 @@
 #include "UniformBlocks.glsl"
 #include "EnergyConservation.glsl"
 
-#define AOV_ALBEDO 1
-#define AOV_NORMAL 2
-#define AOV_DEPTH 3
-#define AOV_DIFFUSE 4
-#define AOV_SPECULAR 5
-#define AOV_IRRADIANCE 6
-#define AOV_AO 7
-#define AOV_TRANSMITTANCE 8
-#define AOV_THICKNESS 9
-#define AOV_OBJECT 10  // the object id (scene character index + 1; 0 for the background)
-#define AOV_STRETCH 11             // the UV-space AOVs: a texture-space texture of one character,
-#define AOV_IRRADIANCE_TEXTURE 12  // its UV square letterboxed in the frame (uvLayoutTexel)
-
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uDiffuse;      // SSS-accumulated irradiance (diffuse AOV)
 layout(binding = 3) uniform sampler2D uSpecular;
 layout(binding = 4) uniform sampler2D uNormalMaterial;
 layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO, transmittance or a UV-space texture
-layout(binding = 15) uniform sampler2D uEnergy;
+layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 
 in vec2 vUv;
 layout(location = 0) out vec4 oValue;
@@ -53,27 +40,27 @@ bool uvLayoutTexel(ivec2 pixel, out vec4 texel) {
 
 void main() {
     int aov = int(uFrame.shading.w);
-    if (aov == AOV_STRETCH || aov == AOV_IRRADIANCE_TEXTURE) {
+    if (aov == DERMIS_AOV_STRETCH || aov == DERMIS_AOV_IRRADIANCE_TEXTURE) {
         vec4 texel;
         bool inside = uvLayoutTexel(ivec2(gl_FragCoord.xy), texel);
-        oValue = vec4(aov == AOV_STRETCH ? vec3(texel.rg, 0.0) : texel.rgb, inside ? 1.0 : 0.0);
+        oValue = vec4(aov == DERMIS_AOV_STRETCH ? vec3(texel.rg, 0.0) : texel.rgb, inside ? 1.0 : 0.0);
         return;
     }
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(uDepth, pixel, 0).r;
     bool background = depth >= 1.0;
     vec3 value = vec3(0.0);
-    if (aov == AOV_DEPTH) {
+    if (aov == DERMIS_AOV_DEPTH) {
         // Linear view depth in metres; the far plane for the background.
         value = vec3(background ? uFrame.depthRangeM.y : -viewPositionFromDepth(vUv, depth, uFrame.viewFromClip).z);
-    } else if (aov == AOV_AO) {
+    } else if (aov == DERMIS_AOV_AO) {
         value = vec3(background ? 1.0 : component(pixel).r);
     } else if (!background) {
-        if (aov == AOV_ALBEDO) value = texelFetch(uAlbedo, pixel, 0).rgb;
-        else if (aov == AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
-        else if (aov == AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
-        else if (aov == AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
-        else if (aov == AOV_OBJECT) value = vec3(floor(texelFetch(uAlbedo, pixel, 0).a * 255.0 + 0.5));
+        if (aov == DERMIS_AOV_ALBEDO) value = texelFetch(uAlbedo, pixel, 0).rgb;
+        else if (aov == DERMIS_AOV_NORMAL) value = mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
+        else if (aov == DERMIS_AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
+        else if (aov == DERMIS_AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
+        else if (aov == DERMIS_AOV_OBJECT) value = vec3(floor(texelFetch(uAlbedo, pixel, 0).a * 255.0 + 0.5));
         else value = component(pixel).rgb;  // irradiance, transmittance, thickness
     }
     oValue = vec4(value, background ? 0.0 : 1.0);

@@ -13,7 +13,7 @@ layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uDiffuse;
 layout(binding = 3) uniform sampler2D uSpecular;
 layout(binding = 4) uniform sampler2D uNormalMaterial;
-layout(binding = 15) uniform sampler2D uEnergy;
+layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 #ifdef COMPOSITE_LEAN
 layout(binding = 5) uniform sampler2D uLeanMoments;  // blurred (B'.x, B'.y, M'.xx, M'.yy); M'.xy is uDiffuse's alpha
 layout(binding = 6) uniform sampler2D uVisibility;   // the lighting pass's shadow visibility

@@ -24,8 +24,8 @@ layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uNormalMaterial;
 layout(binding = 3) uniform sampler2D uAmbientOcclusion;
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
-layout(binding = 14) uniform sampler2D uBeckmann;
-layout(binding = 15) uniform sampler2D uEnergy;
+layout(binding = DERMIS_UNIT_BECKMANN) uniform sampler2D uBeckmann;
+layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 #ifdef LIGHTING_LEAN
 layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
 #endif

@@ -78,7 +78,7 @@ layout(binding = 2) uniform sampler2D uAlbedo;
 
 layout(location = 0) out vec4 oAo;
 
-const int kMaxSamples = 128;
+const int kMaxSamples = DERMIS_MAX_SSAO_SAMPLES;
 const float kMaxRadiusM = 1.0e3;
 const float kGoldenAngle = 2.39996323;  // pi (3 - sqrt 5)
 const float kGoldenFraction = 0.61803399;

@@ -19,7 +19,7 @@ layout(binding = 2) uniform sampler2D uTsm;
 layout(binding = 3) uniform sampler2D uAmbientOcclusion;  // screen space; 1x1 when SSAO is off
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
 layout(binding = 8) uniform usampler2D uDepthKey;         // G-buffer target 2
-layout(binding = 15) uniform sampler2D uEnergy;
+layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 
 in vec3 vWorldPositionM;
 in vec3 vWorldNormal;

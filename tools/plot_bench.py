@@ -76,7 +76,9 @@ def save(figure, path):
 def plot_pareto(rows, summary, path):
     figure, axes = plt.subplots(figsize=(15, 6.5))
     fronts = []
-    for mode, (colour, name) in MODE_STYLE.items():
+    # The modes as the bench wrote them (its table of modes); a mode without a style gets the next colour.
+    for index, mode in enumerate(dict.fromkeys(r["mode"] for r in rows)):
+        colour, name = MODE_STYLE.get(mode, (f"C{index + 2}", mode))
         mine = [r for r in rows if r["mode"] == mode]
         if not mine:
             continue

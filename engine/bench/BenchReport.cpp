@@ -1,6 +1,7 @@
 #include "bench/BenchReport.h"
 
 #include "bench/ParetoFront.h"
+#include "scene/SceneEnums.h"
 
 #include <cmath>
 #include <cstdio>
@@ -50,7 +51,8 @@ bool isSssPass(const std::string& passName) {
 }
 
 void markParetoFronts(std::vector<BenchRow>& rows) {
-    for (const char* mode : {"ss", "ts"}) {
+    for (const EnumEntry<SssMode>& entry : kSssModes) {
+        const std::string mode(entry.name);
         std::vector<size_t> members;
         std::vector<CostError> points;
         for (size_t i = 0; i < rows.size(); ++i) {
@@ -89,7 +91,8 @@ std::string passesCsv(const std::vector<BenchRow>& rows) {
 
 nlohmann::ordered_json benchSummary(const std::vector<BenchRow>& rows, double errorLimit) {
     nlohmann::ordered_json summary = nlohmann::ordered_json::object();
-    for (const char* mode : {"ss", "ts"}) {
+    for (const EnumEntry<SssMode>& entry : kSssModes) {
+        const std::string mode(entry.name);
         const BenchRow* defaultRow = nullptr;
         const BenchRow* best = nullptr;
         for (const BenchRow& row : rows) {

@@ -16,7 +16,7 @@ namespace dermis::bench {
 
 struct BenchRow {
     int id = 0;
-    std::string mode;   // "ss" or "ts"
+    std::string mode;   // a name from kSssModes
     std::string label;  // the swept values, "default" for the shipped settings
     bool isDefault = false;
     bool onParetoFront = false;  // within its mode

@@ -1,5 +1,7 @@
 #include "bench/SweepSpec.h"
 
+#include "scene/JsonReader.h"
+#include "scene/SceneEnums.h"
 #include "scene/SceneOverrides.h"
 
 #include <cerrno>
@@ -13,9 +15,18 @@ const char* const kDefaultSweepSpec =
     "ss:transmittance.enabled=true,false;"
     "ts:ts.min_size+ts.max_size=256,512,1024;ts:ts.taps=3,7,13;ts:ts.tsm=true,false";
 
+std::string modePrefixSyntax() { return "[" + kSssModes.list(":|") + ":]"; }
+
 namespace {
 
-const char* const kModes[] = {"ss", "ts"};
+// "ss: or ts:" and "[ss:|ts:]": the axis prefixes, from the table of modes.
+std::string modePrefixes() {
+    std::vector<std::string> prefixes = kSssModes.names();
+    for (std::string& prefix : prefixes) prefix += ':';
+    return listForMessage(prefixes, "or");
+}
+
+std::string axisSyntax() { return modePrefixSyntax() + "KEY=VALUE,VALUE,..."; }
 
 std::vector<std::string> split(const std::string& text, char separator) {
     std::vector<std::string> parts;
@@ -47,7 +58,7 @@ Result<double> parseScale(const std::string& where, const std::string& text) {
 Status checkKey(const std::string& where, const std::string& key) {
     if (key == kScaleKey) return success();
     if (key == "mode" || key == "settings.mode")
-        return makeError(where, "the mode is not a key: prefix an axis with ss: or ts: instead");
+        return makeError(where, "the mode is not a key: prefix an axis with " + modePrefixes() + " instead");
     auto change = parseSceneOverride(key + "=0");
     if (!change.ok()) return makeError(where, "'" + key + "' is not a settings path");
     if (change->path.empty() || change->path.front() != "settings")
@@ -63,11 +74,11 @@ Result<SweepAxis> parseAxis(const std::string& text) {
     const size_t equals = body.find('=');
     if (colon != std::string::npos && (equals == std::string::npos || colon < equals)) {
         axis.mode = trim(body.substr(0, colon));
-        if (axis.mode != "ss" && axis.mode != "ts") return makeError(where, "the mode prefix must be ss: or ts:");
+        if (!kSssModes.parse(axis.mode)) return makeError(where, "the mode prefix must be " + modePrefixes());
         body = body.substr(colon + 1);
     }
     const size_t eq = body.find('=');
-    if (eq == std::string::npos) return makeError(where, "expected [ss:|ts:]KEY=VALUE,VALUE,...");
+    if (eq == std::string::npos) return makeError(where, "expected " + axisSyntax());
     for (const std::string& key : split(body.substr(0, eq), '+')) {
         const std::string k = trim(key);
         if (k.empty()) return makeError(where, "empty key");
@@ -114,7 +125,7 @@ Result<std::vector<SweepAxis>> parseSweepSpec(const std::string& spec) {
         if (!axis.ok()) return axis.error();
         axes.push_back(std::move(*axis));
     }
-    if (axes.empty()) return makeError("--sweep", "the sweep has no axes (expected [ss:|ts:]KEY=VALUE,... separated by ';')");
+    if (axes.empty()) return makeError("--sweep", "the sweep has no axes (expected " + axisSyntax() + " separated by ';')");
     return axes;
 }
 
@@ -122,7 +133,8 @@ Result<std::vector<SweepConfig>> expandSweep(const std::vector<SweepAxis>& axes)
     bool named = false;
     for (const SweepAxis& axis : axes) named = named || !axis.mode.empty();
     std::vector<SweepConfig> configs;
-    for (const char* mode : kModes) {
+    for (const EnumEntry<SssMode>& entry : kSssModes) {
+        const std::string mode(entry.name);
         std::vector<const SweepAxis*> applying;
         bool modeNamed = false;
         for (const SweepAxis& axis : axes) {
@@ -141,7 +153,7 @@ Result<std::vector<SweepConfig>> expandSweep(const std::vector<SweepAxis>& axes)
         for (size_t n = 0; n < count; ++n) {
             SweepConfig config;
             config.mode = mode;
-            config.overrides.push_back(std::string("mode=") + mode);
+            config.overrides.push_back("mode=" + mode);
             for (size_t a = 0; a < applying.size(); ++a) {
                 const SweepAxis& axis = *applying[a];
                 const std::string& value = axis.values[digit[a]];

@@ -24,16 +24,12 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
                             int slot, bool horizontal) {
     const SssSettings& settings = frame.plan.scene->settings.sss;
     gpu::SssBlurBlock block{};
-    for (size_t i = 0; i < kernel.weights.size(); ++i) {
-        block.kernel[i] = glm::vec4(kernel.offsetsSigma[i], kernel.weights[i], 0.0f, 0.0f);
-    }
+    const int taps = writeKernelTaps(kernel, block.kernel);
     // The discrete kernel's own variance is a little more than 1 sigma^2, so
     // its offsets are scaled for the step to blur by exactly stepVarianceMm2.
     const float sigmaMm = std::sqrt(step.stepVarianceMm2 / kernelVarianceSigma2(kernel));
-    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(kernel.weights.size()));
-    const std::string edges = sssBlurEdges(settings);
-    const float mode = edges == "control" ? 1.0f : edges == "fetch-only" ? 2.0f : 0.0f;
-    block.edges = glm::vec4(mode, settings.bilateralDepthMm,
+    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(taps));
+    block.edges = glm::vec4(float(sssBlurEdges(settings)), settings.bilateralDepthMm,
                             settings.controlDepthScalePerMm, float(slot));
     return block;
 }

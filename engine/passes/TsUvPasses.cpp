@@ -197,7 +197,6 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
                                                 graph::TextureHandle dilated) {
     const BlurKernel& kernel = frame.plan.tsKernel;
     std::vector<graph::TextureHandle> textures;
-    const size_t taps = std::min<size_t>(kernel.weights.size(), DERMIS_MAX_BLUR_TAPS);
     const float kernelVariance = kernelVarianceSigma2(kernel);
     for (const TsStep& step : plan.steps) {
         const std::string name = tsPassName(plan, "g" + std::to_string(step.gaussian));
@@ -205,7 +204,7 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
         // The kernel's own variance is a little over 1 sigma^2 (BlurKernel.h), so
         // sigma is scaled for the step to blur by exactly its variance.
         gpu::TextureSpaceBlock block = textureSpaceBlock(frame, plan);
-        for (size_t k = 0; k < taps; ++k) block.kernel[k] = glm::vec4(kernel.offsetsSigma[k], kernel.weights[k], 0.0f, 0.0f);
+        const int taps = writeKernelTaps(kernel, block.kernel);
         const float sigmaMm = std::sqrt(std::max(step.stepVarianceMm2, 0.0f) / kernelVariance);
         char narrow[96];
         std::snprintf(narrow, sizeof narrow, "%.2f texels wide where the layout is densest (under %.2f)",

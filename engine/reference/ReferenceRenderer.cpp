@@ -68,7 +68,7 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
         renderer.mIntegrators.emplace_back();
-        if (!sss.enabled || character.material.profile == "none") continue;
+        if (!sss.enabled || character.material.profile == kOpaqueProfile) continue;
         auto profile = findProfile(character.material.profile);
         if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
         if (!(sss.widthScale > 0.0f)) continue;  // no width: every Gaussian is a delta, the local case

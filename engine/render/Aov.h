@@ -1,38 +1,50 @@
 #pragma once
-// Arbitrary output variables: what `dermis render --aov` writes. Ids match
-// the AOV_* defines in shaders/aov.frag.
+// Arbitrary output variables: what `dermis render --aov` writes. Ids are the
+// DERMIS_AOV_* constants the aov pass's shader reads
+// (shaders/include/SharedConstants.glsl).
 
-#include <optional>
-#include <string>
-#include <string_view>
+#include "core/EnumTable.h"
+#include "include/SharedConstants.glsl"
 
 namespace dermis {
 
 enum class Aov {
-    Final = 0,
-    Albedo = 1,
-    Normal = 2,
-    Depth = 3,
-    Diffuse = 4,
-    Specular = 5,
-    Irradiance = 6,
-    Ao = 7,
-    Transmittance = 8,
-    Thickness = 9,
-    Object = 10,
+    Final = DERMIS_AOV_FINAL,
+    Albedo = DERMIS_AOV_ALBEDO,
+    Normal = DERMIS_AOV_NORMAL,
+    Depth = DERMIS_AOV_DEPTH,
+    Diffuse = DERMIS_AOV_DIFFUSE,
+    Specular = DERMIS_AOV_SPECULAR,
+    Irradiance = DERMIS_AOV_IRRADIANCE,
+    Ao = DERMIS_AOV_AO,
+    Transmittance = DERMIS_AOV_TRANSMITTANCE,
+    Thickness = DERMIS_AOV_THICKNESS,
+    Object = DERMIS_AOV_OBJECT,
     // Texture-space mode's UV-space textures of the first SSS character on
     // screen (passes/TextureSpacePasses.h, addTsAovPasses), in either mode.
-    Stretch = 11,
-    IrradianceTexture = 12,
+    Stretch = DERMIS_AOV_STRETCH,
+    IrradianceTexture = DERMIS_AOV_IRRADIANCE_TEXTURE,
 };
 
-std::optional<Aov> parseAov(std::string_view name);
-std::string_view aovName(Aov aov);
-std::string aovNameList();  // "final|albedo|..." for help and errors
-// What the AOV holds and in which unit, one line, for help texts.
-std::string_view aovDescription(Aov aov);
-// One "name  description" line per AOV, each line starting with `indent`.
-std::string aovHelpLines(std::string_view indent);
+// Names and one-line descriptions (what the AOV holds and in which unit) for
+// the command line, help texts and the viewer.
+inline constexpr EnumTable<Aov, 13> kAovs{
+    "AOV",
+    {{{Aov::Final, "final", "the tone-mapped frame (sRGB)"},
+      {Aov::Albedo, "albedo", "surface albedo"},
+      {Aov::Normal, "normal", "world-space normal"},
+      {Aov::Depth, "depth", "view depth in metres"},
+      {Aov::Diffuse, "diffuse", "after SSS, times albedo^(1-mix)"},
+      {Aov::Specular, "specular", "specular light"},
+      {Aov::Irradiance, "irradiance", "diffuse irradiance before SSS"},
+      {Aov::Ao, "ao", "ambient occlusion"},
+      {Aov::Transmittance, "transmittance", "back-lit light through thin regions"},
+      {Aov::Thickness, "thickness", "mm, through the first back light"},
+      {Aov::Object, "object", "character index + 1, 0 for the background"},
+      {Aov::Stretch, "stretch", "stretch map: mm per UV unit, u red, v green"},
+      {Aov::IrradianceTexture, "irradiance-texture", "irradiance texture, before the blurs"}}}};
+static_assert(kAovs.isOneToOne(), "every AOV and every name appears once");
+
 // The AOV shows a UV layout, not the frame: the unit UV square, as large as
 // the frame allows and centred (letterboxed), v upwards.
 bool aovIsUvLayout(Aov aov);

@@ -16,8 +16,8 @@
 namespace dermis {
 
 // Texture units every fullscreen pass agrees on for shared tables.
-constexpr GLuint kBeckmannUnit = 14;
-constexpr GLuint kEnergyUnit = 15;
+constexpr GLuint kBeckmannUnit = DERMIS_UNIT_BECKMANN;
+constexpr GLuint kEnergyUnit = DERMIS_UNIT_ENERGY;
 
 constexpr size_t kMaxPassBlockBytes = 4096;
 

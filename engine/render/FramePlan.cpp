@@ -61,7 +61,7 @@ std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeomet
     for (size_t c = 0; c < plan.characters.size(); ++c) {
         TsCharacterInput input;
         input.worldBounds = plan.characters[c].worldBounds;
-        if (scene.characters[c].material.profile != "none") {
+        if (scene.characters[c].material.profile != kOpaqueProfile) {
             const UvLayout& layout = geometry.uvLayout(c);
             const float mmPerUnit = glm::length(glm::vec3(plan.characters[c].worldFromObject[0])) * 1000.0f;
             input.mmPerUv = layout.medianStretch * mmPerUnit;
@@ -121,7 +121,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     markBackLights(scene, plan);
     planShadows(scene, shadows, plan);
 
-    const bool textureSpaceMode = scene.settings.mode == "ts";
+    const bool textureSpaceMode = scene.settings.mode == SssMode::TextureSpace;
     if (!textureSpaceMode) {
         if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
             return kernel.error();

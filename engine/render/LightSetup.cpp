@@ -24,10 +24,8 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBoun
         const Light& light = lights[static_cast<size_t>(i)];
         gpu::GpuLight& g = setup.block.lights[i];
         const glm::vec3 direction = glm::normalize(light.direction);
-        int type = DERMIS_LIGHT_DIRECTIONAL;
+        const int type = static_cast<int>(light.type);  // DERMIS_LIGHT_* (scene/SceneEnums.h)
         glm::vec3 positionM = light.positionM;
-        if (light.type == LightType::Spot) type = DERMIS_LIGHT_SPOT;
-        if (light.type == LightType::Point) type = DERMIS_LIGHT_POINT;
         if (type == DERMIS_LIGHT_DIRECTIONAL) positionM = centre - direction * (radiusM * 2.0f);
 
         g.radiance = glm::vec4(light.colour * light.intensity, 0.0f);
@@ -55,7 +53,7 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBoun
             texelM = 2.0f * std::tan(halfAngleRad) / float(shadows.mapSize);  // per metre of depth
         }
         g.shadowClipFromWorld = clipFromLight * lightFromWorld;
-        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, texelM, shadows.filter == "poisson" ? 1.0f : 0.0f);
+        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, texelM, float(shadows.filter));
         g.shadowDepth = glm::vec4(nearM, farM, type == DERMIS_LIGHT_DIRECTIONAL ? 1.0f : 0.0f, 0.0f);
         g.directionShadow.w = float(setup.shadowedLights.size());
         setup.shadowedLights.push_back(i);

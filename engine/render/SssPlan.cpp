@@ -60,7 +60,7 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
     plan.slotOfCharacter.assign(scene.characters.size(), 0);
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
-        if (character.material.profile == "none") continue;
+        if (character.material.profile == kOpaqueProfile) continue;
         auto profile = findProfile(character.material.profile);
         if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
         auto existing = std::find_if(plan.slots.begin(), plan.slots.end(),

@@ -2,11 +2,11 @@
 
 namespace dermis {
 
-bool frameUsesLean(const RenderSettings& settings) { return settings.mode == "ss" && settings.sss.variant != "c"; }
+bool frameUsesLean(const RenderSettings& settings) { return settings.mode == SssMode::ScreenSpace && settings.sss.variant != SssVariant::C; }
 
-std::string sssBlurEdges(const SssSettings& settings) {
-    if (settings.blur != "variant") return settings.blur;
-    return settings.variant == "lbb" ? "bilateral" : "control";
+SssBlur sssBlurEdges(const SssSettings& settings) {
+    if (settings.blur != SssBlur::Variant) return settings.blur;
+    return settings.variant == SssVariant::Lbb ? SssBlur::Bilateral : SssBlur::Control;
 }
 
 float sssMomentWeight(const glm::vec3& rgb) { return (rgb.r + rgb.g + rgb.b) / 3.0f; }

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 001's three versions of the screen-space frame (§5.1), as the render
+// Vila Verde 2015's three versions of the screen-space frame (§5.1), as the render
 // graph reads them from SssSettings:
 //
 //   variant  blur edges  specular                               LEAN targets
@@ -7,8 +7,8 @@
 //   lcb      control     LEAN lobe from the blurred moments      G-buffer, blurred with the irradiance
 //   lbb      bilateral   LEAN lobe from the blurred moments      G-buffer, blurred with the irradiance
 //
-// SssSettings::blur names the edge handling when it is not "variant" (a
-// benchmark's fetch-only floor, or a mix the seed did not try).
+// SssSettings::blur names the edge handling when it is not SssBlur::Variant
+// (a benchmark's fetch-only floor, or a mix the thesis did not try).
 
 #include "scene/Scene.h"
 
@@ -28,8 +28,8 @@ constexpr size_t kLeanSssTargets = 1;
 // LEAN specular pass): variants lcb and lbb of the screen-space mode.
 bool frameUsesLean(const RenderSettings& settings);
 
-// The blur's edge handling: "bilateral", "control" or "fetch-only".
-std::string sssBlurEdges(const SssSettings& settings);
+// The blur's edge handling: Bilateral, Control or FetchOnly (never Variant).
+SssBlur sssBlurEdges(const SssSettings& settings);
 
 // The scalar weight the LEAN moments receive for a Gaussian whose RGB weight
 // is `rgb`: the mean of the channels. Why (shaders/include/SssBlur.glsl):

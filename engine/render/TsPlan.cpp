@@ -120,7 +120,7 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
     for (const Character& character : scene.characters) labelUses[character.name]++;
     for (size_t c = 0; c < scene.characters.size() && c < inputs.size(); ++c) {
         const Character& character = scene.characters[c];
-        if (character.material.profile == "none") continue;
+        if (character.material.profile == kOpaqueProfile) continue;
         auto profile = findProfile(character.material.profile);
         if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
 

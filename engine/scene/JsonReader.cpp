@@ -280,7 +280,7 @@ bool JsonContext::check(bool condition, const std::string& pointer, const std::s
 }
 
 JsonObject::JsonObject(JsonContext& context, const json& value, std::string pointer,
-                       std::initializer_list<const char*> known)
+                       const std::vector<std::string>& known)
     : mContext(context), mPointer(std::move(pointer)) {
     if (mContext.failed()) {
         return;
@@ -291,14 +291,13 @@ JsonObject::JsonObject(JsonContext& context, const json& value, std::string poin
     }
     for (const auto& item : value.items()) {
         bool isKnown = false;
-        for (const char* name : known) {
+        for (const std::string& name : known) {
             isKnown = isKnown || item.key() == name;
         }
         if (!isKnown) {
-            std::vector<std::string> names(known.begin(), known.end());
             mContext.fail(
                 mPointer + "/" + jsonPointerSegment(item.key()),
-                "unknown key " + quoteForMessage(item.key()) + " (known: " + listForMessage(names, "and") + ")");
+                "unknown key " + quoteForMessage(item.key()) + " (known: " + listForMessage(known, "and") + ")");
             return;
         }
     }

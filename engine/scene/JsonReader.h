@@ -84,7 +84,7 @@ private:
 class JsonObject {
 public:
     JsonObject(JsonContext& context, const nlohmann::json& value, std::string pointer,
-               std::initializer_list<const char*> known);
+               const std::vector<std::string>& known);
 
     bool has(const char* key) const;
     std::string pointer(const char* key) const { return mPointer + "/" + jsonPointerSegment(key); }

@@ -4,9 +4,13 @@
 // metres for world space; each character's mesh is in its own units, scaled by
 // metresPerUnit. Angles in the file are degrees.
 
+#include "core/Limits.h"
+#include "scene/SceneEnums.h"
+
 #include <glm/glm.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace dermis {
@@ -19,8 +23,6 @@ struct Camera {
     float nearM = 0.05f;
     float farM = 50.0f;
 };
-
-enum class LightType { Directional, Spot, Point };
 
 struct Light {
     LightType type = LightType::Directional;
@@ -46,6 +48,9 @@ struct MeshSource {
     std::string gltfPath;    // .gltf or .glb, absolute or relative to the scene file
 };
 
+// Material::profile of an opaque material (no subsurface scattering).
+inline constexpr std::string_view kOpaqueProfile = "none";
+
 struct Material {
     // Maps: a path (relative to the scene file) or empty. An empty albedo or
     // normal map on a procedural mesh means "the procedural one" when
@@ -63,7 +68,7 @@ struct Material {
 // Per-character SSAO overrides (seed 003 §3: radius and sample count per object).
 struct CharacterSsao {
     float radiusM = 0.0f;  // world-space hemisphere radius; 0 = use settings.ssao.radius_m
-    int samples = 0;       // 8..128; 0 = use settings.ssao.samples
+    int samples = 0;       // kMinSsaoSamples..kMaxSsaoSamples; 0 = use settings.ssao.samples
 };
 
 struct Character {
@@ -82,14 +87,9 @@ struct Background {
 // Screen-space SSS (DESIGN.md pass 5; seed 000 §2.2.4, seed 001 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
-    // Seed 001's three variants of the frame (§5.1): "c" (Jimenez: KS specular from the unblurred normal, control
-    // blur), "lcb" (LEAN specular from moments blurred with the irradiance, control blur) or "lbb" (LEAN, bilateral
-    // blur). See render/SssVariant.h.
-    std::string variant = "lbb";
-    std::string blur = "variant";       // "variant" (the variant's: control for c and lcb, bilateral for lbb),
-                                         // "bilateral" (depth-weighted taps), "control" (Jimenez's lerp to centre),
-                                         // or "fetch-only" (same fetches, no weighting: the benchmarks' bandwidth floor)
-    int taps = 9;                        // taps per direction, odd, 3..33
+    SssVariant variant = SssVariant::Lbb;  // Vila Verde 2015 §5.1 (kSssVariants; render/SssVariant.h)
+    SssBlur blur = SssBlur::Variant;        // edge handling (kSssBlurs)
+    int taps = 9;                        // taps per direction, odd, kMinBlurTaps..kMaxBlurTaps
     float bilateralDepthMm = 1.0f;       // std dev of the Gaussian in tap-to-centre depth difference (mm)
     float controlDepthScalePerMm = 0.5f;  // control: lerp to centre by min(1, scale * |depth difference| in mm)
     int gaussians = 6;                   // use at most this many of each profile's Gaussians (the widest are dropped)
@@ -108,22 +108,22 @@ struct TransmittanceSettings {
 // Screen-space ambient occlusion (seed 003 §3): a normal-oriented hemisphere.
 struct SsaoSettings {
     bool enabled = true;
-    int samples = 16;       // 8..128 (per-character override: Character::ssao)
+    int samples = 16;       // kMinSsaoSamples..kMaxSsaoSamples (per-character override: Character::ssao)
     float radiusM = 0.02f;  // world-space radius (per-character override)
     float strength = 1.0f;  // AO = 1 - strength * occlusion
     bool blur = true;       // bilateral blur of the raw AO
 };
 
 struct ShadowSettings {
-    int mapSize = 1024;
+    int mapSize = 1024;              // kMinShadowMapSize..kMaxShadowMapSize
     float biasConstantM = 0.0005f;   // constant depth bias, metres along the light's axis
     float biasSlopeTexels = 2.0f;    // slope-scaled bias: this many shadow texels times tan(angle to the light)
-    std::string filter = "pcf4x4";   // "pcf4x4" (seed 000) or "poisson" (seed 003)
+    ShadowFilter filter = ShadowFilter::Pcf4x4;  // kShadowFilters
 };
 
 // Texture-space SSS (d'Eon & Luebke, seed 000 §2.2-§2.8; DESIGN.md "Texture-space mode").
 struct TextureSpaceSettings {
-    int taps = 7;              // taps per 1-D blur pass (seed 000 §2.2.4 uses seven), odd, 3..33
+    int taps = 7;              // taps per 1-D blur pass (Chappuis 2011 §2.2.4 uses seven), odd, kMinBlurTaps..kMaxBlurTaps
     int minSize = 256;         // irradiance texture side in texels, a power of two: the screen coverage
     int maxSize = 2048;        // picks a power of two within [minSize, maxSize]
     bool tsm = true;           // modified translucent shadow map: light through thin regions (seed 000 §2.5)
@@ -134,7 +134,7 @@ struct TextureSpaceSettings {
 
 // Settings of the frame itself.
 struct RenderSettings {
-    std::string mode = "ss";   // "ss": screen-space SSS chain; "ts": texture-space (DESIGN.md)
+    SssMode mode = SssMode::ScreenSpace;  // kSssModes
     float exposure = 1.0f;
     glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
     bool energyConservation = true;  // seed 000 §2.6: diffuse x (1 - rho_s rho_dt) in and out

@@ -1,7 +1,9 @@
 #include "scene/SceneLoader.h"
 
+#include "core/Limits.h"
 #include "scene/JsonReader.h"
 #include "scene/ScenePaths.h"
+#include "scene/SettingsFields.h"
 
 #include <cmath>
 #include <filesystem>
@@ -14,23 +16,12 @@ namespace {
 
 using nlohmann::json;
 
-constexpr size_t kMaxLights = 1024;
-constexpr size_t kMaxCharacters = 1024;
 // A direction within this of unit length is kept as written, so that a
 // direction the loader normalised reads back bit-identical (normalising twice
 // can move the last bit).
 constexpr double kUnitLengthTolerance = 1e-6;
 constexpr double kParallelTolerance = 1e-6;
 
-const std::vector<std::string> kLightTypes = {"directional", "spot", "point"};
-const std::vector<std::string> kShadowFilters = {"pcf4x4", "poisson"};
-const std::vector<std::string> kSssBlurs = {"variant", "bilateral", "control", "fetch-only"};
-const std::vector<std::string> kSssVariants = {"c", "lcb", "lbb"};
-const std::vector<std::string> kSssModes = {"ss", "ts"};
-constexpr int kMinTsSize = 64;
-constexpr int kMaxTsSize = 4096;
-constexpr int kMinSsaoSamples = 8;
-constexpr int kMaxSsaoSamples = 128;
 
 double length(const glm::vec3& v) {
     const double x = v.x, y = v.y, z = v.z;
@@ -39,6 +30,16 @@ double length(const glm::vec3& v) {
 
 glm::dvec3 normalised(const glm::vec3& v) {
     return glm::dvec3(v) / length(v);
+}
+
+// A name from `table`, stored as its enum value.
+template <typename E, size_t N>
+void choice(JsonObject& object, const char* key, const EnumTable<E, N>& table, E& out) {
+    int index = -1;
+    object.choice(key, std::string(table.noun()).c_str(), table.names(), index);
+    if (index >= 0) {
+        out = table.begin()[index].value;
+    }
 }
 
 void readCamera(JsonObject& root, Camera& camera) {
@@ -77,9 +78,7 @@ void readLight(JsonContext& context, const json& value, const std::string& point
     JsonObject object(
         context, value, pointer,
         {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow"});
-    int type = static_cast<int>(light.type);
-    object.choice("type", "light type", kLightTypes, type);
-    light.type = static_cast<LightType>(type);
+    choice(object, "type", kLightTypes, light.type);
     object.vec3("position_m", light.positionM);
     object.vec3("direction", light.direction);
     object.vec3("colour", light.colour, Range::atLeast(0.0));
@@ -207,122 +206,54 @@ void readBackground(JsonObject& root, Background& background) {
     object.vec3("colour", background.colour, Range::atLeast(0.0));
 }
 
-// A string from `options`, stored as that string.
-void choiceString(JsonObject& object, const char* key, const char* noun, const std::vector<std::string>& options,
-                  std::string& out) {
-    int index = 0;
-    object.choice(key, noun, options, index);
-    if (object.has(key)) {
-        out = options[static_cast<size_t>(index)];
-    }
-}
+// Reads the fields a visit lists (SettingsFields.h) from one JSON object.
+class FieldReader {
+public:
+    explicit FieldReader(JsonObject& object) : mObject(object) {}
 
-void readShadow(JsonObject& parent, ShadowSettings& shadow) {
-    const json* value = parent.member("shadow");
-    if (value == nullptr) {
-        return;
+    void number(const char* key, float& out, const Range& range) { mObject.number(key, out, range); }
+    void integer(const char* key, int& out, const Range& range) { mObject.integer(key, out, range); }
+    void rule(const char* key, int& out, const IntegerRule& rule) {
+        constrainedInteger(mObject, key, out, rule.valid, rule.requirement);
     }
-    JsonObject object(parent.context(), *value, parent.pointer("shadow"),
-                      {"map_size", "bias_constant_m", "bias_slope_texels", "filter"});
-    object.integer("map_size", shadow.mapSize, Range::closed(64.0, 8192.0));
-    object.number("bias_constant_m", shadow.biasConstantM, Range::atLeast(0.0));
-    object.number("bias_slope_texels", shadow.biasSlopeTexels, Range::atLeast(0.0));
-    choiceString(object, "filter", "shadow filter", kShadowFilters, shadow.filter);
-}
+    void boolean(const char* key, bool& out) { mObject.boolean(key, out); }
+    void vec3(const char* key, glm::vec3& out, const Range& range) { mObject.vec3(key, out, range); }
+    template <typename E, size_t N>
+    void choice(const char* key, const EnumTable<E, N>& table, E& out) {
+        dermis::choice(mObject, key, table, out);
+    }
+    // A nested object, read when present.
+    template <typename G, typename Visit>
+    void group(const char* key, G& out, Visit&& visit) {
+        const json* value = mObject.member(key);
+        if (value == nullptr) {
+            return;
+        }
+        JsonObject object(mObject.context(), *value, mObject.pointer(key), fieldKeys(out, visit));
+        FieldReader reader(object);
+        visit(out, reader);
+    }
 
-void readSss(JsonObject& parent, SssSettings& sss) {
-    const json* value = parent.member("sss");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("sss"),
-                      {"enabled", "variant", "blur", "taps", "bilateral_depth_mm", "control_depth_scale_per_mm",
-                       "gaussians", "width_scale", "min_width_px", "mix"});
-    object.boolean("enabled", sss.enabled);
-    choiceString(object, "variant", "SSS variant", kSssVariants, sss.variant);
-    choiceString(object, "blur", "SSS blur", kSssBlurs, sss.blur);
-    constrainedInteger(
-        object, "taps", sss.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
-        "must be an odd number of taps in [3, 33]");
-    object.number("bilateral_depth_mm", sss.bilateralDepthMm, Range::above(0.0));
-    object.number("control_depth_scale_per_mm", sss.controlDepthScalePerMm, Range::atLeast(0.0));
-    object.integer("gaussians", sss.gaussians, Range::closed(1.0, 8.0));
-    object.number("width_scale", sss.widthScale, Range::atLeast(0.0));
-    object.number("min_width_px", sss.minWidthPx, Range::atLeast(0.0));
-    object.number("mix", sss.mix, Range::closed(0.0, 1.0));
-}
-
-void readTransmittance(JsonObject& parent, TransmittanceSettings& transmittance) {
-    const json* value = parent.member("transmittance");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("transmittance"), {"enabled", "shrink_mm", "strength"});
-    object.boolean("enabled", transmittance.enabled);
-    object.number("shrink_mm", transmittance.shrinkMm, Range::atLeast(0.0));
-    object.number("strength", transmittance.strength, Range::atLeast(0.0));
-}
-
-void readSsao(JsonObject& parent, SsaoSettings& ssao) {
-    const json* value = parent.member("ssao");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("ssao"),
-                      {"enabled", "samples", "radius_m", "strength", "blur"});
-    object.boolean("enabled", ssao.enabled);
-    object.integer("samples", ssao.samples, Range::closed(kMinSsaoSamples, kMaxSsaoSamples));
-    object.number("radius_m", ssao.radiusM, Range::above(0.0));
-    object.number("strength", ssao.strength, Range::closed(0.0, 1.0));
-    object.boolean("blur", ssao.blur);
-}
-
-bool isTsSize(int size) {
-    return size >= kMinTsSize && size <= kMaxTsSize && (size & (size - 1)) == 0;
-}
-
-void readTextureSpace(JsonObject& parent, TextureSpaceSettings& ts) {
-    const json* value = parent.member("ts");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("ts"),
-                      {"taps", "min_size", "max_size", "tsm", "tsm_strength", "seam_blend"});
-    constrainedInteger(
-        object, "taps", ts.taps, [](int n) { return n >= 3 && n <= 33 && n % 2 == 1; },
-        "must be an odd number of taps in [3, 33]");
-    const std::string sizes =
-        "must be a power of two in [" + std::to_string(kMinTsSize) + ", " + std::to_string(kMaxTsSize) + "]";
-    constrainedInteger(object, "min_size", ts.minSize, isTsSize, sizes);
-    constrainedInteger(object, "max_size", ts.maxSize, isTsSize, sizes);
-    object.boolean("tsm", ts.tsm);
-    object.number("tsm_strength", ts.tsmStrength, Range::atLeast(0.0));
-    object.number("seam_blend", ts.seamBlend, Range::atLeast(0.0));
-    JsonContext& context = parent.context();
-    if (context.failed()) {
-        return;
-    }
-    context.check(ts.minSize <= ts.maxSize, object.pointer("min_size"),
-                  "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
-}
+private:
+    JsonObject& mObject;
+};
 
 void readSettings(JsonObject& root, RenderSettings& settings) {
     const json* value = root.member("settings");
     if (value == nullptr) {
         return;
     }
-    JsonObject object(root.context(), *value, root.pointer("settings"),
-                      {"exposure", "ambient", "energy_conservation", "mode", "shadow", "sss", "transmittance", "ssao",
-                       "ts"});
-    object.number("exposure", settings.exposure, Range::above(0.0));
-    object.vec3("ambient", settings.ambient, Range::atLeast(0.0));
-    object.boolean("energy_conservation", settings.energyConservation);
-    choiceString(object, "mode", "SSS mode", kSssModes, settings.mode);
-    readShadow(object, settings.shadow);
-    readSss(object, settings.sss);
-    readTransmittance(object, settings.transmittance);
-    readSsao(object, settings.ssao);
-    readTextureSpace(object, settings.ts);
+    const auto visit = [](auto& s, auto& v) { visitSettingsFields(s, v); };
+    JsonObject object(root.context(), *value, root.pointer("settings"), fieldKeys(settings, visit));
+    FieldReader reader(object);
+    visit(settings, reader);
+    JsonContext& context = root.context();
+    if (context.failed()) {
+        return;
+    }
+    const TextureSpaceSettings& ts = settings.ts;
+    context.check(ts.minSize <= ts.maxSize, object.pointer("ts") + "/min_size",
+                  "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
 }
 
 }  // namespace
@@ -334,13 +265,13 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
     JsonObject root(context, document, "", {"camera", "lights", "characters", "background", "settings"});
     readCamera(root, scene.camera);
 
-    if (const json* lights = root.array("lights", kMaxLights, "lights")) {
+    if (const json* lights = root.array("lights", kMaxSceneLights, "lights")) {
         scene.lights.resize(lights->size());
         for (size_t i = 0; i < lights->size() && !context.failed(); ++i) {
             readLight(context, (*lights)[i], root.pointer("lights") + "/" + std::to_string(i), scene.lights[i]);
         }
     }
-    if (const json* characters = root.array("characters", kMaxCharacters, "characters")) {
+    if (const json* characters = root.array("characters", kMaxSceneCharacters, "characters")) {
         scene.characters.resize(characters->size());
         for (size_t i = 0; i < characters->size() && !context.failed(); ++i) {
             readCharacter(context, (*characters)[i], root.pointer("characters") + "/" + std::to_string(i),

@@ -3,6 +3,7 @@
 #include "scene/SceneLoader.h"
 
 #include "scene/ScenePaths.h"
+#include "scene/SettingsFields.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,13 +34,9 @@ Json vec3(const glm::vec3& v) {
     return Json::array({number(v.x), number(v.y), number(v.z)});
 }
 
-const char* lightTypeName(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "directional";
-        case LightType::Spot: return "spot";
-        case LightType::Point: return "point";
-    }
-    return "directional";
+template <typename E, size_t N>
+Json name(const EnumTable<E, N>& table, E value) {
+    return Json(std::string(table.name(value)));
 }
 
 Json cameraJson(const Camera& camera) {
@@ -55,7 +52,7 @@ Json cameraJson(const Camera& camera) {
 
 Json lightJson(const Light& light) {
     Json j;
-    j["type"] = lightTypeName(light.type);
+    j["type"] = name(kLightTypes, light.type);
     j["position_m"] = vec3(light.positionM);
     j["direction"] = vec3(light.direction);
     j["colour"] = vec3(light.colour);
@@ -100,60 +97,36 @@ Json characterJson(const Character& character, const std::string& sceneFile) {
     return j;
 }
 
+// Writes the fields a visit lists (SettingsFields.h) into one JSON object.
+class FieldWriter {
+public:
+    explicit FieldWriter(Json& out) : mOut(out) {}
+
+    void number(const char* key, float value, const Range&) { mOut[key] = dermis::number(value); }
+    void integer(const char* key, int value, const Range&) { mOut[key] = value; }
+    void rule(const char* key, int value, const IntegerRule&) { mOut[key] = value; }
+    void boolean(const char* key, bool value) { mOut[key] = value; }
+    void vec3(const char* key, const glm::vec3& value, const Range&) { mOut[key] = dermis::vec3(value); }
+    template <typename E, size_t N>
+    void choice(const char* key, const EnumTable<E, N>& table, E value) {
+        mOut[key] = name(table, value);
+    }
+    template <typename G, typename Visit>
+    void group(const char* key, const G& group, Visit&& visit) {
+        Json object;
+        FieldWriter writer(object);
+        visit(group, writer);
+        mOut[key] = std::move(object);
+    }
+
+private:
+    Json& mOut;
+};
+
 Json settingsJson(const RenderSettings& settings) {
-    const ShadowSettings& shadow = settings.shadow;
-    Json shadowJson;
-    shadowJson["map_size"] = shadow.mapSize;
-    shadowJson["bias_constant_m"] = number(shadow.biasConstantM);
-    shadowJson["bias_slope_texels"] = number(shadow.biasSlopeTexels);
-    shadowJson["filter"] = shadow.filter;
-
-    const SssSettings& sss = settings.sss;
-    Json sssJson;
-    sssJson["enabled"] = sss.enabled;
-    sssJson["variant"] = sss.variant;
-    sssJson["blur"] = sss.blur;
-    sssJson["taps"] = sss.taps;
-    sssJson["bilateral_depth_mm"] = number(sss.bilateralDepthMm);
-    sssJson["control_depth_scale_per_mm"] = number(sss.controlDepthScalePerMm);
-    sssJson["gaussians"] = sss.gaussians;
-    sssJson["width_scale"] = number(sss.widthScale);
-    sssJson["min_width_px"] = number(sss.minWidthPx);
-    sssJson["mix"] = number(sss.mix);
-
-    const TransmittanceSettings& transmittance = settings.transmittance;
-    Json transmittanceJson;
-    transmittanceJson["enabled"] = transmittance.enabled;
-    transmittanceJson["shrink_mm"] = number(transmittance.shrinkMm);
-    transmittanceJson["strength"] = number(transmittance.strength);
-
-    const SsaoSettings& ssao = settings.ssao;
-    Json ssaoJson;
-    ssaoJson["enabled"] = ssao.enabled;
-    ssaoJson["samples"] = ssao.samples;
-    ssaoJson["radius_m"] = number(ssao.radiusM);
-    ssaoJson["strength"] = number(ssao.strength);
-    ssaoJson["blur"] = ssao.blur;
-
-    const TextureSpaceSettings& ts = settings.ts;
-    Json tsJson;
-    tsJson["taps"] = ts.taps;
-    tsJson["min_size"] = ts.minSize;
-    tsJson["max_size"] = ts.maxSize;
-    tsJson["tsm"] = ts.tsm;
-    tsJson["tsm_strength"] = number(ts.tsmStrength);
-    tsJson["seam_blend"] = number(ts.seamBlend);
-
     Json j;
-    j["exposure"] = number(settings.exposure);
-    j["ambient"] = vec3(settings.ambient);
-    j["energy_conservation"] = settings.energyConservation;
-    j["mode"] = settings.mode;
-    j["shadow"] = std::move(shadowJson);
-    j["sss"] = std::move(sssJson);
-    j["transmittance"] = std::move(transmittanceJson);
-    j["ssao"] = std::move(ssaoJson);
-    j["ts"] = std::move(tsJson);
+    FieldWriter writer(j);
+    visitSettingsFields(settings, writer);
     return j;
 }
 

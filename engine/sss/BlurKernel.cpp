@@ -1,5 +1,6 @@
 #include "sss/BlurKernel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,6 +11,12 @@ namespace {
 double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 }  // namespace
+
+int writeKernelTaps(const BlurKernel& kernel, glm::vec4 (&taps)[kMaxBlurTaps]) {
+    const size_t count = std::min(kernel.weights.size(), size_t(kMaxBlurTaps));
+    for (size_t i = 0; i < count; ++i) taps[i] = glm::vec4(kernel.offsetsSigma[i], kernel.weights[i], 0.0f, 0.0f);
+    return static_cast<int>(count);
+}
 
 Result<BlurKernel> makeGaussianKernel(int taps, float extentSigma) {
     if (taps < kMinBlurTaps || taps > kMaxBlurTaps || taps % 2 == 0)

@@ -1,5 +1,7 @@
 #include "sss/EnergyTable.h"
 
+#include "include/SharedConstants.glsl"
+
 #include "render/BeckmannTable.h"
 
 #include <algorithm>
@@ -12,8 +14,8 @@ namespace dermis {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Schlick's F0 for skin (seed 000 §2.3); the same constant as kSkinF0 in shaders/include/Specular.glsl.
-constexpr double kSkinF0 = 0.028;
+// Schlick's F0 for skin (Chappuis 2011 §2.3), shared with shaders/include/Specular.glsl.
+constexpr double kSkinF0 = DERMIS_SKIN_F0;
 // beckmannPH's own floor on m, so rhoDt integrates the lobe that ksSpecular evaluates.
 constexpr double kMinRoughness = 1e-3;
 

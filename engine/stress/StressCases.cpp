@@ -43,7 +43,7 @@ Character makeCharacter(Dice& dice, const std::string& assets, int index, std::s
     c.transform.translationM = glm::vec3(dice.uniform(-0.2f, 0.2f), dice.uniform(-0.1f, 0.1f), dice.uniform(-0.2f, 0.2f));
     c.transform.rotationDeg = glm::vec3(dice.uniform(-180, 180), dice.uniform(-180, 180), dice.uniform(-180, 180));
     c.transform.scale = dice.pick<float>({1.0f, 1.0f, 0.01f, 5.0f});
-    c.material.profile = dice.pick<std::string>({"skin", "skin", "marble", "none"});
+    c.material.profile = dice.pick<std::string>({"skin", "skin", "marble", std::string(kOpaqueProfile)});
     c.material.roughness = dice.pick<float>({1e-6f, 0.05f, 0.3f, 1.0f});
     c.material.rhoS = dice.pick<float>({0.0f, 0.18f, 1.0f});
     if (dice.chance(0.15)) {
@@ -58,7 +58,7 @@ Character makeCharacter(Dice& dice, const std::string& assets, int index, std::s
 
 Light makeLight(Dice& dice, std::string& description) {
     Light light;
-    light.type = dice.pick<LightType>({LightType::Directional, LightType::Spot, LightType::Point});
+    light.type = dice.pick<LightType>(kLightTypes.values());
     light.direction = dice.direction();
     light.positionM = dice.direction() * dice.uniform(0.05f, 2.0f);
     light.colour = glm::vec3(dice.uniform(0, 1), dice.uniform(0, 1), dice.uniform(0, 1));
@@ -116,9 +116,9 @@ StressCase makeStressCase(uint64_t seed, const std::string& assets) {
     s.shadow.mapSize = dice.pick<int>({64, 512, 2048});
     s.shadow.biasConstantM = dice.pick<float>({0.0f, 0.0005f, 1.0f});
     s.shadow.biasSlopeTexels = dice.pick<float>({0.0f, 2.0f, 1e3f});
-    s.shadow.filter = dice.pick<std::string>({"pcf4x4", "poisson"});
+    s.shadow.filter = dice.pick<ShadowFilter>(kShadowFilters.values());
     s.sss.enabled = dice.chance(0.9);
-    s.sss.blur = dice.pick<std::string>({"bilateral", "control", "fetch-only"});
+    s.sss.blur = dice.pick<SssBlur>({SssBlur::Bilateral, SssBlur::Control, SssBlur::FetchOnly});
     s.sss.taps = 2 * dice.pick<int>({1, 2, 3, 4, 6, 8, 16}) + 1;
     s.sss.bilateralDepthMm = dice.pick<float>({1e-4f, 1.0f, 1e4f});
     s.sss.controlDepthScalePerMm = dice.pick<float>({0.0f, 0.5f, 1e4f});

@@ -11,15 +11,7 @@ constexpr float kStretchDisplayMaxMm = 1000.0f;
 const std::vector<AovChoice>& aovChoices() {
     static const std::vector<AovChoice> kChoices = [] {
         std::vector<AovChoice> choices;
-        const std::string list = aovNameList();
-        size_t start = 0;
-        while (start <= list.size()) {
-            size_t end = list.find('|', start);
-            if (end == std::string::npos) end = list.size();
-            const std::string name = list.substr(start, end - start);
-            if (auto aov = parseAov(name)) choices.push_back({*aov, name});
-            start = end + 1;
-        }
+        for (const EnumEntry<Aov>& entry : kAovs) choices.push_back({entry.value, std::string(entry.name)});
         return choices;
     }();
     return kChoices;

@@ -1,5 +1,6 @@
 #include "viewer/JsonFields.h"
 
+#include "viewer/PanelWidgets.h"
 #include "viewer/SceneJson.h"
 
 #include <imgui.h>
@@ -17,10 +18,10 @@ using nlohmann::json;
 // String keys whose values are one of a few words: a combo rather than a text field.
 const std::map<std::string, std::vector<std::string>>& knownChoices() {
     static const std::map<std::string, std::vector<std::string>> kChoices = {
-        {"/settings/mode", {"ss", "ts"}},
-        {"/settings/sss/variant", {"c", "lcb", "lbb"}},
-        {"/settings/sss/blur", {"variant", "bilateral", "control", "fetch-only"}},
-        {"/settings/shadow/filter", {"pcf4x4", "poisson"}},
+        {"/settings/mode", kSssModes.names()},
+        {"/settings/sss/variant", kSssVariants.names()},
+        {"/settings/sss/blur", kSssBlurs.names()},
+        {"/settings/shadow/filter", kShadowFilters.names()},
     };
     return kChoices;
 }
@@ -28,20 +29,6 @@ const std::map<std::string, std::vector<std::string>>& knownChoices() {
 bool isVector3(const json& value) {
     return value.is_array() && value.size() == 3 &&
            std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_number(); });
-}
-
-bool comboOf(const char* label, std::string& value, const std::vector<std::string>& choices) {
-    bool changed = false;
-    if (ImGui::BeginCombo(label, value.c_str())) {
-        for (const std::string& choice : choices) {
-            if (ImGui::Selectable(choice.c_str(), choice == value) && choice != value) {
-                value = choice;
-                changed = true;
-            }
-        }
-        ImGui::EndCombo();
-    }
-    return changed;
 }
 
 // Draws one value; on a change, writes the new value into `edited` and its pointer into `where`.
@@ -66,7 +53,7 @@ void field(const std::string& key, const std::string& pointer, const json& value
         std::string v = value.get<std::string>();
         const auto choices = knownChoices().find(pointer);
         const bool changed = choices != knownChoices().end()
-                                 ? comboOf(label, v, choices->second)
+                                 ? widgets::comboString(label, v, choices->second)
                                  : ImGui::InputText(label, &v, ImGuiInputTextFlags_EnterReturnsTrue);
         if (changed) commit(v);
     } else if (isVector3(value)) {
@@ -120,7 +107,7 @@ bool jsonChoice(Scene& scene, const std::string& pointer, const char* label, std
     const json::json_pointer at(pointer);
     if (!document.contains(at) || !document.at(at).is_string()) return false;
     std::string value = document.at(at).get<std::string>();
-    if (!comboOf(label, value, choices)) return false;
+    if (!widgets::comboString(label, value, choices)) return false;
     if (const Status set = setSceneValue(scene, pointer, value); !set.ok()) {
         error = set.error().message();
         return false;

@@ -4,6 +4,8 @@
 // file format allows (content/scenes/README.md), so the renderer never sees
 // a value the loader would have refused.
 
+#include "core/EnumTable.h"
+
 #include <glm/glm.hpp>
 
 #include <string>
@@ -12,6 +14,14 @@
 namespace dermis::viewer::widgets {
 
 bool comboString(const char* label, std::string& value, const std::vector<std::string>& options);
+// One value of a closed set, shown by its name from `table`.
+template <typename E, size_t N>
+bool comboEnum(const char* label, const EnumTable<E, N>& table, E& value) {
+    std::string name(table.name(value));
+    if (!comboString(label, name, table.names())) return false;
+    value = table.parse(name).value_or(value);
+    return true;
+}
 // An odd integer in [lo, hi] (SSS taps).
 bool sliderOdd(const char* label, int& value, int lo, int hi);
 // A float shown in millimetres, stored in metres.

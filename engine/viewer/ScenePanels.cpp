@@ -10,7 +10,6 @@
 namespace dermis::viewer {
 namespace {
 
-const char* const kLightTypes[] = {"directional", "spot", "point"};
 
 std::string characterLabel(const Character& character, size_t index) {
     return character.name.empty() ? "character " + std::to_string(index) : character.name;
@@ -18,11 +17,7 @@ std::string characterLabel(const Character& character, size_t index) {
 
 bool lightPanel(Light& light) {
     bool changed = false;
-    int type = static_cast<int>(light.type);
-    if (ImGui::Combo("type", &type, kLightTypes, IM_ARRAYSIZE(kLightTypes))) {
-        light.type = static_cast<LightType>(type);
-        changed = true;
-    }
+    changed |= widgets::comboEnum("type", kLightTypes, light.type);
     if (light.type != LightType::Directional) {
         changed |= ImGui::DragFloat3("position (m)", &light.positionM.x, 0.005f, -100.0f, 100.0f, "%.3f");
     }
@@ -48,7 +43,7 @@ bool lightsPanel(Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         Light& light = scene.lights[i];
         ImGui::PushID(static_cast<int>(i));
-        const std::string label = "light " + std::to_string(i) + " (" + kLightTypes[static_cast<int>(light.type)] + ")";
+        const std::string label = "light " + std::to_string(i) + " (" + std::string(kLightTypes.name(light.type)) + ")";
         if (ImGui::TreeNodeEx(label.c_str(), i == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
             changed |= lightPanel(light);
             ImGui::TreePop();

@@ -30,7 +30,7 @@ const std::vector<std::string> kTypedSettingsKeys = {"exposure", "ambient", "ene
 
 std::vector<std::string> profileChoices() {
     std::vector<std::string> names = profileNames();
-    names.push_back("none");
+    names.emplace_back(kOpaqueProfile);
     return names;
 }
 
@@ -39,7 +39,7 @@ std::vector<std::string> profileChoices() {
 bool shadowPanel(Scene& scene, std::string& error) {
     ShadowSettings& shadow = scene.settings.shadow;
     bool changed = false;
-    changed |= ImGui::SliderInt("map size", &shadow.mapSize, 64, 8192, "%d texels", kLogClamp);
+    changed |= ImGui::SliderInt("map size", &shadow.mapSize, kMinShadowMapSize, kMaxShadowMapSize, "%d texels", kLogClamp);
     changed |= widgets::sliderMetresAsMm("constant bias", shadow.biasConstantM, 0.0f, 10.0f);
     changed |= ImGui::SliderFloat("slope bias", &shadow.biasSlopeTexels, 0.0f, 10.0f, "%.2f texels", kClamp);
     widgets::help("Shadow-map texels (their world size at the point) times tan(angle to the light).");
@@ -56,15 +56,15 @@ bool sssPanel(Scene& scene, std::string& error) {
                   "Jimenez's lerp towards the centre (seed 001 3.2.2); fetch-only: the same fetches, unweighted "
                   "(the bandwidth floor, not a blur).");
     SssSettings& sss = scene.settings.sss;
-    changed |= widgets::sliderOdd("taps", sss.taps, 3, 33);
-    if (sss.blur == "bilateral") {
+    changed |= widgets::sliderOdd("taps", sss.taps, kMinBlurTaps, kMaxBlurTaps);
+    if (sss.blur == SssBlur::Bilateral) {
         changed |= ImGui::SliderFloat("depth sigma", &sss.bilateralDepthMm, 0.01f, 20.0f, "%.3f mm", kLogClamp);
         widgets::help("Bilateral sensitivity: std dev of the Gaussian in tap-to-centre depth difference. Smaller keeps edges sharper.");
-    } else if (sss.blur == "control") {
+    } else if (sss.blur == SssBlur::Control) {
         changed |= ImGui::SliderFloat("depth scale", &sss.controlDepthScalePerMm, 0.0f, 10.0f, "%.3f /mm", kClamp);
         widgets::help("A tap moves to the centre's value by min(1, scale x |depth difference in mm|).");
     }
-    changed |= ImGui::SliderInt("Gaussians used", &sss.gaussians, 1, 8, "%d", kClamp);
+    changed |= ImGui::SliderInt("Gaussians used", &sss.gaussians, 1, kMaxProfileGaussians, "%d", kClamp);
     widgets::help("The widest of each profile's Gaussians are dropped first.");
     changed |= ImGui::SliderFloat("width scale", &sss.widthScale, 0.0f, 4.0f, "%.3f", kClamp);
     changed |= ImGui::SliderFloat("min width", &sss.minWidthPx, 0.0f, 4.0f, "%.2f px", kClamp);
@@ -99,7 +99,7 @@ bool ssaoPanel(Scene& scene) {
     SsaoSettings& ssao = scene.settings.ssao;
     bool changed = false;
     changed |= ImGui::Checkbox("enabled", &ssao.enabled);
-    changed |= ImGui::SliderInt("samples", &ssao.samples, 8, 128, "%d", kClamp);
+    changed |= ImGui::SliderInt("samples", &ssao.samples, kMinSsaoSamples, kMaxSsaoSamples, "%d", kClamp);
     changed |= widgets::sliderMetresAsMm("radius", ssao.radiusM, 0.5f, 200.0f);
     changed |= ImGui::SliderFloat("strength", &ssao.strength, 0.0f, 1.0f, "%.2f", kClamp);
     changed |= ImGui::Checkbox("blur", &ssao.blur);
@@ -109,8 +109,8 @@ bool ssaoPanel(Scene& scene) {
         ImGui::PushID(static_cast<int>(i));
         ImGui::TextUnformatted(characterLabel(scene.characters[i], i).c_str());
         changed |= widgets::sliderMetresAsMm("radius##own", own.radiusM, 0.0f, 200.0f);
-        if (ImGui::SliderInt("samples##own", &own.samples, 0, 128, "%d", kClamp)) {
-            if (own.samples > 0 && own.samples < 8) own.samples = 8;  // 0 or 8..128
+        if (ImGui::SliderInt("samples##own", &own.samples, 0, kMaxSsaoSamples, "%d", kClamp)) {
+            if (own.samples > 0 && own.samples < kMinSsaoSamples) own.samples = kMinSsaoSamples;  // 0 or in range
             changed = true;
         }
         ImGui::PopID();

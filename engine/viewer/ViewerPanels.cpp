@@ -112,7 +112,7 @@ void viewPanel(ViewerState& state, Scene& a, Scene& b, const std::vector<SceneDi
     ImGui::RadioButton("difference", &mode, static_cast<int>(ViewMode::Difference));
     state.mode = static_cast<ViewMode>(mode);
 
-    const std::string current(aovName(state.aov));
+    const std::string current(kAovs.name(state.aov));
     if (ImGui::BeginCombo("AOV", current.c_str())) {
         for (const AovChoice& choice : aovChoices()) {
             const bool selected = choice.aov == state.aov;
@@ -125,7 +125,7 @@ void viewPanel(ViewerState& state, Scene& a, Scene& b, const std::vector<SceneDi
                   "square letterboxed, v up) in either mode; in screen-space mode only their own texture-space passes "
                   "run. Black when SSS is off or no SSS character is on screen.");
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", std::string(aovDescription(state.aov)).c_str());
+    ImGui::TextDisabled("%s", std::string(kAovs.description(state.aov)).c_str());
     ImGui::PopTextWrapPos();
     if (state.aovMapping.transform != DisplayTransform::AsStored) {
         const std::string label = std::string("display range") + (*state.aovMapping.unit ? " (" : "") +

@@ -72,7 +72,7 @@ bool isBackgroundKey(uint key) { return int(key >> DERMIS_KEY_DEPTH_BITS) == DER
 // Depth difference in mm between two keys; +infinity-like when they belong to
 // different slots (so every depth weight of it is 0).
 float keyDistanceMm(uint a, uint b) {
-    if ((a >> DERMIS_KEY_DEPTH_BITS) != (b >> DERMIS_KEY_DEPTH_BITS)) return 1e30;
+    if ((a >> DERMIS_KEY_DEPTH_BITS) != (b >> DERMIS_KEY_DEPTH_BITS)) return DERMIS_OTHER_PROFILE_DISTANCE_MM;
     int units = int(a & kKeyDepthMask) - int(b & kKeyDepthMask);
     return float(abs(units)) * (1000.0 / DERMIS_KEY_UNITS_PER_M);
 }

@@ -6,10 +6,10 @@
 // stored occluder depth. The bias is slope-scaled: constant + slope * texel
 // footprint * tan(angle between N and L) (seed 003 §3).
 //
-// Two filters (GpuLight.shadowParams.w):
-//   0: a 4x4 grid of taps, box-weighted (seed 000 §2.4);
-//   1: 16 Poisson-disc taps rotated per pixel by interleaved gradient noise
-//      (seed 003 §3), trading banding for noise.
+// Two filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
+//   PCF4X4: a 4x4 grid of taps, box-weighted (Chappuis 2011 §2.4);
+//   POISSON: 16 Poisson-disc taps rotated per pixel by interleaved gradient noise
+//      (Papanikolaou 2013 §3), trading banding for noise.
 #ifndef DERMIS_SHADOWS_GLSL
 #define DERMIS_SHADOWS_GLSL
 
@@ -51,7 +51,7 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
 
     vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
     float lit = 0.0;
-    if (light.shadowParams.w < 0.5) {
+    if (int(light.shadowParams.w + 0.5) == DERMIS_SHADOW_FILTER_PCF4X4) {
         for (int y = 0; y < 4; ++y) {
             for (int x = 0; x < 4; ++x) {
                 vec2 offset = (vec2(x, y) - 1.5) * texel;

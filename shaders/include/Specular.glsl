@@ -10,8 +10,10 @@
 #ifndef DERMIS_SPECULAR_GLSL
 #define DERMIS_SPECULAR_GLSL
 
+#include "SharedConstants.glsl"
+
 // Fresnel reflectance at normal incidence for skin (seed 000 §2.3, after d'Eon & Luebke).
-const float kSkinF0 = 0.028;
+const float kSkinF0 = DERMIS_SKIN_F0;
 
 #ifndef DERMIS_BECKMANN_SIZE
 #define DERMIS_BECKMANN_SIZE 256

@@ -152,8 +152,9 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
     vec2 direction = uSssBlur.step.xy;
     int taps = int(uSssBlur.step.w);
-    bool bilateral = uSssBlur.edges.x < 0.5;
-    bool fetchOnly = uSssBlur.edges.x > 1.5;
+    int edges = int(uSssBlur.edges.x + 0.5);
+    bool bilateral = edges == DERMIS_BLUR_EDGES_BILATERAL;
+    bool fetchOnly = edges == DERMIS_BLUR_EDGES_FETCH_ONLY;
     float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
     float controlScale = uSssBlur.edges.z;
 
@@ -172,7 +173,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
             continue;
         }
         float distanceMm = keyDistanceMm(centreKey, texelFetch(depthKey, tapPixel, 0).r);
-        bool sameProfile = distanceMm < 1e29;
+        bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
         if (bilateral) {
             if (!sameProfile) continue;
             weight *= exp(-distanceMm * distanceMm * inverseTwoSigmaSquared);

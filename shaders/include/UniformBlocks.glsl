@@ -20,13 +20,8 @@
 #define DERMIS_BLOCK_END(instance) instance;
 #endif
 
-#define DERMIS_MAX_LIGHTS 64
-#define DERMIS_MAX_SHADOWED_LIGHTS 4
-
-#define DERMIS_MAX_CHARACTERS 255       // object ids 1..255 in the G-buffer (0 = background)
-#define DERMIS_MAX_PROFILES 8           // profile slots per frame; the stencil holds the slot (0 = no SSS)
-#define DERMIS_MAX_PROFILE_GAUSSIANS 8
-#define DERMIS_MAX_BLUR_TAPS 33
+// Limits and the ids of closed sets (DERMIS_MAX_*, DERMIS_LIGHT_*, ...).
+#include "SharedConstants.glsl"
 
 #define DERMIS_BINDING_FRAME 0
 #define DERMIS_BINDING_LIGHTS 1
@@ -45,10 +40,6 @@
 #define DERMIS_KEY_UNITS_PER_M 1048576.0
 #define DERMIS_BACKGROUND_SLOT 15
 #define DERMIS_BACKGROUND_KEY 0xFFFFFFFFu
-
-#define DERMIS_LIGHT_DIRECTIONAL 0
-#define DERMIS_LIGHT_SPOT 1
-#define DERMIS_LIGHT_POINT 2
 
 DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     mat4 clipFromWorld;
@@ -113,7 +104,7 @@ DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
 DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
     vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
     vec4 step;   // xy: blur direction, (1,0) or (0,1); z: standard deviation of this step (mm); w: tap count
-    vec4 edges;  // x: 0 = bilateral, 1 = control (Jimenez), 2 = fetch-only (benchmark floor); y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+    vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 

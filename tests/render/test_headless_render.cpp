@@ -89,8 +89,8 @@ TEST_F(HeadlessRender, LinearAovsAreFinite) {
     for (Aov aov : {Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Diffuse, Aov::Specular, Aov::Irradiance}) {
         const Image image = render(aov);
         const Stats stats = channelStats(image);
-        EXPECT_EQ(stats.nonFinite, 0u) << aovName(aov);
-        EXPECT_GT(stats.variance, 0.0) << aovName(aov) << " is uniform";
+        EXPECT_EQ(stats.nonFinite, 0u) << kAovs.name(aov);
+        EXPECT_GT(stats.variance, 0.0) << kAovs.name(aov) << " is uniform";
     }
 }
 

@@ -289,13 +289,13 @@ TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
         auditEveryTarget(*mRenderer, audit);
         for (Aov aov : {Aov::Final, Aov::Specular, Aov::Diffuse}) {
             const Image image = render(aov, 160, 90);
-            EXPECT_EQ(test::countNonFinite(image), 0u) << variant << " " << aovName(aov);
+            EXPECT_EQ(test::countNonFinite(image), 0u) << variant << " " << kAovs.name(aov);
             float lowest = 0.0f, highest = 0.0f;
             for (const glm::vec4& t : image.texels) {
                 lowest = std::min({lowest, t.r, t.g, t.b});
                 highest = std::max({highest, t.r, t.g, t.b});
             }
-            EXPECT_GE(lowest, 0.0f) << variant << " " << aovName(aov);
+            EXPECT_GE(lowest, 0.0f) << variant << " " << kAovs.name(aov);
             if (aov == Aov::Specular) {
                 std::printf("[ measured ] %s, hostile moments: specular in [%g, %g]\n", variant, lowest, highest);
                 EXPECT_GT(highest, 0.0f);  // the ordinary cells still shine
@@ -384,7 +384,7 @@ TEST_F(Lean, BilateralBlurLeaksClearlyLessBackdropLightThanTheControl) {
         double mean = 0.0;  // backdrop light over the silhouette's own unblurred light
         double worst = 0.0;  // largest in one pixel, over the silhouette's mean own light
     };
-    auto leakOf = [&](bool enabled, const char* variant, float controlScalePerMm) {
+    auto leakOf = [&](bool enabled, SssVariant variant, float controlScalePerMm) {
         sss.enabled = enabled;
         sss.variant = variant;
         sss.controlDepthScalePerMm = controlScalePerMm;
@@ -402,10 +402,10 @@ TEST_F(Lean, BilateralBlurLeaksClearlyLessBackdropLightThanTheControl) {
         leak.worst /= own / double(silhouette.size());
         return leak;
     };
-    const Leak none = leakOf(false, "lbb", 0.5f);
-    const Leak control = leakOf(true, "c", 0.01f);
-    const Leak bilateral = leakOf(true, "lbb", 0.5f);
-    const Leak defaultControl = leakOf(true, "c", 0.5f);
+    const Leak none = leakOf(false, SssVariant::Lbb, 0.5f);
+    const Leak control = leakOf(true, SssVariant::C, 0.01f);
+    const Leak bilateral = leakOf(true, SssVariant::Lbb, 0.5f);
+    const Leak defaultControl = leakOf(true, SssVariant::C, 0.5f);
     std::printf("[ measured ] backdrop light in the head's %zu silhouette pixels, as a share of their own unblurred "
                 "diffuse (mean / worst pixel): unblurred %.4f%% / %.4f%%; C with Jimenez's 0.01/mm %.2f%% / %.1f%%; "
                 "LBB %.4f%% / %.4f%%; C with the default 0.5/mm %.4f%% / %.4f%%\n",

@@ -436,7 +436,7 @@ TEST_F(TextureSpace, UvLayoutAovsAreBlackWithNoCharacterOnScreen) {
         const Image image = render(aov, 64, 36);
         float most = 0.0f;
         for (const glm::vec4& t : image.texels) most = std::max({most, std::abs(t.r), std::abs(t.g), std::abs(t.b)});
-        EXPECT_EQ(most, 0.0f) << aovName(aov);
+        EXPECT_EQ(most, 0.0f) << kAovs.name(aov);
     }
     EXPECT_EQ(executedWithPrefix(summary(), "ts "), 0);
 }

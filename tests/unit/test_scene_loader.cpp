@@ -275,11 +275,11 @@ TEST(SceneLoader, FullSceneParsesIntoExpectedValues) {
     EXPECT_EQ(s.settings.shadow.mapSize, 2048);
     EXPECT_EQ(s.settings.shadow.biasConstantM, 0.001f);
     EXPECT_EQ(s.settings.shadow.biasSlopeTexels, 1.5f);
-    EXPECT_EQ(s.settings.shadow.filter, "poisson");
+    EXPECT_EQ(s.settings.shadow.filter, ShadowFilter::Poisson);
     const SssSettings& sss = s.settings.sss;
     EXPECT_FALSE(sss.enabled);
-    EXPECT_EQ(sss.variant, "lcb");
-    EXPECT_EQ(sss.blur, "control");
+    EXPECT_EQ(sss.variant, SssVariant::Lcb);
+    EXPECT_EQ(sss.blur, SssBlur::Control);
     EXPECT_EQ(sss.taps, 13);
     EXPECT_EQ(sss.bilateralDepthMm, 2.5f);
     EXPECT_EQ(sss.controlDepthScalePerMm, 0.75f);
@@ -445,7 +445,7 @@ TEST(SceneLoader, ManualExampleParses) {
     EXPECT_EQ(scene->characters[1].metresPerUnit, 0.01f);
     EXPECT_EQ(scene->characters[1].ssao.samples, 32);
     EXPECT_EQ(scene->settings.shadow.mapSize, 2048);
-    EXPECT_EQ(scene->settings.shadow.filter, "poisson");
+    EXPECT_EQ(scene->settings.shadow.filter, ShadowFilter::Poisson);
     EXPECT_EQ(scene->settings.sss.taps, 13);
     EXPECT_EQ(scene->settings.ssao.strength, 0.8f);
 }
@@ -635,16 +635,16 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
 TEST(SceneLoader, SssVariantDefaultsToLeanBilateralAndAcceptsTheThree) {
     const Result<Scene> empty = parseScene("{}", kScenePath);
     ASSERT_TRUE(empty.ok());
-    EXPECT_EQ(empty->settings.sss.variant, "lbb");
-    EXPECT_EQ(empty->settings.sss.blur, "variant");
+    EXPECT_EQ(empty->settings.sss.variant, SssVariant::Lbb);
+    EXPECT_EQ(empty->settings.sss.blur, SssBlur::Variant);
     for (const char* variant : {"c", "lcb", "lbb"}) {
         const Result<Scene> scene =
             parseScene(std::string(R"({"settings": {"sss": {"variant": ")") + variant + R"("}}})", kScenePath);
         ASSERT_TRUE(scene.ok()) << scene.error().message();
-        EXPECT_EQ(scene->settings.sss.variant, variant);
+        EXPECT_EQ(kSssVariants.name(scene->settings.sss.variant), variant);
         const Result<Scene> again = parseScene(sceneToJson(*scene), kScenePath);
         ASSERT_TRUE(again.ok());
-        EXPECT_EQ(again->settings.sss.variant, variant);
+        EXPECT_EQ(again->settings.sss.variant, scene->settings.sss.variant);
     }
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"variant": "LBB"}}})"),
               "/settings/sss/variant: unknown SSS variant \"LBB\" (expected c, lcb or lbb)");
@@ -769,7 +769,7 @@ TEST(SceneLoader, ModeAndTextureSpaceSettingsAreChecked) {
     const Result<Scene> scene = parseScene(R"({"settings": {"mode": "ts", "ts": {"min_size": 64, "max_size": 4096}}})",
                                            "x.json");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    EXPECT_EQ(scene->settings.mode, "ts");
+    EXPECT_EQ(scene->settings.mode, SssMode::TextureSpace);
     EXPECT_EQ(scene->settings.ts.minSize, 64);
     EXPECT_EQ(scene->settings.ts.maxSize, 4096);
     EXPECT_EQ(errorOf(R"({"settings": {"mode": "texture"}})"),

@@ -100,9 +100,9 @@ TEST(SceneOverrides, BooleansAndNumbersAreJson) {
 }
 
 TEST(SceneOverrides, ValuesThatAreNotJsonAreBareStrings) {
-    EXPECT_EQ(load({"sss.blur=control"}).settings.sss.blur, "control");
-    EXPECT_EQ(load({"sss.blur=\"control\""}).settings.sss.blur, "control");
-    EXPECT_EQ(load({"shadow.filter=poisson"}).settings.shadow.filter, "poisson");
+    EXPECT_EQ(load({"sss.blur=control"}).settings.sss.blur, SssBlur::Control);
+    EXPECT_EQ(load({"sss.blur=\"control\""}).settings.sss.blur, SssBlur::Control);
+    EXPECT_EQ(load({"shadow.filter=poisson"}).settings.shadow.filter, ShadowFilter::Poisson);
     EXPECT_EQ(load({"characters.0.name=lee"}).characters[0].name, "lee");
     EXPECT_EQ(load({"characters.0.name=\"42\""}).characters[0].name, "42");
     EXPECT_EQ(load({"characters.0.name=a=b"}).characters[0].name, "a=b");  // PATH ends at the first '='
@@ -118,7 +118,7 @@ TEST(SceneOverrides, OverrideBeatsTheFileAndLaterBeatsEarlier) {
     EXPECT_EQ(load({"sss.taps=5"}, R"({"settings": {"sss": {"taps": 4}}})").settings.sss.taps, 5);
     // Neighbouring keys from the file survive.
     const Scene scene = load({"sss.taps=5"});
-    EXPECT_EQ(scene.settings.sss.blur, "bilateral");
+    EXPECT_EQ(scene.settings.sss.blur, SssBlur::Bilateral);
     EXPECT_EQ(scene.settings.exposure, 1.5f);
 }
 
@@ -285,9 +285,9 @@ TEST(SceneOverrides, OverriddenScenesRoundTrip) {
     const Scene scene = load({"sss.blur=control", "sss.mix=0.3", "shadow.filter=poisson", "lights.0.intensity=2.5"});
     const Result<Scene> again = parseScene(sceneToJson(scene), "x.json");
     ASSERT_TRUE(again.ok()) << again.error().message();
-    EXPECT_EQ(again->settings.sss.blur, "control");
+    EXPECT_EQ(again->settings.sss.blur, SssBlur::Control);
     EXPECT_EQ(again->settings.sss.mix, 0.3f);
-    EXPECT_EQ(again->settings.shadow.filter, "poisson");
+    EXPECT_EQ(again->settings.shadow.filter, ShadowFilter::Poisson);
     EXPECT_EQ(again->lights[0].intensity, 2.5f);
 }
 

@@ -12,7 +12,8 @@
 namespace dermis::bench {
 namespace {
 
-const char* const kBlurModes[] = {"bilateral", "control", "fetch-only"};
+// The edge modes the blur benchmark times (the settings' SssBlur::Variant is one of the first two).
+const SssBlur kBlurModes[] = {SssBlur::Bilateral, SssBlur::Control, SssBlur::FetchOnly};
 const int kSizes[][2] = {{640, 360}, {1280, 720}};
 
 double medianOf(std::vector<double> v) {
@@ -36,11 +37,12 @@ void timeFrames(benchmark::State& state, Renderer& renderer, int width, int heig
 
 void sssBlur(benchmark::State& state) {
     context();
-    const char* mode = kBlurModes[state.range(0)];
+    const SssBlur blur = kBlurModes[state.range(0)];
+    const std::string mode(kSssBlurs.name(blur));
     const int width = kSizes[state.range(1)][0];
     const int height = kSizes[state.range(1)][1];
     Scene scene = contentScene("default.json");
-    scene.settings.sss.blur = mode;
+    scene.settings.sss.blur = blur;
     auto renderer = Renderer::create(scene);
     if (!renderer.ok()) {
         state.SkipWithError(renderer.error().message().c_str());

@@ -107,7 +107,7 @@ size_t sssPixels(Renderer& renderer) {
 
 // Renders every scene once per iteration, in turn, so that a slow spell of a
 // shared machine hits them all alike; records each one's medians.
-void measureRoundRobin(benchmark::State& state, std::vector<Scene> scenes, const std::string& mode,
+void measureRoundRobin(benchmark::State& state, std::vector<Scene> scenes, SssMode mode,
                        const std::vector<std::string>& keys) {
     context();
     std::vector<std::unique_ptr<Renderer>> renderers;
@@ -138,10 +138,12 @@ void measureRoundRobin(benchmark::State& state, std::vector<Scene> scenes, const
         recorded()[keys[i] + "/sss"] = medianOf(sss[i]);
         recorded()[keys[i] + "/pixels"] = double(sssPixels(*renderers[i]));
     }
-    state.SetLabel(mode);
+    state.SetLabel(std::string(kSssModes.name(mode)));
 }
 
-const char* const kModes[] = {"ss", "ts"};
+// The mode a benchmark's first argument selects: DenseRange over the table.
+SssMode modeOf(const benchmark::State& state) { return kSssModes.begin()[state.range(0)].value; }
+std::string modeName(const benchmark::State& state) { return std::string(kSssModes.name(modeOf(state))); }
 
 // Scenes sharing the camera of the 8-head grid: n of its heads, each as large on screen as in the grid.
 Scene sameSize(int n) {
@@ -151,30 +153,30 @@ Scene sameSize(int n) {
 }
 
 void characters(benchmark::State& state) {
-    const std::string mode = kModes[state.range(0)];
+    const std::string mode = modeName(state);
     std::vector<Scene> scenes;
     std::vector<std::string> keys;
     for (int n : kCharacterCounts) {
         scenes.push_back(grid(n));
         keys.push_back("ts-bench/" + mode + "/" + std::to_string(n));
     }
-    measureRoundRobin(state, std::move(scenes), mode, keys);
+    measureRoundRobin(state, std::move(scenes), modeOf(state), keys);
 }
 
 void charactersSameSize(benchmark::State& state) {
-    const std::string mode = kModes[state.range(0)];
+    const std::string mode = modeName(state);
     std::vector<Scene> scenes;
     std::vector<std::string> keys;
     for (int n : kCharacterCounts) {
         scenes.push_back(sameSize(n));
         keys.push_back("ts-bench/" + mode + "/same size " + std::to_string(n));
     }
-    measureRoundRobin(state, std::move(scenes), mode, keys);
+    measureRoundRobin(state, std::move(scenes), modeOf(state), keys);
 }
 
 void offScreen(benchmark::State& state) {
-    const std::string mode = kModes[state.range(0)];
-    measureRoundRobin(state, {contentScene("default.json"), oneOnScreenSevenOff()}, mode,
+    const std::string mode = modeName(state);
+    measureRoundRobin(state, {contentScene("default.json"), oneOnScreenSevenOff()}, modeOf(state),
                       {"ts-bench/" + mode + "/1 alone", "ts-bench/" + mode + "/1+7 off"});
 }
 
@@ -183,33 +185,45 @@ void offScreen(benchmark::State& state) {
 void printTextureSpaceSummary() {
     const auto& r = recorded();
     auto get = [&](const std::string& key) { return r.count(key) ? r.at(key) : NAN; };
+    const std::vector<std::string> modes = kSssModes.names();
+    const std::string first = "ts-bench/" + modes.front() + "/";
     auto table = [&](const char* title, const std::string& prefix) {
-        if (r.count("ts-bench/ss/" + prefix + "1/frame") == 0 && r.count("ts-bench/ts/" + prefix + "1/frame") == 0) return;
+        bool any = false;
+        for (const std::string& mode : modes) any = any || r.count("ts-bench/" + mode + "/" + prefix + "1/frame") > 0;
+        if (!any) return;
         std::printf("\n%s, %dx%d (median GPU ms; SSS = the mode's own passes):\n", title, kWidth, kHeight);
-        std::printf("| characters | SSS pixels | ss SSS ms | ss frame ms | ts SSS ms | ts frame ms |\n");
-        std::printf("| --- | --- | --- | --- | --- | --- |\n");
+        std::string header = "| characters | SSS pixels |";
+        std::string rule = "| --- | --- |";
+        for (const std::string& mode : modes) {
+            header += " " + mode + " SSS ms | " + mode + " frame ms |";
+            rule += " --- | --- |";
+        }
+        std::printf("%s\n%s\n", header.c_str(), rule.c_str());
         for (int n : kCharacterCounts) {
             const std::string k = prefix + std::to_string(n);
-            std::printf("| %d | %.0f | %.2f | %.2f | %.2f | %.2f |\n", n, get("ts-bench/ss/" + k + "/pixels"),
-                        get("ts-bench/ss/" + k + "/sss"), get("ts-bench/ss/" + k + "/frame"),
-                        get("ts-bench/ts/" + k + "/sss"), get("ts-bench/ts/" + k + "/frame"));
+            std::printf("| %d | %.0f |", n, get(first + k + "/pixels"));
+            for (const std::string& mode : modes) {
+                std::printf(" %.2f | %.2f |", get("ts-bench/" + mode + "/" + k + "/sss"),
+                            get("ts-bench/" + mode + "/" + k + "/frame"));
+            }
+            std::printf("\n");
         }
     };
     table("Texture space against screen space, characters sharing the pixels of one", "");
     table("Texture space against screen space, every character as large as in the 8-character view", "same size ");
-    for (const char* mode : kModes) {
-        const double one = get(std::string("ts-bench/") + mode + "/1 alone/frame");
-        const double offs = get(std::string("ts-bench/") + mode + "/1+7 off/frame");
+    for (const std::string& mode : modes) {
+        const double one = get("ts-bench/" + mode + "/1 alone/frame");
+        const double offs = get("ts-bench/" + mode + "/1+7 off/frame");
         if (std::isfinite(one) && std::isfinite(offs) && one > 0.0) {
             const double ratio = offs / one;
-            std::printf("%s: 8 characters (7 off screen) / 1 character, whole frame: %.3f ms / %.3f ms = %.3fx%s\n", mode,
+            std::printf("%s: 8 characters (7 off screen) / 1 character, whole frame: %.3f ms / %.3f ms = %.3fx%s\n", mode.c_str(),
                         offs, one, ratio, ratio <= 1.1 ? "  (within 10%)" : "  (OVER 10%)");
         }
     }
 }
 
-BENCHMARK(characters)->DenseRange(0, 1)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
-BENCHMARK(charactersSameSize)->DenseRange(0, 1)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
-BENCHMARK(offScreen)->DenseRange(0, 1)->UseManualTime()->Iterations(5)->Unit(benchmark::kMillisecond);
+BENCHMARK(characters)->DenseRange(0, int(kSssModes.size()) - 1)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(charactersSameSize)->DenseRange(0, int(kSssModes.size()) - 1)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(offScreen)->DenseRange(0, int(kSssModes.size()) - 1)->UseManualTime()->Iterations(5)->Unit(benchmark::kMillisecond);
 
 }  // namespace dermis::bench

@@ -35,10 +35,11 @@ int main(int argc, char** argv) {
 
     std::printf("\nComparisons (median GPU ms of the SSS passes, same machine, same run):\n");
     for (const char* size : {"640x360", "1280x720"}) {
-        for (const char* mode : {"bilateral", "control"}) {
-            const std::string what = std::string("SSS blur ") + mode + " / fetch-only floor, " + size;
-            printRatio(what.c_str(), std::string("blur/") + mode + "/" + size,
-                       std::string("blur/fetch-only/") + size, 1.25);
+        const std::string floor(dermis::kSssBlurs.name(dermis::SssBlur::FetchOnly));
+        for (const dermis::SssBlur blur : {dermis::SssBlur::Bilateral, dermis::SssBlur::Control}) {
+            const std::string mode(dermis::kSssBlurs.name(blur));
+            const std::string what = "SSS blur " + mode + " / " + floor + " floor, " + size;
+            printRatio(what.c_str(), "blur/" + mode + "/" + size, "blur/" + floor + "/" + size, 1.25);
         }
     }
     const auto& r = dermis::bench::recorded();

@@ -2,7 +2,9 @@
 // A small strict option parser: `--name value` and `--name=value` options,
 // `--flag` switches, and positional arguments. Unknown options are errors.
 
+#include "core/EnumTable.h"
 #include "core/Result.h"
+#include "scene/JsonReader.h"
 
 #include <map>
 #include <optional>
@@ -26,6 +28,12 @@ struct ParsedArgs {
 // `valued` lists options that take a value, `switches` those that do not.
 Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valued,
                              const std::set<std::string>& switches);
+
+// "c, lcb or lbb": the names a closed-set option takes, for its error.
+template <typename E, size_t N>
+std::string expectedNames(const EnumTable<E, N>& table) {
+    return listForMessage(table.names(), "or");
+}
 
 Result<int> parsePositiveInt(const std::string& option, const std::string& text);
 // A finite number in (0, 10000].

@@ -14,6 +14,7 @@
 #include "core/Log.h"
 #include "core/TextFile.h"
 #include "reference/ReferenceRenderer.h"
+#include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"
 
 #include <cmath>
@@ -53,13 +54,13 @@ const char* const kHelp =
     "                  2% of the most accurate one; the machine and the sweep\n"
     "  pareto.png      relative RMSE against frame GPU ms, both modes, fronts marked\n"
     "  passes.png      stacked per-pass GPU ms of the fronts' and the default configurations\n"
-    "  error_ss.png, error_ts.png\n"
+    "  ERROR_IMAGES\n"
     "                  where each mode's default configuration differs from the reference:\n"
     "                  max over RGB of |mode - reference| on SSS pixels, false colour, scale bar\n"
     "\n"
     "options:\n"
     "  --out DIR          output directory (created if missing); required\n"
-    "  --sweep SPEC       what to vary, ';'-separated axes [ss:|ts:]KEY=V1,V2,...; KEY is a\n"
+    "  --sweep SPEC       what to vary, ';'-separated axes MODE_PREFIXKEY=V1,V2,...; KEY is a\n"
     "                     settings path as --set takes it, several joined by '+', or `scale`\n"
     "                     (render at scale x the size, resample the result back). Default:\n"
     "                     DEFAULT_SWEEP\n"
@@ -109,13 +110,14 @@ Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, con
         if (isDefault) planned.back().sweep.label = "default";
         return success();
     };
-    for (const char* mode : {"ss", "ts"}) {
+    for (const EnumEntry<SssMode>& entry : kSssModes) {
+        const std::string mode(entry.name);
         bool swept = false;
         for (const auto& config : sweep) swept = swept || config.mode == mode;
         if (!swept) continue;
         bench::SweepConfig shipped;
         shipped.mode = mode;
-        shipped.overrides = {std::string("mode=") + mode};
+        shipped.overrides = {"mode=" + mode};
         if (Status ok = add(shipped, true); !ok.ok()) return ok.error();
         for (const auto& config : sweep) {
             if (config.mode != mode) continue;
@@ -171,8 +173,16 @@ int runBench(const std::vector<std::string>& rawArgs) {
                           {"no-plots", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
+        std::string errorImages;
+        for (const EnumEntry<SssMode>& mode : kSssModes) {
+            errorImages += (errorImages.empty() ? "error_" : ", error_") + std::string(mode.name) + ".png";
+        }
         std::string help = kHelp;
-        help.replace(help.find("DEFAULT_SWEEP"), std::string("DEFAULT_SWEEP").size(), bench::kDefaultSweepSpec);
+        for (const auto& [word, text] : {std::pair<std::string, std::string>{"DEFAULT_SWEEP", bench::kDefaultSweepSpec},
+                                         {"MODE_PREFIX", bench::modePrefixSyntax()},
+                                         {"ERROR_IMAGES", errorImages}}) {
+            help.replace(help.find(word), word.size(), text);
+        }
         std::fputs(help.c_str(), stdout);
         return 0;
     }
@@ -204,7 +214,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
-    auto file = [&](const char* name) { return (outDir / name).string(); };
+    auto file = [&](const std::string& name) { return (outDir / name).string(); };
 
     Result<Image> reference = args->has("reference")
                                   ? loadReferenceImage(args->get("reference", ""), width, height)
@@ -233,7 +243,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
         if (!error.ok()) return failure(error.error());
 
         if (config.isDefault) {
-            const std::string heatmap = file(config.sweep.mode == "ss" ? "error_ss.png" : "error_ts.png");
+            const std::string heatmap = file("error_" + config.sweep.mode + ".png");
             const double scaleMax = roundUpToNiceNumber(differencePercentile(*reference, diffuse, *mask, 0.99));
             if (Status saved = saveImage(heatmap, differenceHeatmap(*reference, diffuse, *mask, scaleMax)); !saved.ok())
                 return failure(saved.error());

@@ -57,10 +57,10 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene, the GL context or a write fails,\n"
     "2 for bad command-line usage.\n";
 
-Result<MeasuredRender> renderMode(Session& session, const std::string& scenePath, const std::string& mode, int width,
+Result<MeasuredRender> renderMode(Session& session, const std::string& scenePath, SssMode mode, int width,
                                   int height, int frames) {
     session.scene->settings.mode = mode;
-    log::info("rendering " + scenePath + " in mode " + mode);
+    log::info("rendering " + scenePath + " in mode " + std::string(kSssModes.name(mode)));
     return measureRender(session, scenePath, width, height, frames, /*warmUpFrames=*/0);
 }
 
@@ -102,18 +102,31 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     const int width = size->first;
     const int height = size->second;
 
-    auto ss = renderMode(*session, scenePath, "ss", width, height, *frames);
-    if (!ss.ok()) return failure(ss.error());
-    auto ts = renderMode(*session, scenePath, "ts", width, height, *frames);
-    if (!ts.ok()) return failure(ts.error());
+    // Every mode is rendered; the difference is texture space (test) against screen space (reference).
+    std::vector<std::pair<std::string, MeasuredRender>> renders;
+    for (const EnumEntry<SssMode>& mode : kSssModes) {
+        auto measured = renderMode(*session, scenePath, mode.value, width, height, *frames);
+        if (!measured.ok()) return failure(measured.error());
+        renders.emplace_back(std::string(mode.name), std::move(*measured));
+    }
+    auto rendered = [&renders](SssMode mode) -> const MeasuredRender* {
+        for (const auto& [name, measured] : renders) {
+            if (name == kSssModes.name(mode)) return &measured;
+        }
+        return &renders.front().second;
+    };
+    const MeasuredRender* ss = rendered(SssMode::ScreenSpace);
+    const MeasuredRender* ts = rendered(SssMode::TextureSpace);
     auto mask = sssMask(*session, width, height);
     if (!mask.ok()) return failure(mask.error());
     if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
 
-    auto file = [&](const char* name) { return (outDir / name).string(); };
-    for (const auto& [name, image] : {std::pair<const char*, const Image*>{"ss.exr", &ss->diffuse}, {"ts.exr", &ts->diffuse},
-                                      {"ss.png", &ss->finalImage}, {"ts.png", &ts->finalImage}}) {
-        if (const Status saved = saveImage(file(name), *image); !saved.ok()) return failure(saved.error());
+    auto file = [&](const std::string& name) { return (outDir / name).string(); };
+    for (const char* extension : {".exr", ".png"}) {
+        for (const auto& [mode, measured] : renders) {
+            const Image& image = std::string(extension) == ".exr" ? measured.diffuse : measured.finalImage;
+            if (const Status saved = saveImage(file(mode + extension), image); !saved.ok()) return failure(saved.error());
+        }
     }
 
     nlohmann::ordered_json metrics;
@@ -139,17 +152,17 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     if (reference) {
         nlohmann::ordered_json against;
         against["file"] = args->get("reference", "");
-        for (const auto& [mode, image] : {std::pair<const char*, const Image*>{"ss", &ss->diffuse}, {"ts", &ts->diffuse}}) {
-            auto error = compareImages(*reference, *image, *mask);
+        for (const auto& [mode, measured] : renders) {
+            auto error = compareImages(*reference, measured.diffuse, *mask);
             against[mode] = error.ok() ? differenceJson(*error) : nlohmann::ordered_json();
             if (error.ok() && !log::quiet()) {
-                std::printf("%s against the reference: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", mode,
+                std::printf("%s against the reference: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", mode.c_str(),
                             error->relativeRmse, error->maxAbsDifference, error->psnrDb);
             }
         }
         metrics["against_reference"] = against;
     }
-    metrics["timings"] = {{"ss", nlohmann::json::parse(ss->timingsJson)}, {"ts", nlohmann::json::parse(ts->timingsJson)}};
+    for (const auto& [mode, measured] : renders) metrics["timings"][mode] = nlohmann::json::parse(measured.timingsJson);
 
     if (const Status saved = saveImage(file("difference.png"), differenceHeatmap(ss->diffuse, ts->diffuse, *mask, scaleMax));
         !saved.ok()) {

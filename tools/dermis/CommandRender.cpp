@@ -7,6 +7,7 @@
 #include "core/Log.h"
 #include "render/Aov.h"
 #include "render/Renderer.h"
+#include "scene/SceneEnums.h"
 
 #include <chrono>
 #include <cstdio>
@@ -34,11 +35,11 @@ const char* const kHelp =
     "                      either mode: in ss mode only their own texture-space passes run;\n"
     "                      black when SSS is off or no SSS character is on screen\n"
     "  --timings FILE      also write the timings as JSON\n"
-    "  --mode ss|ts        screen-space or texture-space subsurface scattering: the same as\n"
-    "                      --set mode=ss|ts\n"
-    "  --variant c|lcb|lbb seed 001's variants of the screen-space frame: c (Jimenez: control\n"
-    "                      blur, KS specular), lcb (LEAN, control blur), lbb (LEAN, bilateral\n"
-    "                      blur): the same as --set sss.variant=V --set sss.blur=variant\n"
+    "  --mode MODE         the subsurface-scattering technique, the same as --set mode=MODE:\n"
+    "%s"
+    "  --variant V         Vila Verde 2015's variants of the screen-space frame, the same as\n"
+    "                      --set sss.variant=V --set sss.blur=variant:\n"
+    "%s"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable.\n"
     "                      PATH is dot-separated from the root, or from \"settings\" when\n"
     "                      it does not start with a root key: --set sss.taps=13\n"
@@ -59,7 +60,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
-        std::printf(kHelp, aovHelpLines("                        ").c_str());
+        const char* indent = "                        ";
+        std::printf(kHelp, kAovs.helpLines(indent).c_str(), kSssModes.helpLines(indent).c_str(),
+                    kSssVariants.helpLines(indent).c_str());
         return 0;
     }
     if (args->positional.size() != 1) return usageError(makeError("render", "expected exactly one SCENE file"));
@@ -70,8 +73,8 @@ int runRender(const std::vector<std::string>& rawArgs) {
     if (!size.ok()) return usageError(size.error());
     auto frames = parsePositiveInt("--frames", args->get("frames", "10"));
     if (!frames.ok()) return usageError(frames.error());
-    auto aov = parseAov(args->get("aov", "final"));
-    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + aovNameList()));
+    auto aov = kAovs.parse(args->get("aov", "final"));
+    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + kAovs.list()));
     const std::string defaultOut = "out/" + std::filesystem::path(scenePath).stem().string() + ".png";
     const std::string outPath = args->get("out", defaultOut);
     const std::string extension = std::filesystem::path(outPath).extension().string();
@@ -84,13 +87,13 @@ int runRender(const std::vector<std::string>& rawArgs) {
     std::vector<std::string> overrides = args->all("set");
     if (args->has("mode")) {
         const std::string mode = args->get("mode", "");
-        if (mode != "ss" && mode != "ts") return usageError(makeError("--mode " + mode, "expected ss or ts"));
+        if (!kSssModes.parse(mode)) return usageError(makeError("--mode " + mode, "expected " + expectedNames(kSssModes)));
         overrides.push_back("mode=" + mode);
     }
     if (args->has("variant")) {
         const std::string variant = args->get("variant", "");
-        if (variant != "c" && variant != "lcb" && variant != "lbb") {
-            return usageError(makeError("--variant " + variant, "expected c, lcb or lbb"));
+        if (!kSssVariants.parse(variant)) {
+            return usageError(makeError("--variant " + variant, "expected " + expectedNames(kSssVariants)));
         }
         // The variant's blur too, whatever the scene file names.
         overrides.push_back("sss.variant=" + variant);

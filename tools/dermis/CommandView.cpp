@@ -69,7 +69,7 @@ int runView(const std::vector<std::string>& rawArgs) {
                           {"no-panels", "gl-debug", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
-        std::printf(kHelp, aovHelpLines("                        ").c_str());
+        std::printf(kHelp, kAovs.helpLines("                        ").c_str());
         return 0;
     }
     if (args->positional.size() != 1) return usageError(makeError("view", "expected exactly one SCENE file"));
@@ -79,8 +79,8 @@ int runView(const std::vector<std::string>& rawArgs) {
     if (!size.ok()) return usageError(size.error());
     auto mode = parseViewMode(args->get("view", "single"));
     if (!mode.ok()) return usageError(mode.error());
-    auto aov = parseAov(args->get("aov", "final"));
-    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + aovNameList()));
+    auto aov = kAovs.parse(args->get("aov", "final"));
+    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + kAovs.list()));
     int frames = 0;
     if (args->has("frames")) {
         auto parsed = parsePositiveInt("--frames", args->get("frames", ""));

@@ -50,7 +50,7 @@ Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
     for (size_t i = 0; i < mask.size(); ++i) {
         const long id = std::lround(ids->texels[i].r);
         if (id >= 1 && static_cast<size_t>(id) <= characters.size())
-            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != "none" ? 1 : 0;
+            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != kOpaqueProfile ? 1 : 0;
     }
     return mask;
 }

@@ -1,0 +1,35 @@
+#pragma once
+// The limits of scene settings, one definition each: the scene loader's range
+// checks, the viewer's sliders, the blur kernels and the shaders use these.
+// Those a shader needs come from shaders/include/SharedConstants.glsl.
+
+#include "include/SharedConstants.glsl"
+
+namespace dermis {
+
+// Taps per direction of a separable blur kernel, odd (sss.taps, ts.taps).
+constexpr int kMinBlurTaps = DERMIS_MIN_BLUR_TAPS;
+constexpr int kMaxBlurTaps = DERMIS_MAX_BLUR_TAPS;
+static_assert(kMinBlurTaps % 2 == 1 && kMaxBlurTaps % 2 == 1, "tap counts are odd");
+
+// Gaussians per diffusion profile (sss.gaussians: use at most this many).
+constexpr int kMaxProfileGaussians = DERMIS_MAX_PROFILE_GAUSSIANS;
+
+// SSAO hemisphere samples (ssao.samples, the per-character override).
+constexpr int kMinSsaoSamples = DERMIS_MIN_SSAO_SAMPLES;
+constexpr int kMaxSsaoSamples = DERMIS_MAX_SSAO_SAMPLES;
+
+// Shadow-map side in texels (shadow.map_size).
+constexpr int kMinShadowMapSize = 64;
+constexpr int kMaxShadowMapSize = 8192;
+
+// Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
+constexpr int kMinTsSize = 64;
+constexpr int kMaxTsSize = 4096;
+
+// Array lengths a scene file may have; the renderer uses at most
+// DERMIS_MAX_LIGHTS lights and DERMIS_MAX_CHARACTERS characters of them.
+constexpr int kMaxSceneLights = 1024;
+constexpr int kMaxSceneCharacters = 1024;
+
+}  // namespace dermis

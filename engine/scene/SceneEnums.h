@@ -1,0 +1,66 @@
+#pragma once
+// The closed sets of the scene format, each an enum with its one table of
+// names (core/EnumTable.h). The loader, the writer, `--set`, the viewer, the
+// bench and the command line take names from these tables; ids that reach a
+// shader come from shaders/include/SharedConstants.glsl.
+
+#include "core/EnumTable.h"
+#include "include/SharedConstants.glsl"
+
+namespace dermis {
+
+enum class LightType { Directional = DERMIS_LIGHT_DIRECTIONAL, Spot = DERMIS_LIGHT_SPOT, Point = DERMIS_LIGHT_POINT };
+
+inline constexpr EnumTable<LightType, 3> kLightTypes{
+    "light type",
+    {{{LightType::Directional, "directional", "parallel light along `direction`; irradiance scale"},
+      {LightType::Spot, "spot", "cone from `position_m` along `direction`; radiant intensity"},
+      {LightType::Point, "point", "from `position_m` in every direction; radiant intensity"}}}};
+
+// The subsurface-scattering technique of the frame. Each has its own passes,
+// shaders and tests; code that handles every technique loops over the table.
+enum class SssMode { ScreenSpace, TextureSpace };
+
+inline constexpr EnumTable<SssMode, 2> kSssModes{
+    "SSS mode",
+    {{{SssMode::ScreenSpace, "ss", "screen-space SSS chain (Jimenez et al. 2009)"},
+      {SssMode::TextureSpace, "ts", "texture-space SSS (d'Eon & Luebke 2007)"}}}};
+
+// Vila Verde 2015 §5.1's three versions of the screen-space frame (render/SssVariant.h).
+enum class SssVariant { C, Lcb, Lbb };
+
+inline constexpr EnumTable<SssVariant, 3> kSssVariants{
+    "SSS variant",
+    {{{SssVariant::C, "c", "Jimenez: control blur, KS specular"},
+      {SssVariant::Lcb, "lcb", "LEAN specular, control blur"},
+      {SssVariant::Lbb, "lbb", "LEAN specular, bilateral blur"}}}};
+
+// Edge handling of the screen-space blur. Variant is the setting "the
+// variant's own" (control for c and lcb, bilateral for lbb); the others are
+// the shader's ids.
+enum class SssBlur {
+    Variant = -1,
+    Bilateral = DERMIS_BLUR_EDGES_BILATERAL,
+    Control = DERMIS_BLUR_EDGES_CONTROL,
+    FetchOnly = DERMIS_BLUR_EDGES_FETCH_ONLY,
+};
+
+inline constexpr EnumTable<SssBlur, 4> kSssBlurs{
+    "SSS blur",
+    {{{SssBlur::Variant, "variant", "the variant's: control for c and lcb, bilateral for lbb"},
+      {SssBlur::Bilateral, "bilateral", "taps weighted by their depth difference to the centre"},
+      {SssBlur::Control, "control", "Jimenez et al. 2009's lerp towards the centre"},
+      {SssBlur::FetchOnly, "fetch-only", "the same fetches, unweighted: the benchmarks' bandwidth floor"}}}};
+
+enum class ShadowFilter { Pcf4x4 = DERMIS_SHADOW_FILTER_PCF4X4, Poisson = DERMIS_SHADOW_FILTER_POISSON };
+
+inline constexpr EnumTable<ShadowFilter, 2> kShadowFilters{
+    "shadow filter",
+    {{{ShadowFilter::Pcf4x4, "pcf4x4", "4x4 percentage-closer filtering (Chappuis 2011)"},
+      {ShadowFilter::Poisson, "poisson", "rotated Poisson-disc taps (Papanikolaou 2013)"}}}};
+
+static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssVariants.isOneToOne() &&
+                  kSssBlurs.isOneToOne() && kShadowFilters.isOneToOne(),
+              "every value and every name appears once");
+
+}  // namespace dermis

@@ -1,0 +1,67 @@
+// Constants shared by C++ and GLSL: limits, the ids of closed sets that reach
+// shaders, texture units and physical constants. Only #defines, so that C++
+// code of any layer may include it (through core/SharedConstants.h); GLSL
+// gets it from UniformBlocks.glsl or with `#include "SharedConstants.glsl"`.
+// C++ ties its enums to these ids with static_asserts
+// (render/UniformBlocks.h, render/Aov.cpp).
+
+#ifndef DERMIS_SHARED_CONSTANTS_GLSL
+#define DERMIS_SHARED_CONSTANTS_GLSL
+
+// Limits of the uniform blocks.
+#define DERMIS_MAX_LIGHTS 64
+#define DERMIS_MAX_SHADOWED_LIGHTS 4
+#define DERMIS_MAX_CHARACTERS 255       // object ids 1..255 in the G-buffer (0 = background)
+#define DERMIS_MAX_PROFILES 8           // profile slots per frame; the stencil holds the slot (0 = no SSS)
+#define DERMIS_MAX_PROFILE_GAUSSIANS 8
+// Hemisphere samples of SSAO per pixel (settings.ssao.samples).
+#define DERMIS_MIN_SSAO_SAMPLES 8
+#define DERMIS_MAX_SSAO_SAMPLES 128
+// Taps per direction of a separable blur kernel (odd counts from 3 up to this).
+#define DERMIS_MIN_BLUR_TAPS 3
+#define DERMIS_MAX_BLUR_TAPS 33
+
+// Light types (GpuLight::positionType.w); C++: LightType.
+#define DERMIS_LIGHT_DIRECTIONAL 0
+#define DERMIS_LIGHT_SPOT 1
+#define DERMIS_LIGHT_POINT 2
+
+// Shadow filters (GpuLight::shadowParams.w); C++: ShadowFilter.
+#define DERMIS_SHADOW_FILTER_PCF4X4 0
+#define DERMIS_SHADOW_FILTER_POISSON 1
+
+// Edge handling of the screen-space SSS blur (SssBlurBlock::edges.x); C++:
+// SssBlur. Bilateral: depth-weighted taps; control: Jimenez et al. 2009's lerp
+// to the centre; fetch-only: the same fetches unweighted (a benchmark floor).
+#define DERMIS_BLUR_EDGES_BILATERAL 0
+#define DERMIS_BLUR_EDGES_CONTROL 1
+#define DERMIS_BLUR_EDGES_FETCH_ONLY 2
+
+// The depth distance (mm) between two pixels of different profile slots: large
+// enough that every depth weight of it is 0. Compare against half of it.
+#define DERMIS_OTHER_PROFILE_DISTANCE_MM 1e30
+
+// Outputs of the aov pass (FrameBlock::shading.w); C++: Aov.
+#define DERMIS_AOV_FINAL 0
+#define DERMIS_AOV_ALBEDO 1
+#define DERMIS_AOV_NORMAL 2
+#define DERMIS_AOV_DEPTH 3
+#define DERMIS_AOV_DIFFUSE 4
+#define DERMIS_AOV_SPECULAR 5
+#define DERMIS_AOV_IRRADIANCE 6
+#define DERMIS_AOV_AO 7
+#define DERMIS_AOV_TRANSMITTANCE 8
+#define DERMIS_AOV_THICKNESS 9
+#define DERMIS_AOV_OBJECT 10               // the object id (scene character index + 1; 0 for the background)
+#define DERMIS_AOV_STRETCH 11              // the UV-space AOVs: a texture-space texture of one character,
+#define DERMIS_AOV_IRRADIANCE_TEXTURE 12   // its UV square letterboxed in the frame
+
+// Texture units of the tables every shading pass may read, bound once per frame.
+#define DERMIS_UNIT_BECKMANN 14
+#define DERMIS_UNIT_ENERGY 15
+
+// Fresnel reflectance at normal incidence for skin (d'Eon & Luebke 2007, after
+// Donner & Jensen): Schlick's F0 of the specular and of its energy table.
+#define DERMIS_SKIN_F0 0.028
+
+#endif
