@@ -1,6 +1,6 @@
-// Composite (DESIGN.md pass 6): diffuse = SSS-accumulated irradiance x
+// Composite (docs/screen-space.md, step 7): diffuse = SSS-accumulated irradiance x
 // albedo^(1 - mix) x the energy the specular lobe lets out towards the viewer,
-// 1 - rho_s rho_dt(N.V, m) (seed 000 §2.6), plus specular; the background
+// 1 - rho_s rho_dt(N.V, m) (Chappuis 2011 §2.6), plus specular; the background
 // where nothing was drawn. Linear HDR out. With COMPOSITE_LEAN (variants lcb
 // and lbb) the specular of characters with LEAN maps comes from their blurred
 // moments here (include/LeanLights.glsl) rather than from the lighting pass.

@@ -1,4 +1,4 @@
-// G-buffer layout (DESIGN.md, "The frame"):
+// G-buffer layout (docs/screen-space.md):
 //   depth/stencil  D24S8; stencil = SSS profile slot (0 = opaque), for the blurs
 //   target 0       RGBA8 sRGB: albedo (linear after decode), a = object id / 255
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s

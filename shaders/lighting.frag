@@ -1,9 +1,9 @@
-// Deferred lighting (DESIGN.md pass 4) into two targets:
-//   0: diffuse irradiance times the pre-scatter albedo^mix (seed 000 §2.2.4),
+// Deferred lighting (docs/screen-space.md, step 4) into two targets:
+//   0: diffuse irradiance times the pre-scatter albedo^mix (Chappuis 2011 §2.2.4),
 //      the input of the SSS blur. Its alpha is 1, or with LIGHTING_LEAN the
 //      G-buffer's LEAN cross moment M'.xy, which the blur carries along with
 //      the irradiance (include/SssBlur.glsl, include/Lean.glsl). Each light's share is scaled by the energy
-//      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (seed 000 §2.6);
+//      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (Chappuis 2011 §2.6);
 //      the ambient term by the SSAO.
 //   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur;
 //      with LIGHTING_LEAN 0 for characters with LEAN maps (their lobe comes

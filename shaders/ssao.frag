@@ -1,4 +1,4 @@
-// Screen-space ambient occlusion (DESIGN.md pass 3; seed 003 §3.2): a
+// Screen-space ambient occlusion (docs/screen-space.md, step 3; Papanikolaou 2013 §3.2): a
 // normal-oriented hemisphere of sample points around each pixel's view-space
 // position, rotated per pixel, with a radius and a sample count per object.
 //
@@ -34,7 +34,7 @@
 //   uSsao.kernel.w            range check: an occluder's weight fades   2
 //                             from 1 at distance `radius` from the pixel
 //                             to 0 at `kernel.w x radius`
-//   Seed 003 finds 32..64 samples the best accuracy per time; fewer are
+//   Papanikolaou 2013 finds 32..64 samples the best accuracy per time; fewer are
 //   noisy before the blur, more than 128 cost much and change little.
 //
 // METHOD
@@ -42,19 +42,19 @@
 //   n: point i of a Fibonacci spiral on the unit disc, r = sqrt((i+0.5)/n),
 //   phi = i x golden angle, lifted onto the hemisphere (z = sqrt(1 - r^2)).
 //   That is a cosine-weighted distribution, as in the visibility integral of
-//   seed 003 §3.2 (1/pi integral of V (w.n) dw). Sample i's distance is
+//   Papanikolaou 2013 §3.2 (1/pi integral of V (w.n) dw). Sample i's distance is
 //   radius x mix(0.1, 1, t^2), t a golden-ratio sequence in i with a
 //   per-pixel offset, so near occluders get more samples. A sample counts
 //   when its point is inside geometry, not when anything lies along its
-//   direction, so (as with seed 003's kernel) the result is lighter than
+//   direction, so (as with Papanikolaou 2013's kernel) the result is lighter than
 //   ray-traced AO of the same radius, most where the occluder is nearly
 //   a radius away.
 //   The hemisphere is rotated about the normal by interleaved gradient noise
-//   (Jimenez 2014) instead of seed 003's 64x64 noise texture, and the
-//   tangent frame is built by Gram-Schmidt as in seed 003 §3.2.2.
+//   (Jimenez 2014) instead of Papanikolaou 2013's 64x64 noise texture, and the
+//   tangent frame is built by Gram-Schmidt as in Papanikolaou 2013 §3.2.2.
 //   Each sample point S is projected to a texel whose visible surface point
 //   Q is reconstructed from the depth buffer. The sample counts as occluded
-//   (seed 003 §3.2.2 step 2.5.4, with the bias of step 2.5.5) when
+//   (Papanikolaou 2013 §3.2.2 step 2.5.4, with the bias of step 2.5.5) when
 //     - Q is in front of S by more than the bias, and
 //     - Q lies above the pixel's tangent plane by more than the bias: on a
 //       flat surface Q is the surface itself and never occludes, however
@@ -133,7 +133,7 @@ float ambientOcclusion(ivec2 pixel) {
     vec3 P = viewPositionAt(pixel, depth);
     vec3 N = decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);
 
-    // Tangent frame rotated about N by the noise angle (seed 003 §3.2.2, getRotatedTBN).
+    // Tangent frame rotated about N by the noise angle (Papanikolaou 2013 §3.2.2, getRotatedTBN).
     float angle = 2.0 * kPi * interleavedGradientNoise(gl_FragCoord.xy);
     vec3 randomVector = vec3(cos(angle), sin(angle), 0.0);
     vec3 fallback = abs(N.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);

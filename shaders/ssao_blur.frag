@@ -1,4 +1,4 @@
-// Bilateral blur of the raw SSAO (DESIGN.md pass 3), one pass.
+// Bilateral blur of the raw SSAO (docs/screen-space.md, step 3), one pass.
 //
 // INTEGRATION
 //   Program: fullscreen.vert + ssao_blur.frag (Programs::ssaoBlur), driven by

@@ -1,5 +1,5 @@
 // Texture-space step 4: one separable pass of one incremental Gaussian step
-// (seed 000 §2.2.4, listing 2.2; include/TextureSpace.glsl is the manual).
+// (Chappuis 2011 §2.2.4, listing 2.2; include/TextureSpace.glsl is the manual).
 // Taps sit at offset_k x sigma along U or V, sigma in mm turned into UV by
 // the stretch map (mm per UV unit) at the centre texel. The kernel's weights
 // and offsets come from engine/sss/BlurKernel.cpp and sigma is divided by

@@ -1,4 +1,4 @@
-// Texture-space step 5, the gather (seed 000 §2.8 listing 2.11; manual in
+// Texture-space step 5, the gather (Chappuis 2011 §2.8 listing 2.11; manual in
 // include/TextureSpace.glsl). For this character's pixels (depth equal to the
 // G-buffer's and the same object id) it writes, into the SSS accumulation the
 // composite reads,

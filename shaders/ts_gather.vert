@@ -8,7 +8,7 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 3) in vec2 aUv;
 layout(location = 4) in vec3 aDPdu;
 layout(location = 5) in vec3 aDPdv;
-layout(location = 6) in float aBorderDistance;  // object units (scene/UvLayout.h)
+layout(location = 6) in float aBorderDistance;  // object units (mesh/UvLayout.h)
 
 out vec3 vWorldPositionM;
 out vec2 vUv;

@@ -1,6 +1,6 @@
-// Texture-space step 2: the irradiance texture (seed 000 §2.2.3, include/TextureSpace.glsl).
+// Texture-space step 2: the irradiance texture (Chappuis 2011 §2.2.3, include/TextureSpace.glsl).
 //   rgb: sum over lights of radiance x N.L x PCF shadow x (1 - rho_s rho_dt(N.L, m))
-//        (seed 000 §2.4, §2.6), plus ambient x SSAO (where the texel is the
+//        (Chappuis 2011 §2.4, §2.6), plus ambient x SSAO (where the texel is the
 //        pixel the camera sees), times albedo^mix (pre-scatter, §2.2.4): the
 //        same light the lighting pass gives a pixel (lighting.frag).
 //   a:   exp(-c d), d the thickness (mm) towards the TSM light (listing 2.7),

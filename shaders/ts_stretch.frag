@@ -1,7 +1,7 @@
-// Texture-space step 1: the stretch map (seed 000 §2.2.4 listing 2.1, seed 002
+// Texture-space step 1: the stretch map (Chappuis 2011 §2.2.4 listing 2.1, Yang et al. 2012
 // §II). RG16F: the world length of one UV unit along u and along v, in mm;
 // the blur spaces its taps by sigma / stretch. Interpolated per-vertex
-// derivatives, not dFdx per triangle (scene/UvLayout.h says why); a
+// derivatives, not dFdx per triangle (mesh/UvLayout.h says why); a
 // degenerate triangle gives 0, which the blur treats as "do not blur here".
 #include "Common.glsl"
 

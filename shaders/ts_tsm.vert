@@ -1,4 +1,4 @@
-// The modified translucent shadow map (seed 000 §2.5; include/TextureSpace.glsl):
+// The modified translucent shadow map (Chappuis 2011 §2.5; include/TextureSpace.glsl):
 // one character seen from its TSM light.
 #define DERMIS_USE_TS_BLOCK
 #include "Common.glsl"

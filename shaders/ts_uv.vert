@@ -8,7 +8,7 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aTangent;
 layout(location = 3) in vec2 aUv;
-layout(location = 4) in vec3 aDPdu;  // object units per UV unit (scene/UvLayout.h)
+layout(location = 4) in vec3 aDPdu;  // object units per UV unit (mesh/UvLayout.h)
 layout(location = 5) in vec3 aDPdv;
 
 out vec3 vWorldPositionM;

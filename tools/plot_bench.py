@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Plots for `dermis bench` (issue 6): reads DIR/results.csv, DIR/passes.csv and
+"""Plots for `dermis bench`: reads DIR/results.csv, DIR/passes.csv and
 DIR/summary.json, which the bench writes, and draws
 
   DIR/pareto.png  relative RMSE against the reference over frame GPU ms, one

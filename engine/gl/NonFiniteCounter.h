@@ -1,5 +1,5 @@
 #pragma once
-// The debug pass of DESIGN.md "Numerical stability": after every pass, read
+// The debug pass of docs/stress.md: after every pass, read
 // back each float texture it wrote and count non-finite texels (NaN, Inf) and
 // the largest magnitude. Slow (a read-back per target): for stress tests and
 // debugging, never for timing.

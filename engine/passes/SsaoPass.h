@@ -1,5 +1,5 @@
 #pragma once
-// Pass 3: screen-space ambient occlusion (seed 003 §3.2; method and settings
+// Pass 3: screen-space ambient occlusion (Papanikolaou 2013 §3.2; method and settings
 // in shaders/ssao.frag) and its depth-aware bilateral blur
 // (shaders/ssao_blur.frag), both at full resolution.
 //

@@ -7,7 +7,7 @@
 //
 //   ts init                    the accumulation starts as the lighting's irradiance
 //   per SSS character <c> (its pass-name label, TsCharacterPlan::label):
-//   ts <c> tsm                 its modified translucent shadow map (seed 000 §2.5)
+//   ts <c> tsm                 its modified translucent shadow map (Chappuis 2011 §2.5)
 //   ts <c> stretch             stretch map in its UV layout (§2.2.4, listing 2.1)
 //   ts <c> irradiance          irradiance texture in its UV layout (§2.2.3)
 //   ts <c> dilate              chart gutters filled
@@ -35,10 +35,10 @@
 namespace dermis {
 
 // c in the stored exp(-c d) of the thickness (1/mm): 50 mm (the front) is
-// e^-5, well inside fp16 (seed 000 listing 2.7 uses 0.1 in its units).
+// e^-5, well inside fp16 (Chappuis 2011 listing 2.7 uses 0.1 in its units).
 constexpr float kTsThicknessPerMm = 0.1f;
 
-// The TSM terms use this many of a profile's widest Gaussians (seed 000
+// The TSM terms use this many of a profile's widest Gaussians (Chappuis 2011
 // listing 2.11: three of six).
 constexpr int kTsmGaussians = 3;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Back-normal transmittance (seed 003 §4.3; shaders/include/Transmittance.glsl),
+// Back-normal transmittance (Papanikolaou 2013 §4.3; shaders/include/Transmittance.glsl),
 // added into `target` by blending, before the SSS blur so it is softened too.
 // Runs on SSS pixels only (stencil) inside the SSS scissor. Skipped by
 // predicate when no shadowed light is behind any visible SSS character.

@@ -25,7 +25,7 @@ struct FilterData {
 };
 
 // Empty texels look this far for a chart. The head's gutters are 8 texels
-// wide at 1024 (scene/ProceduralHead.cpp); size / 128 fills them from either
+// wide at 1024 (procedural/ProceduralHead.cpp); size / 128 fills them from either
 // side at every size.
 int dilationRadiusTexels(int size) { return std::clamp(size / 128, 2, 16); }
 
@@ -59,7 +59,7 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
     block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
     block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
     const float strength = ts.tsmStrength * frame.plan.scene->settings.transmittance.strength;
-    // Seed 000 listing 2.11 adds the TSM terms for the three widest of six
+    // Chappuis 2011 listing 2.11 adds the TSM terms for the three widest of six
     // Gaussians: the narrow ones fade within a fraction of a millimetre and
     // only add speckle where the thickness vanishes at the light's silhouette.
     const float firstTsmGaussian = float(std::max<int>(1, static_cast<int>(plan.gaussians.size()) - kTsmGaussians));

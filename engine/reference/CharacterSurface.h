@@ -5,7 +5,7 @@
 // flipped on back faces and perturbed by the tangent-space normal map.
 
 #include "core/Result.h"
-#include "scene/Model.h"
+#include "mesh/Model.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

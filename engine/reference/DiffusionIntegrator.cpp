@@ -107,7 +107,7 @@ std::vector<Sample> DiffusionIntegrator::shadeBaseCell(size_t index) const {
     return samples;
 }
 
-// DiffusionProfile::radialProfile's sum (seed 000 §2.1.4), in float, for the inner loop.
+// DiffusionProfile::radialProfile's sum (Chappuis 2011 §2.1.4), in float, for the inner loop.
 glm::vec3 DiffusionIntegrator::profileAt(float radiusSquaredMm2) const {
     glm::vec3 sum(0.0f);
     for (const Term& term : mTerms) {

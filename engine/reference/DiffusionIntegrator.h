@@ -1,7 +1,7 @@
 #pragma once
 // The subsurface integral at a surface point x_o of one character:
 //   I(x_o) = integral over the character of R(|x_o - x_i|) E(x_i) albedo^mix(x_i) dA_i
-// (DESIGN.md, "Accuracy"), R the diffusion profile over 3-D distance (1/mm^2),
+// (docs/reference.md), R the diffusion profile over 3-D distance (1/mm^2),
 // dA in mm^2. A midpoint rule over small triangles (cells) whose size follows
 // the profile: each Gaussian i of standard deviation s_i sees at least
 // `density` samples per s_i^2 within refineCutoffSigmas s_i of x_o, so the

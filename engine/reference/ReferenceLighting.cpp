@@ -1,7 +1,7 @@
 #include "reference/ReferenceLighting.h"
 
-#include "render/UniformBlocks.h"
-#include "sss/EnergyTable.h"
+#include "gpu/UniformBlocks.h"
+#include "brdf/EnergyTable.h"
 
 #include <algorithm>
 #include <cmath>

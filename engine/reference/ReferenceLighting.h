@@ -5,7 +5,7 @@
 //   E = ambient + sum over lights of radiance x max(N.L, 0) x visibility x (1 - rho_s rho_dt(N.L, m))
 // - directional: radiance = colour x intensity; spot and point: / r^2, spots
 //   fade by smoothstep(cos outer, cos inner, cos angle);
-// - the last factor only with settings.energyConservation (seed 000 §2.6);
+// - the last factor only with settings.energyConservation (Chappuis 2011 §2.6);
 // - the ambient is uniform and unoccluded: the renderer darkens it by SSAO, the
 //   reference takes AO = 1;
 // - the lights the renderer shadows are exactly the ones that cast shadow rays
@@ -63,7 +63,7 @@ private:
     std::vector<PreparedLight> mLights;
     glm::vec3 mAmbient{0.0f};
     bool mEnergyConservation = true;
-    std::vector<float> mEnergyTable;  // row-major, row = m (engine/sss/EnergyTable.h)
+    std::vector<float> mEnergyTable;  // row-major, row = m (engine/brdf/EnergyTable.h)
 };
 
 }  // namespace dermis::reference

@@ -2,7 +2,7 @@
 
 #include "core/Log.h"
 #include "reference/ParallelFor.h"
-#include "scene/ModelLoader.h"
+#include "import/ModelLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
-// The CPU reference for issue 6: brute-force evaluation of what both real-time
-// SSS modes approximate (DESIGN.md, "Accuracy"),
+// The CPU reference: brute-force evaluation of what both real-time
+// SSS modes approximate (docs/reference.md),
 //   L_d(x_o) = albedo^(1-mix)(x_o) x (1 - rho_s rho_dt(N.V, m)) x
 //              integral over the character of R(|x_o - x_i|) E(x_i) albedo^mix(x_i) dA_i,
 // the outgoing energy factor only with settings.energyConservation, exactly as
@@ -23,7 +23,7 @@
 #include "reference/CharacterSurface.h"
 #include "reference/DiffusionIntegrator.h"
 #include "reference/ReferenceLighting.h"
-#include "scene/Model.h"
+#include "mesh/Model.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

@@ -11,7 +11,7 @@
 #include "render/GpuScene.h"
 #include "render/Programs.h"
 #include "render/TsMeshes.h"
-#include "render/UniformBlocks.h"
+#include "gpu/UniformBlocks.h"
 
 namespace dermis {
 

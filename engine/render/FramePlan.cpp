@@ -146,4 +146,9 @@ void recordShadowMaps(const FramePlan& plan, const graph::RenderGraph& graph, Sh
     }
 }
 
+graph::TextureDesc frameOutputDesc(const FramePlan& plan) {
+    return {static_cast<uint32_t>(plan.width), static_cast<uint32_t>(plan.height),
+            plan.aov == Aov::Final ? graph::TextureFormat::Rgba8 : graph::TextureFormat::Rgba32F};
+}
+
 }  // namespace dermis

@@ -16,7 +16,7 @@
 //
 // Errors come back as the status; nothing is logged and dropped. The frame is
 // then prepared (GL work: textures, uploads) and declared
-// (render/FrameDeclaration.h), which only reads the plan.
+// (frame/FrameDeclaration.h), which only reads the plan.
 
 #include "core/Result.h"
 #include "graph/RenderGraph.h"
@@ -27,7 +27,7 @@
 #include "render/ShadowCache.h"
 #include "render/SssPlan.h"
 #include "render/TsPlan.h"
-#include "scene/Mesh.h"
+#include "mesh/Mesh.h"
 #include "scene/Scene.h"
 #include "sss/BlurKernel.h"
 
@@ -100,5 +100,8 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
 // After the frame's graph ran: the shadow slots whose pass executed now hold
 // their plan's map.
 void recordShadowMaps(const FramePlan& plan, const graph::RenderGraph& graph, ShadowCache& shadows);
+
+// The output texture's description for a plan: RGBA8 for Aov::Final, RGBA32F otherwise.
+graph::TextureDesc frameOutputDesc(const FramePlan& plan);
 
 }  // namespace dermis

@@ -1,8 +1,8 @@
 #include "render/FrameResources.h"
 
 #include "gl/TexturePool.h"
-#include "render/BeckmannTable.h"
-#include "sss/EnergyTable.h"
+#include "brdf/BeckmannTable.h"
+#include "brdf/EnergyTable.h"
 
 #include <algorithm>
 

@@ -10,13 +10,13 @@
 #include "gl/GlObjects.h"
 #include "graph/TextureDesc.h"
 #include "render/FrameContext.h"
-#include "render/FrameDeclaration.h"
+#include "render/FrameInputs.h"
 #include "render/FramePlan.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
 #include "render/SceneGeometry.h"
 #include "render/TsMeshes.h"
-#include "render/UniformBlocks.h"
+#include "gpu/UniformBlocks.h"
 
 #include <array>
 

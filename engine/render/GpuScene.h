@@ -6,8 +6,8 @@
 #include "core/Image.h"
 #include "core/Result.h"
 #include "gl/GlObjects.h"
-#include "scene/Mesh.h"
-#include "scene/Model.h"
+#include "mesh/Mesh.h"
+#include "mesh/Model.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

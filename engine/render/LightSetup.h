@@ -8,8 +8,8 @@
 // their outer cone. Point lights are lit but cast no shadow (a cube-map
 // shadow is future work; the loader warns).
 
-#include "render/UniformBlocks.h"
-#include "scene/Mesh.h"
+#include "gpu/UniformBlocks.h"
+#include "mesh/Mesh.h"
 #include "scene/Scene.h"
 
 #include <vector>

@@ -1,6 +1,6 @@
 #include "render/Programs.h"
 
-#include "render/BeckmannTable.h"
+#include "brdf/BeckmannTable.h"
 #include "render/SssVariant.h"
 
 #include <string>

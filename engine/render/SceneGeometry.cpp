@@ -1,7 +1,7 @@
 #include "render/SceneGeometry.h"
 
 #include "core/Log.h"
-#include "scene/ModelLoader.h"
+#include "import/ModelLoader.h"
 
 #include <cmath>
 

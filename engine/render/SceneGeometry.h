@@ -1,7 +1,7 @@
 #pragma once
 // The CPU side of a scene's meshes that the frame plan needs, kept from load
 // time (no GL): each character's mesh and object-space bounds, and its UV
-// layout (scene/UvLayout.h), analysed the first time a texture-space plan
+// layout (mesh/UvLayout.h), analysed the first time a texture-space plan
 // needs it (d'Eon & Luebke 2007 §16.3: the stretch sets the texture size and
 // the blur's tap spacing).
 //
@@ -10,10 +10,10 @@
 //   FramePlan plan = *planFrame(scene, geometry, request, shadowCache);
 
 #include "core/Result.h"
-#include "scene/Mesh.h"
-#include "scene/Model.h"
+#include "mesh/Mesh.h"
+#include "mesh/Model.h"
 #include "scene/Scene.h"
-#include "scene/UvLayout.h"
+#include "mesh/UvLayout.h"
 
 #include <glm/glm.hpp>
 
@@ -22,7 +22,7 @@
 
 namespace dermis {
 
-// Loads every character's model (scene/ModelLoader.h), in scene order. Errors
+// Loads every character's model (import/ModelLoader.h), in scene order. Errors
 // name the character; a mesh without triangles is one.
 Result<std::vector<Model>> loadSceneModels(const Scene& scene);
 

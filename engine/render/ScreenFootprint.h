@@ -6,7 +6,7 @@
 // screen-space (SssPlan) and texture-space (TsPlan) planners.
 
 #include "render/SssPlan.h"
-#include "scene/Mesh.h"
+#include "mesh/Mesh.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

@@ -6,7 +6,7 @@
 // the maps themselves are the frame resources' (render/FrameResources.h).
 
 #include "graph/TextureDesc.h"
-#include "render/UniformBlocks.h"
+#include "gpu/UniformBlocks.h"
 
 #include <array>
 #include <vector>

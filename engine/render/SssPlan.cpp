@@ -1,7 +1,7 @@
 #include "render/SssPlan.h"
 
 #include "render/ScreenFootprint.h"
-#include "render/UniformBlocks.h"
+#include "gpu/UniformBlocks.h"
 
 #include <algorithm>
 #include <cmath>

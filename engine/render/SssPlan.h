@@ -4,18 +4,18 @@
 // predicate and tests can check the decisions.
 //
 // Profiles in use get slots 1..DERMIS_MAX_PROFILES (the stencil value of
-// their pixels). For each slot the chain blurs incrementally (seed 000
+// their pixels). For each slot the chain blurs incrementally (Chappuis 2011
 // §2.2.4): step i blurs the previous result by variance v_i - v_(i-1)
 // (v_(-1) = 0) and adds w_i x result into the accumulation.
 // A Gaussian whose standard deviation at the nearest SSS pixel is below
 // SssSettings::minWidthPx is skipped: it counts as the identity, its weight
 // starts the accumulation, so energy is kept. At ordinary distances that is
-// always Gaussian 0 (0.0064 mm^2, DESIGN.md: "the identity"); only extreme
+// always Gaussian 0 (0.0064 mm^2, docs/screen-space.md: "the identity"); only extreme
 // close-ups, where it spans pixels, blur it. With settings.gaussians < N the
 // widest Gaussians are dropped and their weights folded into the widest one
 // kept.
 
-#include "scene/Mesh.h"
+#include "mesh/Mesh.h"
 #include "scene/Scene.h"
 #include "sss/DiffusionProfile.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // What the texture-space passes draw each character with: its GpuMesh's
 // vertex and index buffers plus a second vertex buffer of UV-layout values
-// (scene/UvLayout.h: dP/du, dP/dv and the distance to a chart border), made
+// (mesh/UvLayout.h: dP/du, dP/dv and the distance to a chart border), made
 // once per character from the layout analysed on the CPU mesh
 // (render/SceneGeometry.h). Attribute locations:
 //   0 position, 1 normal, 2 tangent, 3 uv   (the GpuMesh's, as the G-buffer's)
@@ -11,7 +11,7 @@
 
 #include "gl/GlObjects.h"
 #include "render/GpuScene.h"
-#include "scene/UvLayout.h"
+#include "mesh/UvLayout.h"
 
 #include <vector>
 

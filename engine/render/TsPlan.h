@@ -3,7 +3,7 @@
 // on the CPU from the scene, the view and each mesh's UV layout (no GL), so
 // the render graph skips work by predicate and tests can check the decisions.
 //
-// Per SSS character (seed 000 §2.2.2):
+// Per SSS character (Chappuis 2011 §2.2.2):
 //  - visible: its bounds may cover a pixel (render/ScreenFootprint.h). An
 //    invisible character's texture-space passes are all skipped.
 //  - size: the irradiance texture's side, the power of two nearest to one
@@ -13,7 +13,7 @@
 //    (texture -1 is the irradiance texture, v_(-1) = 0). A step whose
 //    Gaussian is narrower than half a texel where the layout is densest is
 //    skipped: its texture is the previous one. At ordinary sizes that is
-//    always Gaussian 0 (0.0064 mm^2 for skin), which seed 000 §2.2.4 takes
+//    always Gaussian 0 (0.0064 mm^2 for skin), which Chappuis 2011 §2.2.4 takes
 //    as the irradiance itself, so a six-Gaussian profile takes five blurs;
 //    only close-ups where it spans texels blur it. sss.gaussians and
 //    sss.width_scale mean what they mean in screen space (render/SssPlan.h):
@@ -21,8 +21,8 @@
 //    widest kept; widths are scaled.
 //  - TSM: the shadow-casting light behind the character (as the camera sees
 //    it) whose modified translucent shadow map carries light through thin
-//    regions (seed 000 §2.5), with a projection fitted to the character.
-//    Seed 000 applies it for one light; so does this (the irradiance
+//    regions (Chappuis 2011 §2.5), with a projection fitted to the character.
+//    Chappuis 2011 applies it for one light; so does this (the irradiance
 //    texture's alpha holds one thickness). It needs ts.tsm and
 //    transmittance.enabled, which means "light through thin regions" in
 //    both modes.
@@ -30,7 +30,7 @@
 #include "core/Result.h"
 #include "render/LightSetup.h"
 #include "render/SssPlan.h"
-#include "scene/Mesh.h"
+#include "mesh/Mesh.h"
 #include "scene/Scene.h"
 #include "sss/DiffusionProfile.h"
 

@@ -60,12 +60,12 @@ struct Material {
     bool flipV = false;  // sample maps at (u, 1 - v): for meshes with OpenGL-convention UVs
     bool procedural = false;
     glm::vec3 albedo{0.8f, 0.6f, 0.5f};  // linear; multiplies the albedo map
-    float roughness = 0.3f;              // Beckmann m (seed 000 §2.3)
+    float roughness = 0.3f;              // Beckmann m (Chappuis 2011 §2.3)
     float rhoS = 0.18f;                  // specular intensity rho_s
     std::string profile = "skin";        // diffusion profile name, or "none" for an opaque material
 };
 
-// Per-character SSAO overrides (seed 003 §3: radius and sample count per object).
+// Per-character SSAO overrides (Papanikolaou 2013 §3: radius and sample count per object).
 struct CharacterSsao {
     float radiusM = 0.0f;  // world-space hemisphere radius; 0 = use settings.ssao.radius_m
     int samples = 0;       // kMinSsaoSamples..kMaxSsaoSamples; 0 = use settings.ssao.samples
@@ -84,7 +84,7 @@ struct Background {
     glm::vec3 colour{0.05f, 0.05f, 0.06f};  // linear RGB radiance behind everything
 };
 
-// Screen-space SSS (DESIGN.md pass 5; seed 000 §2.2.4, seed 001 §3.2.2 and §4.3.2).
+// Screen-space SSS (docs/screen-space.md, step 6; Chappuis 2011 §2.2.4, Vila Verde 2015 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
     SssVariant variant = SssVariant::Lbb;  // Vila Verde 2015 §5.1 (kSssVariants; render/SssVariant.h)
@@ -95,17 +95,17 @@ struct SssSettings {
     int gaussians = 6;                   // use at most this many of each profile's Gaussians (the widest are dropped)
     float widthScale = 1.0f;             // multiplies every profile's widths (1 = physical)
     float minWidthPx = 0.5f;             // skip a Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel
-    float mix = 0.5f;                    // pre-/post-scatter albedo mix (seed 000 §2.2.4): albedo^mix before the blur
+    float mix = 0.5f;                    // pre-/post-scatter albedo mix (Chappuis 2011 §2.2.4): albedo^mix before the blur
 };
 
-// Back-normal transmittance through thin regions (seed 003 §4.3, Jimenez 2010).
+// Back-normal transmittance through thin regions (Papanikolaou 2013 §4.3, Jimenez 2010).
 struct TransmittanceSettings {
     bool enabled = true;
     float shrinkMm = 1.0f;   // the surface point moves this far inwards along -N before the shadow-map lookup
     float strength = 1.0f;   // multiplies the transmitted light
 };
 
-// Screen-space ambient occlusion (seed 003 §3): a normal-oriented hemisphere.
+// Screen-space ambient occlusion (Papanikolaou 2013 §3): a normal-oriented hemisphere.
 struct SsaoSettings {
     bool enabled = true;
     int samples = 16;       // kMinSsaoSamples..kMaxSsaoSamples (per-character override: Character::ssao)
@@ -121,12 +121,12 @@ struct ShadowSettings {
     ShadowFilter filter = ShadowFilter::Pcf4x4;  // kShadowFilters
 };
 
-// Texture-space SSS (d'Eon & Luebke, seed 000 §2.2-§2.8; DESIGN.md "Texture-space mode").
+// Texture-space SSS (d'Eon & Luebke, Chappuis 2011 §2.2-§2.8; docs/texture-space.md).
 struct TextureSpaceSettings {
     int taps = 7;              // taps per 1-D blur pass (Chappuis 2011 §2.2.4 uses seven), odd, kMinBlurTaps..kMaxBlurTaps
     int minSize = 256;         // irradiance texture side in texels, a power of two: the screen coverage
     int maxSize = 2048;        // picks a power of two within [minSize, maxSize]
-    bool tsm = true;           // modified translucent shadow map: light through thin regions (seed 000 §2.5)
+    bool tsm = true;           // modified translucent shadow map: light through thin regions (Chappuis 2011 §2.5)
     float tsmStrength = 1.0f;  // multiplies the TSM's global-scattering terms (1 = as the profile predicts)
     float seamBlend = 2.0f;    // a Gaussian gives way to local diffuse where a UV chart border is nearer than
                                // this many of its standard deviations (0 = never)
@@ -137,7 +137,7 @@ struct RenderSettings {
     SssMode mode = SssMode::ScreenSpace;  // kSssModes
     float exposure = 1.0f;
     glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
-    bool energyConservation = true;  // seed 000 §2.6: diffuse x (1 - rho_s rho_dt) in and out
+    bool energyConservation = true;  // Chappuis 2011 §2.6: diffuse x (1 - rho_s rho_dt) in and out
     ShadowSettings shadow;
     SssSettings sss;
     TransmittanceSettings transmittance;

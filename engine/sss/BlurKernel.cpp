@@ -27,7 +27,7 @@ Result<BlurKernel> makeGaussianKernel(int taps, float extentSigma) {
                                  std::to_string(extentSigma));
 
     // Each tap stands for its cell [x - h/2, x + h/2]; the outer cells reach to +-infinity so the
-    // whole Gaussian is accounted for (seed 000 §2.2.4's 7-tap weights are this rule at extent 3).
+    // whole Gaussian is accounted for (Chappuis 2011 §2.2.4's 7-tap weights are this rule at extent 3).
     const int half = taps / 2;
     const double spacing = double(extentSigma) / half;
     BlurKernel kernel;

@@ -29,7 +29,7 @@ Result<BlurKernel> makeGaussianKernel(int taps, float extentSigma = 3.0f);
 int writeKernelTaps(const BlurKernel& kernel, glm::vec4 (&taps)[kMaxBlurTaps]);
 
 // The kernel's variance in units of sigma^2, sum_i w_i x_i^2. It exceeds 1 (about 1 + h^2/12 for
-// tap spacing h, Sheppard's correction: 1.08 for seed 000's 7 taps over +-3 sigma), so a pass
+// tap spacing h, Sheppard's correction: 1.08 for Chappuis 2011's 7 taps over +-3 sigma), so a pass
 // that must blur by exactly variance v can scale the offsets by sqrt(v / kernelVarianceSigma2).
 float kernelVarianceSigma2(const BlurKernel& kernel);
 

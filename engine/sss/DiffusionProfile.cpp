@@ -49,7 +49,7 @@ Result<DiffusionProfile> DiffusionProfile::create(std::string name, std::vector<
             return profileError(name, std::string("the ") + kChannelNames[c] +
                                           " weights sum to " + std::to_string(sums[c]) + "; every channel needs a finite, positive sum");
     }
-    // Per-channel normalisation (seed 000 §2.1.4: the weights of each profile sum to 1).
+    // Per-channel normalisation (Chappuis 2011 §2.1.4: the weights of each profile sum to 1).
     for (ProfileGaussian& g : gaussians)
         for (int c = 0; c < 3; ++c) g.weight[c] = static_cast<float>(double(g.weight[c]) / sums[c]);
 
@@ -64,13 +64,13 @@ glm::vec3 DiffusionProfile::radialProfile(float radiusMm) const {
     glm::dvec3 sum(0.0);
     for (const ProfileGaussian& g : mGaussians) {
         const double v = g.varianceMm2;
-        sum += glm::dvec3(g.weight) * (std::exp(-r2 / (2.0 * v)) / (2.0 * kPi * v));  // G(v, r), seed 000 §2.1.4
+        sum += glm::dvec3(g.weight) * (std::exp(-r2 / (2.0 * v)) / (2.0 * kPi * v));  // G(v, r), Chappuis 2011 §2.1.4
     }
     return glm::vec3(sum);
 }
 
 glm::vec3 DiffusionProfile::edgeResponse(float xMm) const {
-    // Integrating G(v, r) over the lit half-plane leaves the 1-D CDF across the edge (DESIGN.md, "Accuracy").
+    // Integrating G(v, r) over the lit half-plane leaves the 1-D CDF across the edge (docs/reference.md).
     glm::dvec3 sum(0.0);
     for (const ProfileGaussian& g : mGaussians)
         sum += glm::dvec3(g.weight) * standardNormalCdf(double(xMm) / std::sqrt(double(g.varianceMm2)));
@@ -78,7 +78,7 @@ glm::vec3 DiffusionProfile::edgeResponse(float xMm) const {
 }
 
 glm::vec3 DiffusionProfile::transmittance(float thicknessMm) const {
-    // Jimenez 2010 (seed 003 §4.3). fmax also maps a NaN thickness to 0, so the result is always finite.
+    // Jimenez 2010 (Papanikolaou 2013 §4.3). fmax also maps a NaN thickness to 0, so the result is always finite.
     const double s = std::fmax(double(thicknessMm), 0.0);
     const double s2 = s * s;
     glm::dvec3 sum(0.0);

@@ -1,7 +1,7 @@
 #pragma once
-// The one diffusion-profile type (DESIGN.md, "Units and the profile"): a sum
+// The one diffusion-profile type (docs/screen-space.md, "Diffusion profiles"): a sum
 // of Gaussians R(r) = sum_i w_i G(v_i, r), G(v, r) = exp(-r^2 / 2v) / (2 pi v)
-// (seed 000 §2.1.4), variances in mm^2, RGB weights normalised per channel
+// (Chappuis 2011 §2.1.4), variances in mm^2, RGB weights normalised per channel
 // so each channel sums to 1 (a white surface stays white after scattering).
 // It serves both SSS modes, the transmittance, the CPU reference and user
 // profiles.
@@ -34,9 +34,9 @@ public:
     // R(r) per channel, r in mm (units 1/mm^2; integrates to 1 over the plane).
     glm::vec3 radialProfile(float radiusMm) const;
     // Response across a straight edge between unlit (x < 0) and unit-lit
-    // (x > 0) half-planes: sum_i w_i Phi(x / sqrt(v_i)) (DESIGN.md, "Accuracy").
+    // (x > 0) half-planes: sum_i w_i Phi(x / sqrt(v_i)) (docs/reference.md).
     glm::vec3 edgeResponse(float xMm) const;
-    // Back-lit transmittance through thickness s (Jimenez 2010, seed 003 §4.3):
+    // Back-lit transmittance through thickness s (Jimenez 2010, Papanikolaou 2013 §4.3):
     // T(s) = sum_i w_i exp(-s^2 / v_i).
     glm::vec3 transmittance(float thicknessMm) const;
     float largestStdDevMm() const;
@@ -46,7 +46,7 @@ private:
     std::vector<ProfileGaussian> mGaussians;
 };
 
-// d'Eon & Luebke's six-Gaussian fit of the three-layer skin model (seed 000 fig. 2.7).
+// d'Eon & Luebke's six-Gaussian fit of the three-layer skin model (Chappuis 2011 fig. 2.7).
 const DiffusionProfile& skinProfile();
 // A marble-like profile: wider and whiter (see ProfileLibrary.cpp for its source).
 const DiffusionProfile& marbleProfile();

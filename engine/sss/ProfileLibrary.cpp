@@ -17,7 +17,7 @@ DiffusionProfile makeBuiltin(const char* name, std::vector<ProfileGaussian> gaus
 }  // namespace
 
 const DiffusionProfile& skinProfile() {
-    // Seed 000 fig. 2.7 (d'Eon & Luebke's fit of Donner & Jensen's three-layer skin model).
+    // Chappuis 2011 fig. 2.7 (d'Eon & Luebke's fit of Donner & Jensen's three-layer skin model).
     static const DiffusionProfile kSkin = makeBuiltin("skin", {
         {0.0064f, {0.233f, 0.455f, 0.649f}},
         {0.0484f, {0.100f, 0.336f, 0.344f}},

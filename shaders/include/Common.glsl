@@ -1,5 +1,5 @@
 // Small helpers every shader may use. All of them are finite for every input
-// (DESIGN.md, "Numerical stability").
+// (docs/stress.md).
 #ifndef DERMIS_COMMON_GLSL
 #define DERMIS_COMMON_GLSL
 
@@ -15,7 +15,7 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
     return lengthSquared > kTiny ? v * inversesqrt(lengthSquared) : fallback;
 }
 
-// albedo^exponent for the pre-/post-scatter split (seed 000 §2.2.4). GLSL's
+// albedo^exponent for the pre-/post-scatter split (Chappuis 2011 §2.2.4). GLSL's
 // pow(0, 0) is undefined (NaN on many GPUs); here x^0 = 1 and 0^e = 0 for e > 0.
 vec3 albedoPower(vec3 albedo, float exponent) {
     if (exponent <= 0.0) return vec3(1.0);

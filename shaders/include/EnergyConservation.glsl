@@ -1,10 +1,10 @@
-// Energy conservation between specular and diffuse (seed 000 §2.6).
+// Energy conservation between specular and diffuse (Chappuis 2011 §2.6).
 //
-// Integration: bind the table made by engine/sss/EnergyTable.cpp (R32F,
+// Integration: bind the table made by engine/brdf/EnergyTable.cpp (R32F,
 // DERMIS_ENERGY_SIZE a side: x = cos(theta), y = roughness m, texel centres on
 // the sample points) and call energyLeftForDiffuse() with N.L for light going
 // in and with N.V for light coming out: the KS BRDF is reciprocal, so the one
-// table serves both (seed 000 §2.6).
+// table serves both (Chappuis 2011 §2.6).
 #ifndef DERMIS_ENERGY_CONSERVATION_GLSL
 #define DERMIS_ENERGY_CONSERVATION_GLSL
 

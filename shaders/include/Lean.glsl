@@ -1,4 +1,4 @@
-// Lean.glsl: LEAN mapping through the deferred SSS (seed 001; Olano & Baker
+// Lean.glsl: LEAN mapping through the deferred SSS (Vila Verde 2015; Olano & Baker
 // 2010). This header is its own manual.
 //
 // WHAT IT DOES
@@ -11,10 +11,10 @@
 //   Gaussian of microfacet slopes; evaluated at the half vector's slope and
 //   normalised like Beckmann it is the specular lobe (Olano & Baker §3.2).
 //
-// ONE SPACE (seed 001 §4.3.1 and §4.3.3)
+// ONE SPACE (Vila Verde 2015 §4.3.1 and §4.3.3)
 //   The blur averages the moments of neighbouring pixels, whose tangent
 //   planes differ, so the G-buffer stores them relative to one common plane:
-//   the view plane (seed 001 §4.3.1), taken per pixel perpendicular to the eye
+//   the view plane (Vila Verde 2015 §4.3.1), taken per pixel perpendicular to the eye
 //   ray. The frame of pixel p is the rotation of view space that takes +z onto
 //   V (the unit vector to the eye) by the smallest angle:
 //     X = (1 - V.x^2/(1+V.z), -V.x V.y/(1+V.z), -V.x)

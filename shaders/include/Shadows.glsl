@@ -4,7 +4,7 @@
 // so the same map serves shadows and the transmittance thickness. A receiver
 // is lit where its own light-space depth minus the bias is no further than the
 // stored occluder depth. The bias is slope-scaled: constant + slope * texel
-// footprint * tan(angle between N and L) (seed 003 §3).
+// footprint * tan(angle between N and L) (Papanikolaou 2013 §3).
 //
 // Two filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
 //   PCF4X4: a 4x4 grid of taps, box-weighted (Chappuis 2011 §2.4);

@@ -3,7 +3,7 @@
 // code of any layer may include it (through core/SharedConstants.h); GLSL
 // gets it from UniformBlocks.glsl or with `#include "SharedConstants.glsl"`.
 // C++ ties its enums to these ids with static_asserts
-// (render/UniformBlocks.h, render/Aov.cpp).
+// (gpu/UniformBlocks.h, render/Aov.cpp).
 
 #ifndef DERMIS_SHARED_CONSTANTS_GLSL
 #define DERMIS_SHARED_CONSTANTS_GLSL

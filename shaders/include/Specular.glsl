@@ -1,6 +1,6 @@
-// Kelemen/Szirmay-Kalos specular (seed 000 §2.3, listings 2.3-2.5).
+// Kelemen/Szirmay-Kalos specular (Chappuis 2011 §2.3, listings 2.3-2.5).
 //
-// Integration: bind the Beckmann table made by render/BeckmannTable.cpp to
+// Integration: bind the Beckmann table made by brdf/BeckmannTable.cpp to
 // `beckmannTable` (R32F, DERMIS_BECKMANN_SIZE texels a side, linear filter,
 // clamp to edge) and call ksSpecular() per light. The table stores
 // P_H = exp(-tan^2(a)/m^2) / (m^2 cos^4(a)) in float (so the seed's
@@ -12,7 +12,7 @@
 
 #include "SharedConstants.glsl"
 
-// Fresnel reflectance at normal incidence for skin (seed 000 §2.3, after d'Eon & Luebke).
+// Fresnel reflectance at normal incidence for skin (Chappuis 2011 §2.3, after d'Eon & Luebke).
 const float kSkinF0 = DERMIS_SKIN_F0;
 
 #ifndef DERMIS_BECKMANN_SIZE
@@ -27,14 +27,14 @@ float beckmannPH(sampler2D beckmannTable, float nDotH, float m) {
     return texture(beckmannTable, (st * float(DERMIS_BECKMANN_SIZE - 1) + 0.5) / float(DERMIS_BECKMANN_SIZE)).r;
 }
 
-// Schlick's approximation (seed 000 listing 2.3).
+// Schlick's approximation (Chappuis 2011 listing 2.3).
 float fresnelSchlick(vec3 H, vec3 V, float f0) {
     float base = 1.0 - clamp(dot(V, H), 0.0, 1.0);
     float exponential = pow(max(base, 0.0), 5.0);
     return exponential + f0 * (1.0 - exponential);
 }
 
-// KS BRDF times N.L (seed 000 listing 2.5): rho_s * P_H * F / |L + V|^2 * N.L.
+// KS BRDF times N.L (Chappuis 2011 listing 2.5): rho_s * P_H * F / |L + V|^2 * N.L.
 // Finite for every input: N.H is clamped into the table, |L + V|^2 is bounded
 // away from 0 (L = -V gives no highlight), and N.L <= 0 gives 0.
 float ksSpecular(sampler2D beckmannTable, vec3 N, vec3 L, vec3 V, float m, float rhoS) {

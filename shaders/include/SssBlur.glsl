@@ -3,12 +3,12 @@
 //
 // WHAT IT DOES
 //   d'Eon & Luebke approximate a diffusion profile by a sum of Gaussians,
-//   R(r) = sum_i w_i G(v_i, r) (seed 000 §2.1.4). Because G(a) * G(b) =
+//   R(r) = sum_i w_i G(v_i, r) (Chappuis 2011 §2.1.4). Because G(a) * G(b) =
 //   G(a + b), Gaussian i can be made by blurring the result of Gaussian i-1
-//   by the difference of variances (seed 000 §2.2.4). Each step is separable:
+//   by the difference of variances (Chappuis 2011 §2.2.4). Each step is separable:
 //   a horizontal then a vertical 1-D pass. The vertical pass also adds
 //   w_i x result into an accumulation target by blending (Jimenez's running
-//   sum, seed 001 §3.2.2), so no per-Gaussian textures are kept.
+//   sum, Vila Verde 2015 §3.2.2), so no per-Gaussian textures are kept.
 //
 // INTEGRATION (engine/passes/SssPasses.cpp does this)
 //   1. Per frame, per profile slot, per Gaussian step i, draw a fullscreen
@@ -36,7 +36,7 @@
 // EXTRA TARGETS AND ALPHA (the LEAN moments, include/Lean.glsl)
 //   The colour's alpha (1, or in the LEAN variants the cross moment M'.xy)
 //   and every extra target (B'.x, B'.y, M'.xx, M'.yy) are blurred with the
-//   very taps and weights of the colour, in the same draw (seed 001 blurred four textures in four passes,
+//   very taps and weights of the colour, in the same draw (Vila Verde 2015 blurred four textures in four passes,
 //   about 4x the cost of the control blur; here the taps' depth keys and
 //   weights are computed once). Their accumulation weight per Gaussian is one
 //   scalar (alpha and extra targets alike), the mean of the Gaussian's RGB
@@ -64,7 +64,7 @@
 //   the eight halves. (On llvmpipe the fetches are the blur's cost; a GPU
 //   reads the same 16 bytes a tap either way.)
 //
-// WIDTH (seed 000 §2.2.4; DESIGN.md pass 5)
+// WIDTH (Chappuis 2011 §2.2.4; docs/screen-space.md, step 6)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
 //   depth z metres, where P = uFrame.features.y is the number of pixels per
 //   metre at 1 m (height / (2 tan(fov/2))). World space is in metres, so each
@@ -75,11 +75,11 @@
 //   Taps read the depth key (profile slot + view depth, UniformBlocks.glsl),
 //   so one test rejects taps across silhouettes, on the background, on
 //   opaque objects and on other profiles.
-//   - bilateral (seed 001 §4.3.2, the default): each tap's kernel weight is
+//   - bilateral (Vila Verde 2015 §4.3.2, the default): each tap's kernel weight is
 //     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
 //     SSS_BILATERAL default below or the block's value, and the sum is
 //     renormalised. No light crosses an edge: no halo, no background bleed.
-//   - control (Jimenez, seed 001 §3.2.2): a tap's colour is lerped back to
+//   - control (Jimenez, Vila Verde 2015 §3.2.2): a tap's colour is lerped back to
 //     the centre's by min(1, k * d); weights are not renormalised.
 //   - fetch-only (benchmarks): the same fetches of colour and key per tap,
 //     summed with the kernel weights and nothing else: the bandwidth floor

@@ -1,16 +1,16 @@
 // TextureSpace.glsl: texture-space subsurface scattering (d'Eon & Luebke, as
-// seed 000 chapter 2 and seed 002 §II describe it). This header is its manual.
+// Chappuis 2011 chapter 2 and Yang et al. 2012 §II describe it). This header is its manual.
 //
 // WHAT IT DOES
 //   The diffusion profile is a sum of Gaussians, R(r) = sum_i w_i G(v_i, r)
-//   (seed 000 §2.1.4). Instead of blurring the lit image on screen, each
+//   (Chappuis 2011 §2.1.4). Instead of blurring the lit image on screen, each
 //   character's irradiance is rendered into its own UV layout and blurred
-//   there, where the surface is flat and seen whole (seed 000 §2.2.1):
+//   there, where the surface is flat and seen whole (Chappuis 2011 §2.2.1):
 //     1. stretch     the world length of one UV unit along u and v, from the
 //                    position derivatives (listing 2.1; per vertex, see
-//                    scene/UvLayout.h), to space the blur taps in mm.
+//                    mesh/UvLayout.h), to space the blur taps in mm.
 //     2. irradiance  lights with PCF shadows (Shadows.glsl), the energy the
-//                    specular lobe leaves (seed 000 §2.6), ambient (times the
+//                    specular lobe leaves (Chappuis 2011 §2.6), ambient (times the
 //                    SSAO where the texel is on screen), times albedo^mix
 //                    (pre-scatter, §2.2.4); in alpha the thickness towards
 //                    the TSM light as exp(-c d) (§2.5, listing 2.7).
@@ -29,7 +29,7 @@
 //                    composite then applies albedo^(1-mix), the outgoing
 //                    energy and the specular, as in screen-space mode.
 //
-// TRANSLUCENT SHADOW MAP (seed 000 §2.5)
+// TRANSLUCENT SHADOW MAP (Chappuis 2011 §2.5)
 //   Rendered from the TSM light, it keeps, per texel, the depth and the UV of
 //   the surface nearest the light (and its normal). For a point C on the far
 //   side of a thin region, A = TSM(C) is where the light went in, and the

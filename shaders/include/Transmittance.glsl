@@ -1,12 +1,12 @@
 // Back-normal transmittance through thin regions (Jimenez et al. 2010,
-// "Real-Time Realistic Skin Translucency", as seed 003 §4.3 describes it).
+// "Real-Time Realistic Skin Translucency", as Papanikolaou 2013 §4.3 describes it).
 //
 // For a pixel on an SSS surface and a light behind it:
 //   1. Shrink the surface point inwards along its normal by `shrinkMm`, so the
-//      shadow-map lookup is not fooled by the surface itself (seed 003 §4.3).
+//      shadow-map lookup is not fooled by the surface itself (Papanikolaou 2013 §4.3).
 //   2. Thickness s = (light-space depth of the shrunk point) - (depth stored
 //      in the shadow map: the surface nearest the light), in mm; >= 0.
-//   3. T(s) = sum_i w_i exp(-s^2 / v_i), with the pixel's profile (DESIGN.md).
+//   3. T(s) = sum_i w_i exp(-s^2 / v_i), with the pixel's profile.
 //   4. E = saturate(0.3 + dot(-N, L)): light arrives through the back, with
 //      a little wrap so the term fades in near the terminator.
 // The caller adds radiance x T(s) x E into the diffuse irradiance before the

@@ -1,6 +1,6 @@
 // Uniform blocks shared by C++ and GLSL: the one definition of each block.
 //
-// C++ includes this file through engine/render/UniformBlocks.h, which maps
+// C++ includes this file through engine/gpu/UniformBlocks.h, which maps
 // the GLSL types onto glm and static_asserts every size; GLSL includes it
 // with `#include "UniformBlocks.glsl"`. Layout is std140, so:
 //   - only vec4, ivec4 and mat4 members (scalars are packed into vec4s by

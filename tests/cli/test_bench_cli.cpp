@@ -1,5 +1,5 @@
 // `dermis bench` and `dermis compare --reference`: run time against error
-// against the CPU reference, from the command line (issue 6).
+// against the CPU reference, from the command line.
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// LEAN mapping through the deferred SSS (seed 001; Olano & Baker 2010):
+// LEAN mapping through the deferred SSS (Vila Verde 2015; Olano & Baker 2010):
 //   - the property that defines LEAN: a bumpy shiny plane whose bumps are
 //     sub-pixel keeps the highlight of the supersampled bumps, where plain
 //     mip-mapped normal mapping makes it too sharp;
@@ -140,7 +140,7 @@ std::string writeBumpyPlaneScene(const test::TempDir& dir, float slopeStdDev = 0
 
 }  // namespace
 
-// Olano & Baker's claim, and seed 001 §2.4.3's: seen from far enough that the
+// Olano & Baker's claim, and Vila Verde 2015 §2.4.3's: seen from far enough that the
 // bumps are sub-pixel, a bumpy shiny surface must look like a rougher one.
 // The reference is the same view with plain normal mapping at 8x8 samples per
 // pixel, every sample at mip level 0 (bias -16), box-filtered on the CPU.
@@ -274,7 +274,7 @@ void auditEveryTarget(Renderer& renderer, TargetAudit& audit) {
 
 }  // namespace
 
-// DESIGN.md, "Numerical stability": a LEAN covariance that is not positive
+// docs/stress.md: a LEAN covariance that is not positive
 // definite after filtering, NaN and Inf texels, and the blur across depth
 // edges must never make a NaN, an Inf or a negative lobe anywhere.
 TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
@@ -342,7 +342,7 @@ std::string writeBackdropScene(const test::TempDir& dir) {
 
 }  // namespace
 
-// Seed 001 §5.1.1: Jimenez's blur (C) lets the background bleed into the
+// Vila Verde 2015 §5.1.1: Jimenez's blur (C) lets the background bleed into the
 // object and leaves a halo; the bilateral blur (LBB) does not. The leak is
 // the backdrop's share of the head's silhouette pixels: the diffuse with the
 // backdrop white minus with it black (the blur is linear), over the head's

@@ -13,7 +13,7 @@
 #include "render/SceneGeometry.h"
 #include "render/ScreenFootprint.h"
 #include "render/TsMeshes.h"
-#include "scene/ProceduralShapes.h"
+#include "procedural/ProceduralShapes.h"
 #include "scene/SceneLoader.h"
 #include "sss/DiffusionProfile.h"
 

@@ -2,7 +2,7 @@
 // The analytic-edge set-up shared by the screen-space and texture-space render
 // tests: a 40 mm skin plane seen straight down from kEdgeHeightM, its albedo a
 // hard black|white step at x = 0. With mix = 1 all albedo is applied before
-// the blur, so the blur's input is exactly a step in irradiance (seed 000
+// the blur, so the blur's input is exactly a step in irradiance (Chappuis 2011
 // §2.2.4) and the diffuse AOV is the blurred step, whose closed form is
 // sum_i w_i Phi(x / sqrt(v_i)) (DiffusionProfile::edgeResponse).
 

@@ -5,7 +5,7 @@
 #include "GlTestEnvironment.h"
 
 #include "core/Image.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "scene/Scene.h"
 
 #include <memory>

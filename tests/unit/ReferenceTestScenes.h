@@ -2,7 +2,7 @@
 // Small in-memory scenes for the CPU reference's tests (no files, no GL).
 
 #include "reference/ReferenceRenderer.h"
-#include "scene/Procedural.h"
+#include "procedural/Procedural.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

@@ -1,5 +1,5 @@
-// The precomputed Beckmann table of seed 000 §2.3.
-#include "render/BeckmannTable.h"
+// The precomputed Beckmann table of Chappuis 2011 §2.3.
+#include "brdf/BeckmannTable.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Separable Gaussian blur kernels (seed 000 §2.2.4).
+// Separable Gaussian blur kernels (Chappuis 2011 §2.2.4).
 #include "sss/BlurKernel.h"
 
 #include <gtest/gtest.h>
@@ -81,8 +81,8 @@ TEST(BlurKernel, IsSymmetricAndEvenlySpacedOverTheExtent) {
     }
 }
 
-TEST(BlurKernel, SevenTapsOverThreeSigmaAreSeed000sWeights) {
-    // Seed 000 §2.2.4: {0.006, 0.061, 0.242, 0.383, 0.242, 0.061, 0.006} at offsets -3..3.
+TEST(BlurKernel, SevenTapsOverThreeSigmaAreChappuisWeights) {
+    // Chappuis 2011 §2.2.4: {0.006, 0.061, 0.242, 0.383, 0.242, 0.061, 0.006} at offsets -3..3.
     const BlurKernel kernel = makeGaussianKernel(7, 3.0f).value();
     const float expected[7] = {0.006f, 0.061f, 0.242f, 0.383f, 0.242f, 0.061f, 0.006f};
     for (size_t i = 0; i < 7; ++i) {
@@ -114,7 +114,7 @@ TEST(BlurKernel, ConvolvingAGaussianAddsTheVariances) {
         // ...which is s^2 + t^2 within a few % from 7 taps up (Sheppard's h^2/12 excess).
         if (taps >= 7) { EXPECT_NEAR(variance / (kS * kS + kT * kT), 1.0, 0.03) << taps << " taps"; }
     }
-    // Seed 000's 7 taps over +-3 sigma: 1 + 1/12 less what the tail cells give back.
+    // Chappuis 2011's 7 taps over +-3 sigma: 1 + 1/12 less what the tail cells give back.
     EXPECT_NEAR(kernelVarianceSigma2(makeGaussianKernel(7, 3.0f).value()), 1.08, 0.005);
     EXPECT_NEAR(kernelVarianceSigma2(makeGaussianKernel(33, 3.0f).value()), 1.0, 0.01);
 }

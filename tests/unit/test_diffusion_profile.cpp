@@ -1,4 +1,4 @@
-// The diffusion profile (DESIGN.md, "Units and the profile"; seed 000 §2.1.3-2.1.4).
+// The diffusion profile (docs/screen-space.md, "Diffusion profiles"; Chappuis 2011 §2.1.3-2.1.4).
 #include "sss/DiffusionProfile.h"
 
 #include <gtest/gtest.h>
@@ -90,7 +90,7 @@ std::string createError(std::vector<ProfileGaussian> gaussians) {
 
 }  // namespace
 
-TEST(DiffusionProfile, SkinIsSeed000Figure27) {
+TEST(DiffusionProfile, SkinIsChappuisFigure27) {
     const DiffusionProfile& skin = skinProfile();
     const float variances[6] = {0.0064f, 0.0484f, 0.187f, 0.567f, 1.99f, 7.41f};
     const glm::vec3 weights[6] = {{0.233f, 0.455f, 0.649f}, {0.100f, 0.336f, 0.344f}, {0.118f, 0.198f, 0.0f},

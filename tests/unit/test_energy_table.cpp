@@ -1,7 +1,7 @@
-// Energy conservation between the KS specular lobe and the diffuse term (seed 000 §2.3, §2.6).
-#include "sss/EnergyTable.h"
+// Energy conservation between the KS specular lobe and the diffuse term (Chappuis 2011 §2.3, §2.6).
+#include "brdf/EnergyTable.h"
 
-#include "render/BeckmannTable.h"
+#include "brdf/BeckmannTable.h"
 
 #include <gtest/gtest.h>
 
@@ -38,7 +38,7 @@ double monteCarloAlbedo(float cosTheta, float m, int strata) {
 
 }  // namespace
 
-TEST(EnergyTable, KsSpecularIsSeed000Listing25) {
+TEST(EnergyTable, KsSpecularIsChappuisListing25) {
     const glm::vec3 n(0.0f, 0.0f, 1.0f);
     const glm::vec3 l = glm::normalize(glm::vec3(0.3f, 0.2f, 0.9f));
     const glm::vec3 v = glm::normalize(glm::vec3(-0.5f, 0.1f, 0.7f));
@@ -107,7 +107,7 @@ TEST(EnergyTable, MatchesMonteCarlo) {
 }
 
 TEST(EnergyTable, SmoothLimitAtNormalIncidenceIsPiTimesF0) {
-    // As m -> 0 the lobe is a mirror; seed 000's P_H integrates to pi there (not 1), and F = F0.
+    // As m -> 0 the lobe is a mirror; Chappuis 2011's P_H integrates to pi there (not 1), and F = F0.
     EXPECT_NEAR(rhoDt(1.0f, 0.0f), kPi * 0.028, 1e-3);
     EXPECT_NEAR(rhoDt(1.0f, 0.01f), kPi * 0.028, 1e-3);
 }

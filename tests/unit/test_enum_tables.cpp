@@ -4,7 +4,7 @@
 // The ids that reach shaders equal the GLSL constants (checked at compile time).
 
 #include "render/Aov.h"
-#include "render/UniformBlocks.h"
+#include "gpu/UniformBlocks.h"
 #include "scene/JsonReader.h"
 #include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"

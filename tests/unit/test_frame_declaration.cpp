@@ -1,6 +1,6 @@
 // The real frame on the test backend, without GL: content scenes are loaded
 // and planned (render/FramePlan.h), the frame is declared
-// (render/FrameDeclaration.h) with 0 for every imported texture, and the
+// (frame/FrameDeclaration.h) with 0 for every imported texture, and the
 // graph is compiled but never executed. The tests read which passes run and
 // why the others are culled, in the words of the timings JSON
 // (describeCull), so what they assert is what `dermis render --timings`
@@ -8,7 +8,7 @@
 #include "TestSupport.h"
 
 #include "graph/RenderGraph.h"
-#include "render/FrameDeclaration.h"
+#include "frame/FrameDeclaration.h"
 #include "render/FramePlan.h"
 #include "render/FrameTimings.h"
 #include "render/SceneGeometry.h"

@@ -1,4 +1,4 @@
-#include "scene/GltfLoader.h"
+#include "import/GltfLoader.h"
 
 #include "FuzzSupport.h"
 

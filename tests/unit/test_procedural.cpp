@@ -1,5 +1,5 @@
-#include "scene/Procedural.h"
-#include "scene/ProceduralHeadShape.h"
+#include "procedural/Procedural.h"
+#include "procedural/ProceduralHeadShape.h"
 
 #include <gtest/gtest.h>
 

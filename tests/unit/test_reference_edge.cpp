@@ -1,4 +1,4 @@
-// The CPU reference against the analytic edge (DESIGN.md, "Accuracy"): a plane
+// The CPU reference against the analytic edge (docs/reference.md): a plane
 // lit from straight above, half of it in the exact shadow of a blocker, must
 // respond across the shadow's edge as sum_i w_i Phi(x / sqrt(v_i)) per channel.
 #include "ReferenceTestScenes.h"

@@ -1,4 +1,4 @@
-// Furnace checks of the CPU reference (DESIGN.md, "Accuracy"): a uniformly lit
+// Furnace checks of the CPU reference (docs/reference.md): a uniformly lit
 // plane must come back unchanged away from its border, and characters without
 // a profile are plain Lambert.
 #include "ReferenceTestScenes.h"

@@ -630,7 +630,7 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": 1}}})"), "/settings/sss/blur: expected a string, got a number");
 }
 
-// Seed 001's comparison: the variant picks the specular path and, unless
+// Vila Verde 2015's comparison: the variant picks the specular path and, unless
 // `blur` names one, the blur (render/SssVariant.h).
 TEST(SceneLoader, SssVariantDefaultsToLeanBilateralAndAcceptsTheThree) {
     const Result<Scene> empty = parseScene("{}", kScenePath);

@@ -1,4 +1,4 @@
-#include "scene/Tangents.h"
+#include "mesh/Tangents.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

@@ -57,7 +57,7 @@ TEST(TsPlan, VisibleSkinHeadTakesFiveIncrementalBlurs) {
         total += head.steps[i].stepVarianceMm2;
         blurred += head.steps[i].skipped ? 0 : 1;
     }
-    // The incremental steps add up to the widest Gaussian (seed 000 §2.2.4),
+    // The incremental steps add up to the widest Gaussian (Chappuis 2011 §2.2.4),
     // and Gaussian 0 is the irradiance itself: five blurs.
     EXPECT_NEAR(total, skin[5].varianceMm2, 1e-5f);
     EXPECT_TRUE(head.steps[0].skipped);

@@ -1,9 +1,9 @@
 // The UV-layout analysis texture-space SSS draws with: stretch (position
 // derivatives) against the UV sphere's closed form, finiteness on degenerate
 // triangles, and distances to chart borders.
-#include "scene/Procedural.h"
-#include "scene/ProceduralShapes.h"
-#include "scene/UvLayout.h"
+#include "procedural/Procedural.h"
+#include "procedural/ProceduralShapes.h"
+#include "mesh/UvLayout.h"
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // loaded once, and the figures the summary at the end compares.
 
 #include "gl/GlContext.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "scene/Scene.h"
 
 #include <map>

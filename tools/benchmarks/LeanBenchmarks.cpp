@@ -1,5 +1,5 @@
 // The cost of LEAN through the deferred SSS (issue: "the LBB frame must cost
-// no more than 1.3x the C frame"; seed 001 §5.1.2 measured about 4x, blurring
+// no more than 1.3x the C frame"; Vila Verde 2015 §5.1.2 measured about 4x, blurring
 // four textures in separate passes). The three variants of default.json
 // render at 1280x720 in one process, round-robin frame by frame (c, lcb, lbb
 // then lbb, lcb, c: a load that rises or falls linearly cancels) so that a

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 001's three variants' frame cost (LeanBenchmarks.cpp).
+// Vila Verde 2015's three variants' frame cost (LeanBenchmarks.cpp).
 
 namespace dermis::bench {
 

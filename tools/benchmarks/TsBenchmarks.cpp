@@ -1,4 +1,4 @@
-// Texture-space (ts) against screen-space (ss) SSS cost (issue 5, "Speed"):
+// Texture-space (ts) against screen-space (ss) SSS cost:
 //  - 1, 2, 4 and 8 heads at 1280x720, framed so that together they cover
 //    about as many pixels as one head does (the camera backs off sqrt(n)
 //    times): screen-space cost should stay about flat, texture-space cost

@@ -1,6 +1,6 @@
 // dermis bench: run time against error. Sweeps the quality knobs of both SSS
 // modes, times each configuration and measures its error against the CPU
-// reference (issue 6).
+// reference.
 #include "Args.h"
 #include "Commands.h"
 #include "MeasuredRender.h"
@@ -34,7 +34,7 @@ using bench::BenchRow;
 // so transmittance and the translucent shadow map stay as the scene sets them.
 const std::vector<std::string> kReferenceDefinition = {"ssao.enabled=false"};
 constexpr int kFirstWarmUpFrames = 3;
-constexpr double kErrorLimit = 0.02;  // "the cheapest setting within 2% relative RMSE" (issue 6)
+constexpr double kErrorLimit = 0.02;  // "the cheapest setting within 2% relative RMSE"
 
 const char* const kHelp =
     "usage: dermis bench SCENE --out DIR [options]\n"

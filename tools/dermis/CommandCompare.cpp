@@ -1,5 +1,5 @@
 // dermis compare: one frame of a scene in screen-space and in texture-space
-// mode, the images, a difference heatmap and the metrics (issue 5).
+// mode, the images, a difference heatmap and the metrics.
 #include "Args.h"
 #include "Commands.h"
 #include "MeasuredRender.h"
@@ -9,7 +9,7 @@
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
 #include "core/TextFile.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include "core/Image.h"
 #include "core/Log.h"
 #include "render/Aov.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "scene/SceneEnums.h"
 
 #include <chrono>

@@ -8,7 +8,7 @@
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "gl/NonFiniteCounter.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "stress/StressCases.h"
 
 #include <nlohmann/json.hpp>

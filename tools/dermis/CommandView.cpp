@@ -1,11 +1,11 @@
-// dermis view: the interactive viewer (engine/viewer/).
+// dermis view: the interactive viewer (tools/viewer/).
 #include "Args.h"
 #include "Commands.h"
 #include "Session.h"
 
 #include "core/Log.h"
 #include "render/Aov.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "scene/SceneLoader.h"
 #include "viewer/Viewer.h"
 

@@ -2,7 +2,7 @@
 
 #include "core/Log.h"
 #include "render/Aov.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 
 #include <chrono>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include "core/Result.h"
 #include "gl/GlContext.h"
 #include "render/FrameTimings.h"
-#include "render/Renderer.h"
+#include "frame/Renderer.h"
 #include "scene/Scene.h"
 
 #include <memory>

@@ -1,0 +1,96 @@
+#include "frame/Renderer.h"
+
+#include "core/Log.h"
+#include "frame/FrameDeclaration.h"
+
+#include <algorithm>
+
+namespace dermis {
+
+Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
+    if (scene.characters.size() > DERMIS_MAX_CHARACTERS) {
+        return makeError(scene.path, std::to_string(scene.characters.size()) + " characters; the G-buffer's object ids allow " +
+                                         std::to_string(DERMIS_MAX_CHARACTERS));
+    }
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        if (scene.lights[i].type == LightType::Point && scene.lights[i].castsShadow) {
+            log::warn(scene.path + ": /lights/" + std::to_string(i) + ": point lights cast no shadow yet (no cube maps)");
+        }
+    }
+    if (scene.lights.size() > DERMIS_MAX_LIGHTS) {
+        log::warn(scene.path + ": only the first " + std::to_string(DERMIS_MAX_LIGHTS) + " of " +
+                  std::to_string(scene.lights.size()) + " lights are used");
+    }
+    auto models = loadSceneModels(scene);
+    if (!models.ok()) return models.error();
+    auto gpuScene = GpuScene::create(scene, *models);
+    if (!gpuScene.ok()) return gpuScene.error();
+    auto programs = Programs::build();
+    if (!programs.ok()) return programs.error();
+    return std::unique_ptr<Renderer>(
+        new Renderer(scene, SceneGeometry(*models), std::move(*gpuScene), std::move(*programs)));
+}
+
+Renderer::Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, Programs programs)
+    : mScene(scene),
+      mGeometry(std::move(geometry)),
+      mGpuScene(std::move(gpuScene)),
+      mPrograms(std::move(programs)),
+      mBackend(mProfiler),
+      mResources(std::make_unique<FrameResources>(mGpuScene, mPrograms, mBackend.framebuffers())) {}
+
+Status Renderer::renderFrame(const FrameRequest& request) {
+    auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
+    if (!plan.ok()) return plan.error();
+    mPlan = std::move(*plan);
+    if (const Status prepared = mResources->prepare(*mPlan, mGeometry); !prepared.ok()) return prepared;
+    mOutputAov = request.aov;
+
+    mProfiler.beginFrame(mFrame);
+    graph::RenderGraph graph;
+    declareFrame(graph, *mPlan, mResources->inputs());
+    const Status compiled = graph.compile();
+    if (!compiled.ok()) return compiled;
+    graph.execute(mBackend);
+    mBackend.endFrame();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    recordShadowMaps(*mPlan, graph, mShadowCache);
+
+    mTimings.addPassReports(graph.passReports());
+    mTimings.addTimings(mProfiler.takeCompleted());
+    ++mFrame;
+    return success();
+}
+
+Status Renderer::reloadShaders() {
+    auto programs = Programs::build();
+    if (!programs.ok()) return programs.error();
+    mPrograms = std::move(*programs);
+    return success();
+}
+
+void Renderer::finishTimings() {
+    mProfiler.drain();
+    mTimings.addTimings(mProfiler.takeCompleted());
+}
+
+Result<Image> Renderer::readOutput() {
+    const GLuint output = mResources->output();
+    if (output == 0) return makeError("renderer", "no frame rendered yet");
+    Image image;
+    image.width = static_cast<int>(mResources->outputDesc().width);
+    image.height = static_cast<int>(mResources->outputDesc().height);
+    image.colourSpace = mOutputAov == Aov::Final ? ColourSpace::Srgb : ColourSpace::Linear;
+    std::vector<glm::vec4> bottomFirst(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
+    glGetTextureImage(output, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomFirst.size() * sizeof(glm::vec4)),
+                      bottomFirst.data());
+    image.texels.resize(bottomFirst.size());
+    const auto rowLength = static_cast<size_t>(image.width);
+    for (size_t y = 0; y < static_cast<size_t>(image.height); ++y) {
+        std::copy_n(bottomFirst.begin() + static_cast<std::ptrdiff_t>((static_cast<size_t>(image.height) - 1 - y) * rowLength),
+                    rowLength, image.texels.begin() + static_cast<std::ptrdiff_t>(y * rowLength));
+    }
+    return image;
+}
+
+}  // namespace dermis

@@ -1,0 +1,73 @@
+#pragma once
+// The renderer: owns the GPU copy of a scene and, every frame, plans it
+// (render/FramePlan.h, no GL), prepares its GL resources
+// (render/FrameResources.h), declares the render graph
+// (frame/FrameDeclaration.h), lets it cull, and runs it. A GL context must
+// be current.
+//
+//   Renderer renderer = *Renderer::create(scene);
+//   renderer.renderFrame({640, 360, Aov::Final});
+//   Image image = *renderer.readOutput();
+
+#include "core/Image.h"
+#include "core/Result.h"
+#include "gl/GlGraphBackend.h"
+#include "gl/GpuProfiler.h"
+#include "render/Aov.h"
+#include "render/FramePlan.h"
+#include "render/FrameResources.h"
+#include "render/FrameTimings.h"
+#include "render/GpuScene.h"
+#include "render/Programs.h"
+#include "render/SceneGeometry.h"
+#include "render/ShadowCache.h"
+#include "scene/Scene.h"
+
+#include <memory>
+#include <optional>
+
+namespace dermis {
+
+class Renderer {
+public:
+    // Loads and uploads the scene's content and compiles the shaders. The
+    // scene must outlive the renderer.
+    static Result<std::unique_ptr<Renderer>> create(const Scene& scene);
+
+    Status renderFrame(const FrameRequest& request);
+    // The last frame's output: tone-mapped sRGB (values in [0,1]) for
+    // Aov::Final, linear floats otherwise. Rows top first.
+    Result<Image> readOutput();
+    // Waits for outstanding GPU timers and folds them into timings().
+    void finishTimings();
+    // The last frame's output texture (RGBA8 for Aov::Final, RGBA32F
+    // otherwise), for a viewer to draw without a CPU read-back.
+    GLuint outputTexture() const { return mResources->output(); }
+    // Inspect every texture each pass writes (gl/NonFiniteCounter.h); slow.
+    void setPassInspector(gl::PassInspector inspector) { mBackend.setInspector(std::move(inspector)); }
+    // Recompiles every shader from disk. On an error the old programs stay
+    // in use and the error (file and compiler log) is returned.
+    Status reloadShaders();
+
+    const FrameTimings& timings() const { return mTimings; }
+    void resetTimings() { mTimings = FrameTimings{}; }
+    GpuScene& gpuScene() { return mGpuScene; }
+
+private:
+    Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, Programs programs);
+
+    const Scene& mScene;
+    SceneGeometry mGeometry;
+    GpuScene mGpuScene;
+    Programs mPrograms;
+    gl::GpuProfiler mProfiler;
+    gl::GlGraphBackend mBackend;
+    ShadowCache mShadowCache;
+    std::unique_ptr<FrameResources> mResources;
+    std::optional<FramePlan> mPlan;  // the frame being run: its passes read it while they execute
+    FrameTimings mTimings;
+    Aov mOutputAov = Aov::Final;
+    uint64_t mFrame = 0;
+};
+
+}  // namespace dermis

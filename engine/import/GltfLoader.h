@@ -1,0 +1,16 @@
+#pragma once
+// glTF 2.0 (.gltf and .glb) through tinygltf. Every primitive of every mesh
+// node in the default scene is merged into one Model with its node transform
+// applied. Tangents are generated (MikkTSpace-style) when the file has none.
+// Images decode through OpenImageIO, so any format it reads works.
+
+#include "core/Result.h"
+#include "mesh/Model.h"
+
+#include <string>
+
+namespace dermis {
+
+Result<Model> loadGltf(const std::string& path);
+
+}  // namespace dermis

@@ -1,0 +1,17 @@
+#include "mesh/Mesh.h"
+
+#include <limits>
+
+namespace dermis {
+
+Bounds MeshData::bounds() const {
+    if (vertices.empty()) return {};
+    Bounds b{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+    for (const Vertex& v : vertices) {
+        b.min = glm::min(b.min, v.position);
+        b.max = glm::max(b.max, v.position);
+    }
+    return b;
+}
+
+}  // namespace dermis

@@ -1,0 +1,156 @@
+#include "mesh/UvLayout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+
+namespace dermis {
+namespace {
+
+// UV positions are compared on a 2^-20 grid: vertices of one chart that share
+// a UV are the same surface point (a normal or tangent split), and an edge
+// whose UV endpoints occur in one triangle only lies on a chart border.
+constexpr float kUvGrid = 1048576.0f;
+// A triangle whose spatial area is below this fraction of its squared edge
+// lengths is degenerate in space.
+constexpr float kDegenerateArea = 1e-9f;
+constexpr float kDegenerateUvArea = 1e-14f;
+
+uint64_t uvKey(const glm::vec2& uv) {
+    const auto quantise = [](float x) {
+        return static_cast<uint32_t>(static_cast<int32_t>(std::lround(double(x) * kUvGrid)));
+    };
+    return (uint64_t(quantise(uv.x)) << 32) | uint64_t(quantise(uv.y));
+}
+
+struct PairHash {
+    size_t operator()(const std::pair<uint32_t, uint32_t>& p) const {
+        return std::hash<uint64_t>()((uint64_t(p.first) << 32) | p.second);
+    }
+};
+
+float percentile(std::vector<float> values, float fraction) {
+    if (values.empty()) return 0.0f;
+    const auto k = static_cast<size_t>(fraction * float(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
+}
+
+void accumulateDerivatives(const MeshData& mesh, UvLayout& out) {
+    const size_t n = mesh.vertices.size();
+    std::vector<float> weights(n, 0.0f);
+    out.dPdu.assign(n, glm::vec3(0.0f));
+    out.dPdv.assign(n, glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const uint32_t i[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+        if (i[0] >= n || i[1] >= n || i[2] >= n) continue;
+        const Vertex& a = mesh.vertices[i[0]];
+        const glm::vec3 e1 = mesh.vertices[i[1]].position - a.position;
+        const glm::vec3 e2 = mesh.vertices[i[2]].position - a.position;
+        const glm::vec2 d1 = mesh.vertices[i[1]].uv - a.uv;
+        const glm::vec2 d2 = mesh.vertices[i[2]].uv - a.uv;
+        const float det = d1.x * d2.y - d2.x * d1.y;
+        const float spatialArea = glm::length(glm::cross(e1, e2));
+        if (std::abs(det) < kDegenerateUvArea || !(spatialArea > kDegenerateArea * (glm::dot(e1, e1) + glm::dot(e2, e2))))
+            continue;
+        // P(uv) is linear over the triangle: [e1 e2] = [dP/du dP/dv] [d1 d2].
+        const glm::vec3 dPdu = (e1 * d2.y - e2 * d1.y) / det;
+        const glm::vec3 dPdv = (e2 * d1.x - e1 * d2.x) / det;
+        if (!std::isfinite(glm::dot(dPdu, dPdu)) || !std::isfinite(glm::dot(dPdv, dPdv))) continue;
+        // Weighting by UV area keeps a UV sliver (tiny det, large dP/du) from dominating.
+        const float weight = std::abs(det);
+        for (uint32_t v : i) {
+            out.dPdu[v] += weight * dPdu;
+            out.dPdv[v] += weight * dPdv;
+            weights[v] += weight;
+        }
+    }
+    for (size_t v = 0; v < n; ++v) {
+        if (weights[v] > 0.0f) {
+            out.dPdu[v] /= weights[v];
+            out.dPdv[v] /= weights[v];
+        }
+    }
+}
+
+void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
+    const size_t n = mesh.vertices.size();
+    // Nodes: distinct UV positions.
+    std::unordered_map<uint64_t, uint32_t> nodeOfKey;
+    std::vector<uint32_t> nodeOfVertex(n);
+    for (size_t v = 0; v < n; ++v) {
+        const auto inserted = nodeOfKey.emplace(uvKey(mesh.vertices[v].uv), static_cast<uint32_t>(nodeOfKey.size()));
+        nodeOfVertex[v] = inserted.first->second;
+    }
+    const size_t nodes = nodeOfKey.size();
+
+    std::unordered_map<std::pair<uint32_t, uint32_t>, int, PairHash> edgeUses;
+    std::vector<std::vector<std::pair<uint32_t, float>>> neighbours(nodes);
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t va = mesh.indices[t + static_cast<size_t>(k)];
+            const uint32_t vb = mesh.indices[t + static_cast<size_t>((k + 1) % 3)];
+            if (va >= n || vb >= n) continue;
+            uint32_t a = nodeOfVertex[va];
+            uint32_t b = nodeOfVertex[vb];
+            if (a == b) continue;
+            if (a > b) std::swap(a, b);
+            if (edgeUses[{a, b}]++ == 0) {
+                const float length = glm::length(mesh.vertices[va].position - mesh.vertices[vb].position);
+                neighbours[a].push_back({b, length});
+                neighbours[b].push_back({a, length});
+            }
+        }
+    }
+
+    // Dijkstra from every node on an edge that only one triangle uses.
+    std::vector<float> distance(nodes, kFarFromBorder);
+    using Entry = std::pair<float, uint32_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (const auto& [edge, uses] : edgeUses) {
+        if (uses != 1) continue;
+        for (uint32_t node : {edge.first, edge.second}) {
+            if (distance[node] > 0.0f) {
+                distance[node] = 0.0f;
+                queue.push({0.0f, node});
+            }
+        }
+    }
+    while (!queue.empty()) {
+        const auto [d, node] = queue.top();
+        queue.pop();
+        if (d > distance[node]) continue;
+        for (const auto& [next, length] : neighbours[node]) {
+            const float candidate = d + length;
+            if (candidate < distance[next]) {
+                distance[next] = candidate;
+                queue.push({candidate, next});
+            }
+        }
+    }
+    out.borderDistance.resize(n);
+    for (size_t v = 0; v < n; ++v) out.borderDistance[v] = std::min(distance[nodeOfVertex[v]], kFarFromBorder);
+}
+
+}  // namespace
+
+UvLayout analyseUvLayout(const MeshData& mesh) {
+    UvLayout out;
+    accumulateDerivatives(mesh, out);
+    computeBorderDistances(mesh, out);
+    std::vector<float> typical;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const float u = glm::length(out.dPdu[v]);
+        const float w = glm::length(out.dPdv[v]);
+        if (u > 0.0f && w > 0.0f) typical.push_back(std::sqrt(u * w));
+    }
+    out.medianStretch = percentile(typical, 0.5f);
+    out.denseStretch = percentile(std::move(typical), 0.1f);
+    return out;
+}
+
+}  // namespace dermis

@@ -1,0 +1,50 @@
+#pragma once
+// What texture-space SSS needs to know about a mesh's UV layout, worked out
+// once on the CPU from the mesh alone (no GL):
+//
+//  - per vertex, the derivatives of the position with respect to u and v, in
+//    object units per UV unit. Their world-space lengths are the stretch map
+//    (Chappuis 2011 §2.2.4 listing 2.1, Yang et al. 2012 §II): how far on the surface one
+//    unit of u or v reaches, which sets the spacing of the blur taps.
+//    Listing 2.1 takes dFdx(worldPosition) per fragment, which is constant
+//    over each triangle; on the 64 x 32 UV sphere that is off by up to
+//    dtheta cot(theta) (10% at 45 degrees latitude) and steps from triangle
+//    to triangle. Averaged per vertex (weighted by UV area) and interpolated,
+//    the error is second order instead.
+//  - per vertex, the distance along the surface to the nearest UV chart
+//    border (a seam or the mesh's edge), in object units. A texture-space blur
+//    cannot see light from across a border, so near one the final gather
+//    blends to local diffuse (docs/texture-space.md).
+//  - summary stretch figures from which the planner picks a texture size.
+//
+// Degenerate triangles (no area in UV, or none in space) add nothing, so every
+// value is finite; a vertex with only degenerate triangles gets zero
+// derivatives.
+
+#include "mesh/Mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace dermis {
+
+struct UvLayout {
+    std::vector<glm::vec3> dPdu;        // per vertex, object units per unit of u
+    std::vector<glm::vec3> dPdv;        // per vertex, object units per unit of v
+    std::vector<float> borderDistance;  // per vertex, object units along mesh edges to a chart border
+    // Median over vertices of sqrt(|dP/du| |dP/dv|): the typical object-space
+    // length of one UV unit. 0 for a mesh without a usable triangle.
+    float medianStretch = 0.0f;
+    // The 10th percentile of the same: the dense parts of the layout (a
+    // lower percentile, or min(|dP/du|, |dP/dv|), would be ruled by the
+    // singular points of a layout such as a sphere's poles).
+    float denseStretch = 0.0f;
+};
+
+// A border vertex that no edge path reaches keeps this distance.
+constexpr float kFarFromBorder = 1e6f;
+
+UvLayout analyseUvLayout(const MeshData& mesh);
+
+}  // namespace dermis

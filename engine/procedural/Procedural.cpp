@@ -1,0 +1,53 @@
+#include "procedural/Procedural.h"
+
+#include "procedural/ProceduralHead.h"
+#include "procedural/ProceduralShapes.h"
+#include "procedural/ProceduralTextures.h"
+
+#include <memory>
+#include <mutex>
+
+namespace dermis {
+namespace {
+
+constexpr int kHeadAlbedoSize = 1024;
+constexpr int kHeadNormalSize = 2048;
+
+Model makeHeadModel() {
+    HeadMesh head = makeHeadMesh();
+    Model model;
+    model.albedoMap = makeHeadAlbedoMap(head, kHeadAlbedoSize);
+    model.normalMap = makeHeadNormalMap(head, kHeadNormalSize);
+    model.mesh = std::move(head.mesh);
+    return model;
+}
+
+Model modelOf(MeshData mesh) {
+    Model model;
+    model.mesh = std::move(mesh);
+    return model;
+}
+
+}  // namespace
+
+std::vector<std::string> proceduralModelNames() { return {"head", "plane", "sphere", "wedge"}; }
+
+Result<Model> makeProceduralModel(const std::string& name) {
+    if (name == "head") {
+        // Seconds to generate and deterministic: made once per process, copied after.
+        static std::mutex sMutex;
+        static std::unique_ptr<Model> sHead;
+        std::lock_guard<std::mutex> lock(sMutex);
+        if (!sHead) sHead = std::make_unique<Model>(makeHeadModel());
+        return *sHead;
+    }
+    if (name == "plane") return modelOf(makePlaneMesh());
+    if (name == "sphere") return modelOf(makeSphereMesh());
+    if (name == "wedge") return modelOf(makeWedgeMesh());
+
+    std::string known;
+    for (const std::string& candidate : proceduralModelNames()) known += (known.empty() ? "" : ", ") + candidate;
+    return makeError("", "unknown procedural mesh \"" + name + "\" (known: " + known + ")");
+}
+
+}  // namespace dermis

@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""Checks the documentation as a reader meets it (ctest: Docs.FrontDoorAndLinks):
+- README.md stays a front door: under 300 lines;
+- every relative link and image in README.md and docs/*.md resolves to a
+  file in the tree, and every #anchor to a heading of that file;
+- the tree cites papers by the keys of docs/references.md: no 'seed 00N',
+  'DESIGN.md' or 'issue N', which name nothing a reader of the repository has.
+Prints every problem, exits 1 if there is one."""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+root = Path(sys.argv[1]).resolve()
+problems = []
+
+readme_lines = (root / "README.md").read_text(encoding="utf-8").count("\n")
+if readme_lines >= 300:
+    problems.append(f"README.md: {readme_lines} lines; the front door stays under 300 (move detail to docs/)")
+
+
+def anchors(path):
+    """GitHub-style heading anchors of a Markdown file."""
+    result = set()
+    for line in path.read_text(encoding="utf-8").splitlines():
+        match = re.match(r"#+\s+(.*)", line)
+        if match:
+            text = re.sub(r"[`*_]", "", match.group(1)).strip().lower()
+            result.add(re.sub(r"[^\w\- ]", "", text).replace(" ", "-"))
+    return result
+
+
+link = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
+for page in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+    text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
+    for target in link.findall(text):
+        if re.match(r"[a-z]+:", target):
+            continue
+        file_part, _, anchor = target.partition("#")
+        destination = (page.parent / file_part).resolve() if file_part else page
+        if not destination.exists():
+            problems.append(f"{page.relative_to(root)}: link to {target}: no such file")
+        elif anchor and destination.suffix == ".md" and anchor not in anchors(destination):
+            problems.append(f"{page.relative_to(root)}: link to {target}: no heading with that anchor")
+
+stale = re.compile(r"[Ss]eed 00[0-9]|DESIGN\.md|\bissue [0-9]")
+tracked = subprocess.run(["git", "-C", str(root), "ls-files"], capture_output=True, text=True, check=True).stdout.split()
+for name in tracked:
+    path = root / name
+    if name == "tests/docs/check_docs.py" or path.suffix in {".png", ".exr", ".jpg", ".glb", ".bin"} or not path.is_file():
+        continue
+    for number, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+        if stale.search(line):
+            problems.append(f"{name}:{number}: cites '{stale.search(line).group(0)}', which the repository does not hold; "
+                            "cite by the keys of docs/references.md")
+
+for problem in problems:
+    print(problem)
+print(f"docs: {len(problems)} problems")
+sys.exit(1 if problems else 0)

@@ -1,0 +1,48 @@
+#pragma once
+// One side of the A/B comparison: the scene its panels edit, the scene its
+// renderer reads (the edited one with the effect switches applied, rebuilt
+// every frame) and the renderer itself, created on first use so that the B
+// side costs nothing until the split or difference view asks for it.
+
+#include "core/Result.h"
+#include "frame/Renderer.h"
+#include "scene/Scene.h"
+#include "viewer/EffectSwitches.h"
+#include "viewer/PassHistory.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace dermis::viewer {
+
+class Variant {
+public:
+    explicit Variant(Scene scene);
+    Variant(const Variant&) = delete;
+    Variant& operator=(const Variant&) = delete;
+
+    Scene& edited() { return mEdited; }
+    const Scene& edited() const { return mEdited; }
+
+    // Applies the switches, creates the renderer when there is none yet, renders
+    // and folds the frame's timings into history().
+    Status render(const FrameRequest& request, const EffectSwitches& switches);
+    bool hasRenderer() const { return mRenderer != nullptr; }
+    GLuint outputTexture() const { return mRenderer ? mRenderer->outputTexture() : 0; }
+    // Recompiles the shaders; a renderer not created yet will read them when it is.
+    Status reloadShaders();
+
+    PassHistory& history() { return mHistory; }
+    const PassHistory& history() const { return mHistory; }
+
+private:
+    Scene mEdited;
+    // Declared before the renderer, which keeps a reference to it: destroyed after it.
+    std::unique_ptr<Scene> mRendered;
+    std::unique_ptr<Renderer> mRenderer;
+    std::optional<Error> mCreateError;  // a renderer that failed to load is not retried every frame
+    PassHistory mHistory;
+};
+
+}  // namespace dermis::viewer
