@@ -1,6 +1,6 @@
 // Constants shared by C++ and GLSL: limits, the ids of closed sets that reach
 // shaders, texture units and physical constants. Only #defines, so that C++
-// code of any layer may include it (through core/SharedConstants.h); GLSL
+// code of any layer may include it as "include/SharedConstants.glsl"; GLSL
 // gets it from UniformBlocks.glsl or with `#include "SharedConstants.glsl"`.
 // C++ ties its enums to these ids with static_asserts
 // (gpu/UniformBlocks.h, render/Aov.cpp).
