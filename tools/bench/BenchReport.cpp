@@ -3,9 +3,12 @@
 #include "bench/ParetoFront.h"
 #include "scene/SceneEnums.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string_view>
 
 namespace dermis::bench {
 namespace {
@@ -47,7 +50,15 @@ nlohmann::ordered_json rowJson(const BenchRow* row) {
 }  // namespace
 
 bool isSssPass(const std::string& passName) {
-    return passName.rfind("sss ", 0) == 0 || passName.rfind("ts ", 0) == 0 || passName == "transmittance";
+    // The passes every frame has whatever its SSS technique
+    // (frame/FrameDeclaration.cpp). Everything else a mode declares is its
+    // subsurface scattering, so a new technique's passes count without
+    // being listed here.
+    static const std::array<std::string_view, 8> kFramePasses = {
+        "gbuffer", "ssao", "ssao blur", "lighting", "composite", "tonemap", "aov", "lean specular"};
+    constexpr std::string_view kShadowPrefix = "shadow:";
+    if (passName.rfind(kShadowPrefix, 0) == 0) return false;
+    return std::find(kFramePasses.begin(), kFramePasses.end(), passName) == kFramePasses.end();
 }
 
 void markParetoFronts(std::vector<BenchRow>& rows) {

@@ -33,7 +33,9 @@ struct BenchRow {
     std::vector<PassSummary> passes;     // executed passes
 };
 
-// True for the passes that a mode adds for subsurface scattering.
+// True for the passes that a mode adds for subsurface scattering: every pass
+// but those each frame has whatever its technique (shadows, G-buffer, SSAO,
+// lighting, composite, tone mapping, the AOV and the LEAN specular).
 bool isSssPass(const std::string& passName);
 
 // Marks each row's onParetoFront (frame GPU ms against relative RMSE, per mode).
