@@ -2,9 +2,11 @@
 """Plots for `dermis bench`: reads DIR/results.csv, DIR/passes.csv and
 DIR/summary.json, which the bench writes, and draws
 
-  DIR/pareto.png  relative RMSE against the reference over frame GPU ms, one
-                  colour per mode, each mode's Pareto front joined by a line,
-                  the shipped defaults ringed;
+  DIR/pareto.png  two panels, total error (against the full reference) and
+                  scatter error (against the matched-irradiance reference),
+                  over frame GPU ms, one colour per mode, each mode's Pareto
+                  front joined by a line, the shipped defaults ringed;
+  DIR/regions.png the shipped defaults' relative RMSE by cause and region;
   DIR/passes.png  stacked GPU ms per pass group of the configurations on the
                   fronts and the defaults.
 
@@ -59,10 +61,11 @@ def read_rows(directory):
     with open(os.path.join(directory, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     for row in rows:
-        for key in ("frame_gpu_ms", "relative_rmse"):
+        for key in ("frame_gpu_ms", "relative_rmse", "scatter_rel_rmse"):
             row[key] = float(row[key])
         row["default"] = row["default"] == "1"
         row["pareto"] = row["pareto"] == "1"
+        row["pareto_scatter"] = row["pareto_scatter"] == "1"
     return rows
 
 
@@ -73,47 +76,97 @@ def save(figure, path):
     plt.close(figure)
 
 
-def plot_pareto(rows, summary, path):
-    figure, axes = plt.subplots(figsize=(15, 6.5))
+# (error column, front column, axis label) of each panel of pareto.png.
+PARETO_PANELS = [
+    ("relative_rmse", "pareto", "total error: relative RMSE against the full CPU reference (%)"),
+    ("scatter_rel_rmse", "pareto_scatter",
+     "scatter error: relative RMSE against the matched-irradiance reference (%)"),
+]
+
+
+def plot_front(axes, rows, error_key, front_key):
     fronts = []
     # The modes as the bench wrote them (its table of modes); a mode without a style gets the next colour.
     for index, mode in enumerate(dict.fromkeys(r["mode"] for r in rows)):
         colour, name = MODE_STYLE.get(mode, (f"C{index + 2}", mode))
-        mine = [r for r in rows if r["mode"] == mode]
+        mine = [r for r in rows if r["mode"] == mode and r[error_key] == r[error_key]]
         if not mine:
             continue
-        axes.scatter([r["frame_gpu_ms"] for r in mine], [100 * r["relative_rmse"] for r in mine], s=18,
+        axes.scatter([r["frame_gpu_ms"] for r in mine], [100 * r[error_key] for r in mine], s=18,
                      color=colour, alpha=0.45, label=f"{name}: every configuration")
-        front = sorted((r for r in mine if r["pareto"]), key=lambda r: r["frame_gpu_ms"])
-        axes.plot([r["frame_gpu_ms"] for r in front], [100 * r["relative_rmse"] for r in front], "-o",
+        front = sorted((r for r in mine if r[front_key]), key=lambda r: r["frame_gpu_ms"])
+        axes.plot([r["frame_gpu_ms"] for r in front], [100 * r[error_key] for r in front], "-o",
                   color=colour, markersize=5, label=f"{name}: Pareto front")
         for r in front:
-            axes.annotate(r["id"], (r["frame_gpu_ms"], 100 * r["relative_rmse"]), fontsize=7,
+            axes.annotate(r["id"], (r["frame_gpu_ms"], 100 * r[error_key]), fontsize=7,
                           xytext=(3, 3), textcoords="offset points", color=colour)
         fronts.extend(front)
         for r in mine:
             if r["default"]:
-                axes.scatter([r["frame_gpu_ms"]], [100 * r["relative_rmse"]], s=160, facecolors="none",
+                axes.scatter([r["frame_gpu_ms"]], [100 * r[error_key]], s=160, facecolors="none",
                              edgecolors="black", linewidths=1.5, zorder=5)
     axes.scatter([], [], s=160, facecolors="none", edgecolors="black", label="shipped default settings")
     axes.set_xscale("log")
-    axes.set_xlabel(f"frame GPU ms (median of {summary['frames']} frames; {summary['renderer']})")
-    axes.set_ylabel("relative RMSE of the diffuse AOV against the CPU reference (%)")
-    fixed = ", ".join(summary.get("every_configuration", [])) or "nothing"
-    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}: run time against error\n"
-                   f"(set in every configuration, as in the reference: {fixed})", fontsize=10)
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=8)
+    return fronts
+
+
+def plot_pareto(rows, summary, path):
+    figure, panels = plt.subplots(1, 2, figsize=(18, 6.5))
+    fronts = {}
+    for axes, (error_key, front_key, label) in zip(panels, PARETO_PANELS):
+        for r in plot_front(axes, rows, error_key, front_key):
+            fronts[r["id"]] = r
+        axes.set_xlabel(f"frame GPU ms (median of {summary['frames']} frames; {summary['renderer']})")
+        axes.set_ylabel(label, fontsize=9)
+        axes.legend(fontsize=7)
+    panels[1].axhline(100 * summary["scatter_error_limit"], color="grey", linestyle="--", linewidth=1)
+    fixed = ", ".join(summary.get("every_configuration", [])) or "nothing"
+    figure.suptitle(f"{summary['scene']} at {summary['width']}x{summary['height']}: run time against error "
+                    f"(set in every configuration, as in the reference: {fixed})", fontsize=10)
     # The fronts' configurations, by the id written beside each point.
-    key = "\n".join(f"{r['id']:>3}  {r['mode']} {r['label']}" for r in fronts)
-    figure.text(0.635, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=7, family="monospace",
+    key = "\n".join(f"{r['id']:>3}  {r['mode']} {r['label']}" for r in sorted(fronts.values(), key=lambda r: int(r["id"])))
+    figure.text(0.755, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=6, family="monospace",
                 va="center")
-    figure.tight_layout(rect=(0, 0, 0.63, 1))
+    figure.tight_layout(rect=(0, 0, 0.75, 0.95))
+    save(figure, path)
+
+
+def plot_regions(summary, path):
+    """The shipped defaults' relative RMSE, one group of bars per region, one bar per mode and cause."""
+    modes = [m for m, entry in summary["modes"].items() if entry.get("default_errors")]
+    if not modes:
+        return
+    causes = list(summary["modes"][modes[0]]["default_errors"].keys())
+    regions = list(summary["modes"][modes[0]]["default_errors"][causes[0]].keys())
+    figure, axes = plt.subplots(figsize=(12, 5))
+    bars = [(m, c) for m in modes for c in causes]
+    width = 0.8 / len(bars)
+    hatches = {"total": "", "irradiance": "//", "scatter": ".."}
+    for k, (mode, cause) in enumerate(bars):
+        colour, name = MODE_STYLE.get(mode, (f"C{k}", mode))
+        values = []
+        for region in regions:
+            figure_ = summary["modes"][mode]["default_errors"][cause][region]
+            values.append(100 * figure_["relative_rmse"] if figure_ and figure_["relative_rmse"] is not None else 0.0)
+        xs = [i + (k - len(bars) / 2 + 0.5) * width for i in range(len(regions))]
+        axes.bar(xs, values, width, color=colour, alpha=0.35 + 0.65 * (causes.index(cause) + 1) / len(causes),
+                 hatch=hatches.get(cause, ""), edgecolor="black", linewidth=0.4, label=f"{name}: {cause}")
+    pixels = summary.get("region_pixels", {})
+    axes.set_xticks(range(len(regions)))
+    axes.set_xticklabels([f"{r}\n({pixels.get(r, '?')} px)" for r in regions], fontsize=8)
+    axes.set_ylabel("relative RMSE of the diffuse AOV (%)")
+    axes.axhline(100 * summary["scatter_error_limit"], color="grey", linestyle="--", linewidth=1)
+    axes.set_title(f"{summary['scene']} at {summary['width']}x{summary['height']}: the shipped defaults' error "
+                   "by cause and region", fontsize=10)
+    axes.grid(True, axis="y", alpha=0.3)
+    axes.legend(fontsize=7, ncol=2)
+    figure.tight_layout()
     save(figure, path)
 
 
 def plot_passes(rows, passes, summary, path):
-    chosen = [r for r in rows if r["pareto"] or r["default"]]
+    chosen = [r for r in rows if r["pareto"] or r["pareto_scatter"] or r["default"]]
     chosen.sort(key=lambda r: (r["mode"], r["frame_gpu_ms"]))
     totals = {r["id"]: {} for r in chosen}
     for p in passes:
@@ -158,6 +211,7 @@ def main():
         return 1
     plot_pareto(rows, summary, os.path.join(directory, "pareto.png"))
     plot_passes(rows, passes, summary, os.path.join(directory, "passes.png"))
+    plot_regions(summary, os.path.join(directory, "regions.png"))
     return 0
 
 

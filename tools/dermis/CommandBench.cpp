@@ -2,6 +2,7 @@
 // modes, times each configuration and measures its error against the CPU
 // reference.
 #include "Args.h"
+#include "CauseMeter.h"
 #include "Commands.h"
 #include "MeasuredRender.h"
 #include "Session.h"
@@ -13,7 +14,6 @@
 #include "core/ImageResample.h"
 #include "core/Log.h"
 #include "core/TextFile.h"
-#include "reference/ReferenceRenderer.h"
 #include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"
 
@@ -22,6 +22,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <set>
 
 namespace dermis::cli {
 namespace {
@@ -40,19 +42,30 @@ const char* const kHelp =
     "usage: dermis bench SCENE --out DIR [options]\n"
     "\n"
     "Run time against error. Renders SCENE in many quality configurations of both SSS\n"
-    "modes; for each, takes the median GPU ms per frame over N frames and the error of\n"
-    "the diffuse AOV against the CPU reference (dermis reference) over SSS pixels.\n"
+    "modes; for each, takes the median GPU ms per frame over N frames and the relative\n"
+    "RMSE of the diffuse AOV over SSS pixels, split by cause:\n"
+    "  total       against the full CPU reference (dermis reference)\n"
+    "  irradiance  SSS off in both the render and the reference: the lighting's own error\n"
+    "  scatter     against the matched-irradiance reference (the render with SSS off plus\n"
+    "              the exact scattering of the engine's own irradiance): the SSS\n"
+    "              technique's own error, 0 when SSS is off\n"
+    "and by region: REGIONS.\n"
     "Every configuration is rendered with SSAO off, because the reference takes AO as 1.\n"
     "Writes into DIR:\n"
-    "  reference.exr   the CPU reference (unless --reference gives one)\n"
+    "  reference.exr, reference_sss_off.exr, thickness.exr, scatter_change_H.exr\n"
+    "                  the CPU images (each with a .json note of what it was computed\n"
+    "                  from; a later run into DIR reuses those that still match)\n"
     "  results.csv     one row per configuration: mode, swept values, whether it is the\n"
-    "                  shipped default and on its mode's Pareto front, frame and SSS GPU\n"
-    "                  ms, relative RMSE, largest difference, PSNR, its --set overrides\n"
+    "                  shipped default and on its mode's Pareto fronts (total, scatter),\n"
+    "                  frame and SSS GPU ms, total relative RMSE, largest difference,\n"
+    "                  PSNR, the relative RMSE of every cause and region, its --set overrides\n"
     "  passes.csv      the median GPU ms of every pass of every configuration\n"
-    "  summary.json    per mode: the default's error, the most accurate configuration,\n"
-    "                  the cheapest within 2% relative RMSE of the reference and within\n"
-    "                  2% of the most accurate one; the machine and the sweep\n"
-    "  pareto.png      relative RMSE against frame GPU ms, both modes, fronts marked\n"
+    "  summary.json    per mode: the default's error by cause and region, the most\n"
+    "                  accurate configuration, the cheapest within 2% total relative RMSE\n"
+    "                  and within 2% of the most accurate one, the cheapest within 1%\n"
+    "                  scatter error; the machine and the sweep\n"
+    "  pareto.png      total and scatter relative RMSE against frame GPU ms, both modes,\n"
+    "                  fronts marked\n"
     "  passes.png      stacked per-pass GPU ms of the fronts' and the default configurations\n"
     "  ERROR_IMAGES\n"
     "                  where each mode's default configuration differs from the reference:\n"
@@ -65,10 +78,10 @@ const char* const kHelp =
     "                     (render at scale x the size, resample the result back). Default:\n"
     "                     DEFAULT_SWEEP\n"
     "                     The shipped default settings of each swept mode are always measured.\n"
-    "  --size WxH         the compared frame size (default 320x180)\n"
+    "  --size WxH         the compared frame size (default 640x360)\n"
     "  --frames N         timed frames per configuration, after one warm-up (default 5)\n"
-    "  --reference FILE   an existing reference .exr of this scene at --size (skips computing it)\n"
-    "  --density N        the reference's sample density when it is computed (default 8)\n"
+    "  --reference FILE   an existing full reference .exr of this scene at --size (skips computing it)\n"
+    "REFERENCE_OPTIONS"
     "  --set PATH=VALUE   override a scene value for every configuration; repeatable\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --no-plots         write the CSV and JSON files only (no Python needed)\n"
@@ -127,22 +140,6 @@ Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, con
     return planned;
 }
 
-Result<Image> computeReference(const std::string& scenePath, const std::vector<std::string>& base, int width,
-                               int height, float density, const std::string& outPath) {
-    auto scene = loadScene(scenePath, base);
-    if (!scene.ok()) return scene.error();
-    reference::ReferenceOptions options;
-    options.quadrature.density = density;
-    options.showProgress = !log::quiet();
-    log::info("bench: computing the CPU reference at " + std::to_string(width) + "x" + std::to_string(height) +
-              " (dermis reference; pass it back with --reference to skip this)");
-    auto renderer = reference::ReferenceRenderer::load(*scene, options);
-    if (!renderer.ok()) return renderer.error();
-    Image image = renderer->renderDiffuse(width, height);
-    if (Status saved = saveImage(outPath, image); !saved.ok()) return saved.error();
-    return image;
-}
-
 std::string pythonInterpreter() {
     // Debian's interpreter has Debian's matplotlib; a python3 earlier on PATH
     // (pyenv, a virtualenv) may not.
@@ -169,8 +166,9 @@ double sssGpuMs(const std::vector<PassSummary>& passes) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "sweep", "size", "frames", "reference", "density", "set", "backend"},
-                          {"no-plots", "quiet", "help"});
+    std::set<std::string> valued = {"out", "sweep", "size", "frames", "reference", "set", "backend"};
+    valued.insert(kReferenceOptionNames.begin(), kReferenceOptionNames.end());
+    auto args = parseArgs(rawArgs, valued, {"no-plots", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::string errorImages;
@@ -180,7 +178,9 @@ int runBench(const std::vector<std::string>& rawArgs) {
         std::string help = kHelp;
         for (const auto& [word, text] : {std::pair<std::string, std::string>{"DEFAULT_SWEEP", bench::kDefaultSweepSpec},
                                          {"MODE_PREFIX", bench::modePrefixSyntax()},
-                                         {"ERROR_IMAGES", errorImages}}) {
+                                         {"ERROR_IMAGES", errorImages},
+                                         {"REGIONS", bench::kErrorRegions.list(", ")},
+                                         {"REFERENCE_OPTIONS", kReferenceOptionsHelp}}) {
             help.replace(help.find(word), word.size(), text);
         }
         std::fputs(help.c_str(), stdout);
@@ -191,14 +191,15 @@ int runBench(const std::vector<std::string>& rawArgs) {
     log::setQuiet(args->flags.count("quiet") > 0);
     const std::string scenePath = args->positional[0];
     const std::filesystem::path outDir = args->get("out", "");
-    auto size = parseSize(args->get("size", "320x180"), kMaxFrameDimension);
+    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
     if (!size.ok()) return usageError(size.error());
     auto frames = parsePositiveInt("--frames", args->get("frames", "5"));
     if (!frames.ok()) return usageError(frames.error());
-    auto density = parsePositiveFloat("--density", args->get("density", "8"));
-    if (!density.ok()) return usageError(density.error());
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
+    auto parsedReference = referenceSettingsFromArgs(*args);
+    if (!parsedReference.ok()) return usageError(parsedReference.error());
+    ReferenceSettings referenceSettings = *parsedReference;
     auto axes = bench::parseSweepSpec(args->get("sweep", bench::kDefaultSweepSpec));
     if (!axes.ok()) return usageError(axes.error());
     auto sweep = bench::expandSweep(*axes);
@@ -216,15 +217,21 @@ int runBench(const std::vector<std::string>& rawArgs) {
     if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
     auto file = [&](const std::string& name) { return (outDir / name).string(); };
 
-    Result<Image> reference = args->has("reference")
-                                  ? loadReferenceImage(args->get("reference", ""), width, height)
-                                  : computeReference(scenePath, base, width, height, *density, file("reference.exr"));
-    if (!reference.ok()) return failure(reference.error());
-
+    std::optional<Image> givenReference;
+    if (args->has("reference")) {
+        auto loaded = loadReferenceImage(args->get("reference", ""), width, height);
+        if (!loaded.ok()) return failure(loaded.error());
+        givenReference = std::move(*loaded);
+    }
     auto session = Session::open(scenePath, base, *backend, false);
     if (!session.ok()) return failure(session.error());
-    auto mask = sssMask(*session, width, height);
-    if (!mask.ok()) return failure(mask.error());
+    referenceSettings.width = width;
+    referenceSettings.height = height;
+    ReferenceImages references(outDir, referenceSettings);
+    auto meter = CauseMeter::create(*session, references, std::move(givenReference));
+    if (!meter.ok()) return failure(meter.error());
+    const Image& reference = meter->fullReference();
+    const std::vector<uint8_t> mask = meter->sssMask();
 
     log::info("bench: " + std::to_string(planned->size()) + " configurations of " + scenePath + " at " +
               std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(*frames) + " frames each");
@@ -239,13 +246,15 @@ int runBench(const std::vector<std::string>& rawArgs) {
         auto measured = measureRender(*session, scenePath, w, h, *frames, i == 0 ? kFirstWarmUpFrames : 1);
         if (!measured.ok()) return failure(measured.error());
         const Image diffuse = (w == width && h == height) ? measured->diffuse : resampleImage(measured->diffuse, width, height);
-        auto error = compareImages(*reference, diffuse, *mask);
+        auto error = compareImages(reference, diffuse, mask);
         if (!error.ok()) return failure(error.error());
+        auto errors = meter->measure(*session, diffuse, w, h);
+        if (!errors.ok()) return failure(errors.error());
 
         if (config.isDefault) {
             const std::string heatmap = file("error_" + config.sweep.mode + ".png");
-            const double scaleMax = roundUpToNiceNumber(differencePercentile(*reference, diffuse, *mask, 0.99));
-            if (Status saved = saveImage(heatmap, differenceHeatmap(*reference, diffuse, *mask, scaleMax)); !saved.ok())
+            const double scaleMax = roundUpToNiceNumber(differencePercentile(reference, diffuse, mask, 0.99));
+            if (Status saved = saveImage(heatmap, differenceHeatmap(reference, diffuse, mask, scaleMax)); !saved.ok())
                 return failure(saved.error());
         }
 
@@ -266,12 +275,15 @@ int runBench(const std::vector<std::string>& rawArgs) {
         row.relativeRmse = error->relativeRmse;
         row.maxAbsDifference = error->maxAbsDifference;
         row.psnrDb = error->psnrDb;
+        row.errors = *errors;
         row.overrides = config.sweep.overrides;
         rows.push_back(std::move(row));
         if (!log::quiet()) {
-            std::printf("[%zu/%zu] %s %-40s %8.1f ms  relative RMSE %6.2f%%\n", i + 1, planned->size(),
-                        rows.back().mode.c_str(), rows.back().label.c_str(), rows.back().frameGpuMs,
-                        100.0 * rows.back().relativeRmse);
+            std::printf("[%zu/%zu] %s %-40s %8.1f ms  relative RMSE: total %6.2f%%, irradiance %6.2f%%, scatter %6.2f%%\n",
+                        i + 1, planned->size(), rows.back().mode.c_str(), rows.back().label.c_str(),
+                        rows.back().frameGpuMs, 100.0 * rows.back().relativeRmse,
+                        100.0 * rows.back().errors.relativeRmse(bench::ErrorCause::Irradiance),
+                        100.0 * rows.back().errors.relativeRmse(bench::ErrorCause::Scatter));
             std::fflush(stdout);
         }
     }
@@ -286,7 +298,14 @@ int runBench(const std::vector<std::string>& rawArgs) {
     summary["sweep"] = args->get("sweep", bench::kDefaultSweepSpec);
     summary["every_configuration"] = base;
     summary["reference"] = args->has("reference") ? args->get("reference", "") : file("reference.exr");
-    summary["sss_pixels"] = std::count(mask->begin(), mask->end(), uint8_t{1});
+    summary["reference_spp"] = referenceSettings.samplesPerPixel;
+    summary["irradiance_size_texels"] = referenceSettings.irradianceSizeTexels;
+    summary["sss_pixels"] = std::count(mask.begin(), mask.end(), uint8_t{1});
+    for (const EnumEntry<bench::ErrorRegion>& region : bench::kErrorRegions) {
+        const std::vector<uint8_t> inRegion = bench::regionMask(meter->regions(), region.value);
+        summary["region_pixels"][std::string(region.name)] = std::count(inRegion.begin(), inRegion.end(), uint8_t{1});
+    }
+    summary["scatter_error_limit"] = bench::kScatterErrorLimit;  // the goal line of the plots
     summary["modes"] = bench::benchSummary(rows, kErrorLimit);
     for (const auto& [name, text] : {std::pair<const char*, std::string>{"results.csv", bench::resultsCsv(rows)},
                                      {"passes.csv", bench::passesCsv(rows)},
@@ -298,8 +317,10 @@ int runBench(const std::vector<std::string>& rawArgs) {
     }
     for (const auto& [mode, entry] : summary["modes"].items()) {
         if (log::quiet() || entry["default"].is_null()) continue;
-        std::printf("%s default: %.1f ms, relative RMSE %.2f%%\n", mode.c_str(), entry["default"]["frame_gpu_ms"].get<double>(),
-                    100.0 * entry["default"]["relative_rmse"].get<double>());
+        std::printf("%s default: %.1f ms, relative RMSE %.2f%% (scatter %.2f%%)\n", mode.c_str(),
+                    entry["default"]["frame_gpu_ms"].get<double>(), 100.0 * entry["default"]["relative_rmse"].get<double>(),
+                    entry["default"]["scatter_relative_rmse"].is_null()
+                        ? NAN : 100.0 * entry["default"]["scatter_relative_rmse"].get<double>());
     }
     log::info("wrote " + outDir.string());
     return 0;

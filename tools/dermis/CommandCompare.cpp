@@ -1,6 +1,7 @@
 // dermis compare: one frame of a scene in screen-space and in texture-space
 // mode, the images, a difference heatmap and the metrics.
 #include "Args.h"
+#include "CauseMeter.h"
 #include "Commands.h"
 #include "MeasuredRender.h"
 #include "Session.h"
@@ -8,6 +9,7 @@
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
+#include "bench/BenchReport.h"
 #include "core/TextFile.h"
 #include "frame/Renderer.h"
 
@@ -18,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 
 namespace dermis::cli {
 namespace {
@@ -37,7 +40,8 @@ const char* const kHelp =
     "  metrics.json      over SSS pixels (characters with a diffusion profile): relative\n"
     "                    RMSE, RMSE, largest difference and PSNR of ts against ss; and each\n"
     "                    mode's per-pass timings (as `dermis render --timings` writes them)\n"
-    "                    and, with --reference, each mode's error against the reference\n"
+    "                    and, with --reference, each mode's error against the reference;\n"
+    "                    with --errors, each mode's error by cause and region\n"
     "\n"
     "options:\n"
     "  --out DIR           output directory (created if missing); required\n"
@@ -48,6 +52,14 @@ const char* const kHelp =
     "                      each mode's relative RMSE, largest difference and PSNR against it\n"
     "                      over SSS pixels. The reference takes ambient occlusion as 1:\n"
     "                      add --set ssao.enabled=false to compare like with like\n"
+    "  --errors            each mode's error split by cause (total against the full CPU\n"
+    "                      reference, irradiance with SSS off on both sides, scatter against\n"
+    "                      the matched-irradiance reference) and by region, as `dermis bench`\n"
+    "                      reports it (docs/bench.md); computes the CPU references into DIR\n"
+    "                      (reused by a later run when they still match) and sets\n"
+    "                      ssao.enabled=false, as the reference takes AO as 1; with\n"
+    "                      --reference, that file is the full reference\n"
+    "REFERENCE_OPTIONS"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable\n"
     "  --backend NAME      egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --gl-debug          GL debug context; driver errors fail the run\n"
@@ -68,10 +80,15 @@ Result<MeasuredRender> renderMode(Session& session, const std::string& scenePath
 }  // namespace
 
 int runCompare(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "size", "frames", "set", "backend", "reference"}, {"gl-debug", "quiet", "help"});
+    std::set<std::string> valued = {"out", "size", "frames", "set", "backend", "reference"};
+    valued.insert(kReferenceOptionNames.begin(), kReferenceOptionNames.end());
+    auto args = parseArgs(rawArgs, valued, {"errors", "gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
-        std::printf("%s", kHelp);
+        std::string help = kHelp;
+        const std::string word = "REFERENCE_OPTIONS";
+        help.replace(help.find(word), word.size(), kReferenceOptionsHelp);
+        std::fputs(help.c_str(), stdout);
         return 0;
     }
     if (args->positional.size() != 1) return usageError(makeError("compare", "expected exactly one SCENE file"));
@@ -97,7 +114,12 @@ int runCompare(const std::vector<std::string>& rawArgs) {
         reference = std::move(*loaded);
     }
 
-    auto session = Session::open(scenePath, args->all("set"), *backend, args->flags.count("gl-debug") > 0);
+    const bool byCause = args->flags.count("errors") > 0;
+    auto referenceSettings = referenceSettingsFromArgs(*args);
+    if (!referenceSettings.ok()) return usageError(referenceSettings.error());
+    std::vector<std::string> overrides = args->all("set");
+    if (byCause) overrides.insert(overrides.begin(), "ssao.enabled=false");
+    auto session = Session::open(scenePath, overrides, *backend, args->flags.count("gl-debug") > 0);
     if (!session.ok()) return failure(session.error());
     const int width = size->first;
     const int height = size->second;
@@ -161,6 +183,27 @@ int runCompare(const std::vector<std::string>& rawArgs) {
             }
         }
         metrics["against_reference"] = against;
+    }
+    if (byCause) {
+        referenceSettings->width = width;
+        referenceSettings->height = height;
+        ReferenceImages references(outDir, *referenceSettings);
+        auto meter = CauseMeter::create(*session, references, reference);
+        if (!meter.ok()) return failure(meter.error());
+        const SssMode shippedMode = session->scene->settings.mode;
+        for (const auto& [mode, measured] : renders) {
+            session->scene->settings.mode = *kSssModes.parse(mode);
+            auto errors = meter->measure(*session, measured.diffuse, width, height);
+            if (!errors.ok()) return failure(errors.error());
+            metrics["errors"][mode] = bench::causeErrorsJson(*errors);
+            if (!log::quiet()) {
+                std::printf("%s relative RMSE: total %.2f%%, irradiance %.2f%%, scatter %.2f%%\n", mode.c_str(),
+                            100.0 * errors->relativeRmse(bench::ErrorCause::Total),
+                            100.0 * errors->relativeRmse(bench::ErrorCause::Irradiance),
+                            100.0 * errors->relativeRmse(bench::ErrorCause::Scatter));
+            }
+        }
+        session->scene->settings.mode = shippedMode;
     }
     for (const auto& [mode, measured] : renders) metrics["timings"][mode] = nlohmann::json::parse(measured.timingsJson);
 

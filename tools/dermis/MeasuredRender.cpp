@@ -40,17 +40,28 @@ Result<MeasuredRender> measureRender(Session& session, const std::string& sceneP
     return result;
 }
 
-Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
+Result<std::vector<int>> objectIds(Session& session, int width, int height) {
     if (const Status status = session.renderer->renderFrame({width, height, Aov::Object}); !status.ok())
         return status.error();
     auto ids = session.renderer->readOutput();
     if (!ids.ok()) return ids.error();
-    std::vector<uint8_t> mask(ids->texels.size(), 0);
+    std::vector<int> out(ids->texels.size(), 0);
+    const long characters = static_cast<long>(session.scene->characters.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        const long id = std::lround(ids->texels[i].r);
+        out[i] = id >= 1 && id <= characters ? static_cast<int>(id) : 0;
+    }
+    return out;
+}
+
+Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
+    auto ids = objectIds(session, width, height);
+    if (!ids.ok()) return ids.error();
+    std::vector<uint8_t> mask(ids->size(), 0);
     const auto& characters = session.scene->characters;
     for (size_t i = 0; i < mask.size(); ++i) {
-        const long id = std::lround(ids->texels[i].r);
-        if (id >= 1 && static_cast<size_t>(id) <= characters.size())
-            mask[i] = characters[static_cast<size_t>(id - 1)].material.profile != kOpaqueProfile ? 1 : 0;
+        const int id = (*ids)[i];
+        mask[i] = id > 0 && characters[size_t(id - 1)].material.profile != kOpaqueProfile ? 1 : 0;
     }
     return mask;
 }

@@ -31,6 +31,9 @@ struct MeasuredRender {
 Result<MeasuredRender> measureRender(Session& session, const std::string& scenePath, int width, int height,
                                      int frames, int warmUpFrames);
 
+// Per pixel: 0 for the background, else the character index + 1 (the object AOV).
+Result<std::vector<int>> objectIds(Session& session, int width, int height);
+
 // One byte per pixel: 1 where a character with a diffusion profile is seen.
 Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height);
 

@@ -1,0 +1,168 @@
+#include "ReferenceImages.h"
+
+#include "core/Log.h"
+#include "core/TextFile.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene/SceneLoader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace dermis::cli {
+namespace {
+
+std::string readIdentity(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    if (!in) return {};
+    try {
+        return nlohmann::json::parse(in).at("identity").get<std::string>();
+    } catch (const std::exception&) {
+        return {};  // unreadable: computed again
+    }
+}
+
+reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) {
+    reference::ReferenceOptions options;
+    options.quadrature.density = settings.density;
+    if (settings.samplesPerPixel > 0) options.samplesPerPixel = settings.samplesPerPixel;
+    options.showProgress = !log::quiet();
+    return options;
+}
+
+}  // namespace
+
+const char* const kReferenceOptionsHelp =
+    "  --density N        the references' quadrature density when they are computed (default 8)\n"
+    "  --spp N            the references' samples per pixel, a square (default: dermis reference's)\n"
+    "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
+    "                     (default 4096)\n";
+
+Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
+    ReferenceSettings settings;
+    auto density = parsePositiveFloat("--density", args.get("density", "8"));
+    if (!density.ok()) return density.error();
+    settings.density = *density;
+    if (args.has("spp")) {
+        auto spp = parsePositiveInt("--spp", args.get("spp", ""));
+        if (!spp.ok()) return spp.error();
+        settings.samplesPerPixel = *spp;
+    }
+    auto irradianceSize = parsePositiveInt("--irradiance-size", args.get("irradiance-size", "4096"));
+    if (!irradianceSize.ok()) return irradianceSize.error();
+    settings.irradianceSizeTexels = *irradianceSize;
+    return settings;
+}
+
+Scene lightingOnly(const Scene& scene) {
+    Scene lighting = scene;
+    const RenderSettings defaults;
+    RenderSettings& settings = lighting.settings;
+    settings.mode = defaults.mode;
+    settings.sss.taps = defaults.sss.taps;
+    settings.sss.blur = defaults.sss.blur;
+    settings.sss.bilateralDepthMm = defaults.sss.bilateralDepthMm;
+    settings.sss.controlDepthScalePerMm = defaults.sss.controlDepthScalePerMm;
+    settings.sss.gaussians = defaults.sss.gaussians;
+    settings.sss.minWidthPx = defaults.sss.minWidthPx;
+    settings.transmittance = defaults.transmittance;
+    settings.ts = defaults.ts;
+    return lighting;
+}
+
+ReferenceImages::ReferenceImages(std::filesystem::path directory, ReferenceSettings settings)
+    : mDirectory(std::move(directory)), mSettings(settings) {}
+
+template <class Compute>
+Result<Image> ReferenceImages::cached(const std::string& name, const std::string& identity, Compute&& compute) {
+    if (auto found = mMemory.find(identity); found != mMemory.end()) return found->second;
+    const std::filesystem::path image = mDirectory / (name + ".exr");
+    const std::filesystem::path note = mDirectory / (name + ".json");
+    if (std::filesystem::exists(image) && readIdentity(note) == identity) {
+        auto loaded = loadImage(image.string(), ColourSpace::Linear);
+        if (loaded.ok() && loaded->width == mSettings.width && loaded->height == mSettings.height) {
+            log::info("reusing " + image.string() + " (computed from the same scene and settings)");
+            mMemory[identity] = *loaded;
+            return loaded;
+        }
+    }
+    Result<Image> computed = compute();
+    if (!computed.ok()) return computed;
+    if (Status saved = saveImage(image.string(), *computed); !saved.ok()) return saved.error();
+    const std::string noteText = nlohmann::ordered_json{{"identity", identity}}.dump() + "\n";
+    if (Status written = writeTextFileAtomically(note.string(), noteText); !written.ok()) return written.error();
+    mMemory[identity] = *computed;
+    return computed;
+}
+
+namespace {
+
+std::string identityOf(const Scene& scene, const ReferenceSettings& settings, const std::string& what) {
+    std::ostringstream text;
+    text << what << " " << settings.width << "x" << settings.height << " density " << settings.density << " spp "
+         << settings.samplesPerPixel << "\n"
+         << sceneToJson(lightingOnly(scene));
+    return text.str();
+}
+
+Result<reference::ReferenceRenderer> loadRenderer(const Scene& scene, const reference::ReferenceOptions& options) {
+    return reference::ReferenceRenderer::load(scene, options);
+}
+
+}  // namespace
+
+Result<Image> ReferenceImages::full(const Scene& scene) {
+    return cached("reference", identityOf(scene, mSettings, "full"), [&]() -> Result<Image> {
+        log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
+                  std::to_string(mSettings.height));
+        auto renderer = loadRenderer(scene, referenceOptions(mSettings));
+        if (!renderer.ok()) return renderer.error();
+        return renderer->renderDiffuse(mSettings.width, mSettings.height);
+    });
+}
+
+Result<Image> ReferenceImages::sssOff(const Scene& scene) {
+    Scene off = scene;
+    off.settings.sss.enabled = false;
+    return cached("reference_sss_off", identityOf(off, mSettings, "sss off"), [&]() -> Result<Image> {
+        log::info("computing the CPU reference with SSS off");
+        auto renderer = loadRenderer(off, referenceOptions(mSettings));
+        if (!renderer.ok()) return renderer.error();
+        return renderer->renderDiffuse(mSettings.width, mSettings.height);
+    });
+}
+
+Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
+    return cached("thickness", identityOf(scene, mSettings, "thickness"), [&]() -> Result<Image> {
+        auto renderer = loadRenderer(scene, referenceOptions(mSettings));
+        if (!renderer.ok()) return renderer.error();
+        return renderer->renderThicknessMm(mSettings.width, mSettings.height);
+    });
+}
+
+Result<Image> ReferenceImages::scatterChange(Session& session) {
+    const Scene& scene = *session.scene;
+    const std::string identity = identityOf(scene, mSettings, "scatter change, engine irradiance " +
+                                                                  std::to_string(mSettings.irradianceSizeTexels));
+    // One file per lighting setup, named by its identity's hash.
+    char name[64];
+    std::snprintf(name, sizeof name, "scatter_change_%016zx", std::hash<std::string>{}(identity));
+    return cached(name, identity, [&]() -> Result<Image> {
+        log::info("capturing the engine's irradiance at " + std::to_string(mSettings.irradianceSizeTexels) +
+                  " texels and scattering it exactly (the matched reference)");
+        auto irradiance = session.renderer->captureIrradianceTextures(mSettings.irradianceSizeTexels);
+        if (!irradiance.ok()) return irradiance.error();
+        reference::ReferenceOptions options = referenceOptions(mSettings);
+        options.engineIrradiance = std::move(*irradiance);
+        // The change is taken at pixel centres, where the engine shades.
+        options.samplesPerPixel = 1;
+        auto renderer = loadRenderer(scene, options);
+        if (!renderer.ok()) return renderer.error();
+        return renderer->renderScatterChange(mSettings.width, mSettings.height);
+    });
+}
+
+}  // namespace dermis::cli
