@@ -17,8 +17,9 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 const std::string kScene = dermis::test::contentScene("default.json");
-// Tiny on purpose: the reference at density 1 and one frame per configuration.
-const std::string kSmall = " --size 64x36 --frames 1 --density 1 --quiet";
+// Tiny on purpose: the references at density 1, the engine's irradiance for
+// the matched reference at 512^2, and one frame per configuration.
+const std::string kSmall = " --size 64x36 --frames 1 --density 1 --irradiance-size 512 --quiet";
 const std::string kSweep = " --sweep 'ss:sss.taps=5,9;ts:ts.min_size+ts.max_size=256'";
 
 bool matplotlibAvailable() { return std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0; }
@@ -69,6 +70,14 @@ TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
         EXPECT_GT(std::stod(row.at("frame_gpu_ms")), 0.0);
         EXPECT_GT(std::stod(row.at("psnr_db")), 15.0);
         onFront[row.at("mode") == "ts"] += row.at("pareto") == "1";
+        // Every cause is measured; the technique's own error is a part of the total
+        // on this scene (the lighting's error adds to it), and nonzero with SSS on.
+        const double scatter = std::stod(row.at("scatter_rel_rmse"));
+        EXPECT_GT(scatter, 0.0) << row.at("label");
+        EXPECT_LT(scatter, error) << row.at("label");
+        EXPECT_GT(std::stod(row.at("irradiance_rel_rmse")), 0.0) << row.at("label");
+        EXPECT_EQ(std::stod(row.at("total_rel_rmse")), error) << row.at("label");
+        EXPECT_TRUE(row.count("scatter_rel_rmse_silhouette")) << "a column per cause and region";
     }
     EXPECT_GE(onFront[0], 1);
     EXPECT_GE(onFront[1], 1);
@@ -81,10 +90,13 @@ TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
     EXPECT_GT(summary["sss_pixels"].get<int>(), 100);
     EXPECT_EQ(summary["modes"]["ss"]["default"]["id"], 0);
     EXPECT_EQ(summary["modes"]["ts"]["default"]["id"], 2);
-    for (const char* file : {"reference.exr", "error_ss.png", "error_ts.png"})
+    EXPECT_GT(summary["region_pixels"]["silhouette"].get<int>(), 0);
+    EXPECT_EQ(summary["region_pixels"]["all"].get<int>(), summary["sss_pixels"].get<int>());
+    EXPECT_FALSE(summary["modes"]["ss"]["default_errors"]["scatter"]["all"].is_null());
+    for (const char* file : {"reference.exr", "reference_sss_off.exr", "thickness.exr", "error_ss.png", "error_ts.png"})
         EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + file)) << file;
     if (plots) {
-        for (const char* png : {"pareto.png", "passes.png"}) EXPECT_GT(std::filesystem::file_size(out + "/" + png), 10000u) << png;
+        for (const char* png : {"pareto.png", "passes.png", "regions.png"}) EXPECT_GT(std::filesystem::file_size(out + "/" + png), 10000u) << png;
     }
 
     // The reference is reused, and the same frames give the same errors.
@@ -111,6 +123,32 @@ TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
     }
     EXPECT_NEAR(metrics["against_reference"]["ss"]["relative_rmse"].get<double>(),
                 std::stod(rows[0].at("relative_rmse")), 1e-5);
+}
+
+// The matched reference's sanity check: with SSS off in the render and the
+// references, the scatter error is exactly 0 (the change is 0 and the render
+// with SSS off is the render), and the total error is the irradiance error.
+// Then a second run into the same directory reuses the CPU images.
+TEST(BenchCli, CompareErrorsWithSssOffHaveNoScatterError) {
+    TempDir dir;
+    const std::string out = dir.file("cmp");
+    const std::string command = kDermis + " compare " + kScene + " --out " + out +
+                                " --size 64x36 --frames 1 --density 1 --irradiance-size 256 --errors --set sss.enabled=false";
+    const ProcessResult r = runProcess(command);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json metrics = nlohmann::json::parse(dermis::test::readTextFile(out + "/metrics.json"));
+    for (const char* mode : {"ss", "ts"}) {
+        const nlohmann::json& errors = metrics["errors"][mode];
+        EXPECT_EQ(errors["scatter"]["all"]["relative_rmse"].get<double>(), 0.0) << mode;
+        EXPECT_EQ(errors["scatter"]["all"]["max_abs_difference"].get<double>(), 0.0) << mode;
+        EXPECT_GT(errors["total"]["all"]["relative_rmse"].get<double>(), 0.0) << mode;
+        EXPECT_EQ(errors["total"]["all"]["relative_rmse"], errors["irradiance"]["all"]["relative_rmse"]) << mode;
+    }
+    const ProcessResult again = runProcess(command);
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_NE(again.err.find("reusing"), std::string::npos) << again.err;
+    const nlohmann::json second = nlohmann::json::parse(dermis::test::readTextFile(out + "/metrics.json"));
+    EXPECT_EQ(second["errors"], metrics["errors"]);
 }
 
 TEST(BenchCli, BadInputFailsBeforeAnythingIsWritten) {
