@@ -7,6 +7,7 @@ DIR/summary.json, which the bench writes, and draws
                   over frame GPU ms, one colour per mode, each mode's Pareto
                   front joined by a line, the shipped defaults ringed;
   DIR/regions.png the shipped defaults' relative RMSE by cause and region;
+  DIR/errors.md   the same as a Markdown table (for docs/bench.md);
   DIR/passes.png  stacked GPU ms per pass group of the configurations on the
                   fronts and the defaults.
 
@@ -195,6 +196,32 @@ def plot_passes(rows, passes, summary, path):
     save(figure, path)
 
 
+def write_error_table(summary, path):
+    """One row per region, one column per mode and cause: the shipped defaults' relative RMSE (%)."""
+    modes = [m for m, entry in summary["modes"].items() if entry.get("default_errors")]
+    if not modes:
+        return
+    causes = list(summary["modes"][modes[0]]["default_errors"].keys())
+    regions = list(summary["modes"][modes[0]]["default_errors"][causes[0]].keys())
+    pixels = summary.get("region_pixels", {})
+    lines = [f"{summary['scene']} at {summary['width']}x{summary['height']}, shipped defaults, "
+             "relative RMSE of the diffuse AOV (%):", "",
+             "| region (pixels) | " + " | ".join(f"{m} {c}" for m in modes for c in causes) + " |",
+             "| --- |" + " --- |" * (len(modes) * len(causes))]
+    for region in regions:
+        cells = []
+        for mode in modes:
+            for cause in causes:
+                figure = summary["modes"][mode]["default_errors"][cause][region]
+                value = figure["relative_rmse"] if figure else None
+                cells.append("—" if value is None else f"{100 * value:.2f}")
+        lines.append(f"| {region} ({pixels.get(region, '?')}) | " + " | ".join(cells) + " |")
+    temporary = path + ".tmp"
+    with open(temporary, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(temporary, path)
+
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
@@ -212,6 +239,7 @@ def main():
     plot_pareto(rows, summary, os.path.join(directory, "pareto.png"))
     plot_passes(rows, passes, summary, os.path.join(directory, "passes.png"))
     plot_regions(summary, os.path.join(directory, "regions.png"))
+    write_error_table(summary, os.path.join(directory, "errors.md"))
     return 0
 
 
