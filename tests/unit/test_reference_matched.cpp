@@ -242,3 +242,38 @@ TEST(ReferenceMatched, BadTexturesAreRefused) {
     ASSERT_FALSE(notFinite.ok());
     EXPECT_NE(notFinite.error().message().find("'plane'"), std::string::npos);
 }
+
+TEST(ReferenceMatched, EmptyTexelsTakeTheNearestCoveredOneWithinReach) {
+    const Character character = proceduralCharacter("plane", "plane", "skin");
+    auto surface = reference::CharacterSurface::create(character, proceduralModelWithoutMaps("plane"));
+    ASSERT_TRUE(surface.ok());
+    // One row: covered texels 0 (value 1) and 4 (value 5); 5 to 11 empty, beyond reach
+    // (3 texels) of texel 4 from texel 8 on.
+    Image texture;
+    texture.width = 12;
+    texture.height = 1;
+    texture.texels.assign(12, glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f));
+    texture.texels[0] = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
+    texture.texels[4] = glm::vec4(5.0f, 0.0f, 0.0f, 1.0f);
+    auto engine = reference::EngineIrradiance::create(*surface, texture);
+    ASSERT_TRUE(engine.ok());
+    EXPECT_EQ((*engine)->unfilledTexels(), 4u);  // 8, 9, 10, 11
+    auto at = [&](float x) { return (*engine)->sampleAt(glm::vec2((x + 0.5f) / 12.0f, 0.5f)).r; };
+    EXPECT_FLOAT_EQ(at(1.0f), 1.0f);  // nearest: texel 0
+    EXPECT_FLOAT_EQ(at(2.0f), 1.0f);  // a tie between 0 and 4: the first in row order
+    EXPECT_FLOAT_EQ(at(3.0f), 5.0f);
+    EXPECT_FLOAT_EQ(at(7.0f), 5.0f);  // three texels from texel 4
+    EXPECT_FLOAT_EQ(at(7.5f), 5.0f);  // half on texel 8, which has no value: the covered tap alone
+    EXPECT_EQ((*engine)->emptyReads(), 0u);
+    EXPECT_FLOAT_EQ(at(9.5f), 0.0f);  // no tap has a value: 0, and counted
+    EXPECT_EQ((*engine)->emptyReads(), 1u);
+    // v is not flipped: row 0 is v near 0.
+    Image twoRows;
+    twoRows.width = 1;
+    twoRows.height = 2;
+    twoRows.texels = {glm::vec4(1.0f, 0.0f, 0.0f, 1.0f), glm::vec4(3.0f, 0.0f, 0.0f, 1.0f)};
+    auto rows = reference::EngineIrradiance::create(*surface, twoRows);
+    ASSERT_TRUE(rows.ok());
+    EXPECT_FLOAT_EQ((*rows)->sampleAt(glm::vec2(0.5f, 0.25f)).r, 1.0f);
+    EXPECT_FLOAT_EQ((*rows)->sampleAt(glm::vec2(0.5f, 0.75f)).r, 3.0f);
+}
