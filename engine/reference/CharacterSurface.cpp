@@ -37,10 +37,11 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
         surface.mNormals.push_back(normalWorldFromObject * v.normal);
         surface.mTangents.push_back(glm::vec4(linear * glm::vec3(v.tangent), v.tangent.w));
         surface.mUvs.push_back(flipV ? glm::vec2(v.uv.x, 1.0f - v.uv.y) : v.uv);
+        surface.mRawUvs.push_back(v.uv);
     }
     surface.mIndices = mesh.indices;
-    surface.mAlbedoMap = decodeToLinear(model.albedoMap);
-    surface.mNormalMap = std::move(model.normalMap);
+    surface.mAlbedoMap = MipPyramid(decodeToLinear(model.albedoMap));
+    surface.mNormalMap = MipPyramid(std::move(model.normalMap));
     surface.mAlbedoTint = character.material.albedo;
     surface.mRoughness = character.material.roughness;
     surface.mRhoS = character.material.rhoS;
@@ -52,7 +53,31 @@ glm::vec3 CharacterSurface::positionAt(size_t triangle, float b1, float b2) cons
     return p0 + b1 * (corner(triangle, 1) - p0) + b2 * (corner(triangle, 2) - p0);
 }
 
-SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool backFacing) const {
+glm::vec2 CharacterSurface::mapUvAt(size_t triangle, float b1, float b2) const {
+    const glm::vec2& uv0 = mUvs[mIndices[3 * triangle]];
+    return uv0 + b1 * (mUvs[mIndices[3 * triangle + 1]] - uv0) + b2 * (mUvs[mIndices[3 * triangle + 2]] - uv0);
+}
+
+glm::vec2 CharacterSurface::rawUvAt(size_t triangle, float b1, float b2) const {
+    const glm::vec2& uv0 = mRawUvs[mIndices[3 * triangle]];
+    return uv0 + b1 * (mRawUvs[mIndices[3 * triangle + 1]] - uv0) + b2 * (mRawUvs[mIndices[3 * triangle + 2]] - uv0);
+}
+
+glm::vec2 CharacterSurface::mapUvAtPlanePoint(size_t triangle, const glm::vec3& pointM) const {
+    // Weights from the Gram matrix of the two edges (exact for points in the plane).
+    const glm::vec3 p0 = corner(triangle, 0);
+    const glm::dvec3 e1(corner(triangle, 1) - p0), e2(corner(triangle, 2) - p0), d(pointM - p0);
+    const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
+    const double r1 = glm::dot(d, e1), r2 = glm::dot(d, e2);
+    const double determinant = a * c - b * b;
+    if (!(determinant > 0.0)) return mapUvAt(triangle, 0.0f, 0.0f);
+    const double b1 = (c * r1 - b * r2) / determinant;
+    const double b2 = (a * r2 - b * r1) / determinant;
+    return mapUvAt(triangle, float(b1), float(b2));
+}
+
+SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool backFacing,
+                                       const MapFootprint* footprint) const {
     const uint32_t i0 = mIndices[3 * triangle];
     const uint32_t i1 = mIndices[3 * triangle + 1];
     const uint32_t i2 = mIndices[3 * triangle + 2];
@@ -64,6 +89,9 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
     const float faceLength = glm::length(faceNormal);
     point.geometricNormal = faceLength > 0.0f && std::isfinite(faceLength) ? faceNormal / faceLength : glm::vec3(0.0f, 0.0f, 1.0f);
     const glm::vec2 uv = b0 * mUvs[i0] + b1 * mUvs[i1] + b2 * mUvs[i2];
+    auto read = [&](const MipPyramid& map, const glm::vec4& fallback) {
+        return footprint ? map.sample(uv, *footprint, fallback) : map.sample(uv, fallback);
+    };
 
     glm::vec3 n = safeNormalize(b0 * mNormals[i0] + b1 * mNormals[i1] + b2 * mNormals[i2], point.geometricNormal);
     if (backFacing) n = -n;
@@ -74,11 +102,11 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
                                                                 : glm::normalize(glm::cross(n, glm::vec3(0, 1, 0)));
         t = safeNormalize(t, fallbackTangent);
         const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-        const glm::vec3 tangentNormal = glm::vec3(sampleBilinear(mNormalMap, uv, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f))) * 2.0f - 1.0f;
+        const glm::vec3 tangentNormal = glm::vec3(read(mNormalMap, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f))) * 2.0f - 1.0f;
         n = safeNormalize(glm::mat3(t, b, n) * tangentNormal, n);
     }
     point.shadingNormal = n;
-    const glm::vec3 map = glm::vec3(sampleBilinear(mAlbedoMap, uv, glm::vec4(1.0f)));
+    const glm::vec3 map = glm::vec3(read(mAlbedoMap, glm::vec4(1.0f)));
     point.albedo = glm::clamp(mAlbedoTint * map, 0.0f, 1.0f);
     point.roughness = mRoughness;
     point.rhoS = mRhoS;

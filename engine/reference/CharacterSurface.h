@@ -2,10 +2,13 @@
 // One character's surface in world space (metres) with its material, as the
 // G-buffer pass sees it (shaders/gbuffer.vert, gbuffer.frag): albedo = tint x
 // albedo map (decoded to linear), clamped to [0, 1]; the interpolated normal,
-// flipped on back faces and perturbed by the tangent-space normal map.
+// flipped on back faces and perturbed by the tangent-space normal map. Maps are
+// read from mip pyramids: trilinearly at a pixel's footprint for the points a
+// camera sees, bilinearly at level 0 for the integral's samples.
 
 #include "core/Result.h"
 #include "mesh/Model.h"
+#include "reference/MipPyramid.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -35,8 +38,17 @@ public:
     glm::vec3 corner(size_t triangle, int which) const { return mPositionsM[mIndices[3 * triangle + size_t(which)]]; }
     // The point at barycentric weights (b1, b2) of the triangle's second and third
     // corners. `backFacing` flips the normal before the normal map, as gl_FrontFacing does.
-    SurfacePoint pointAt(size_t triangle, float b1, float b2, bool backFacing = false) const;
+    // With a footprint, maps are read trilinearly at its level of detail; without, at level 0.
+    SurfacePoint pointAt(size_t triangle, float b1, float b2, bool backFacing = false,
+                         const MapFootprint* footprint = nullptr) const;
     glm::vec3 positionAt(size_t triangle, float b1, float b2) const;
+    // The maps' UV (flip_v applied) at (b1, b2); any point of the triangle's plane
+    // extends the weights linearly (for footprints reaching past the triangle).
+    glm::vec2 mapUvAt(size_t triangle, float b1, float b2) const;
+    glm::vec2 mapUvAtPlanePoint(size_t triangle, const glm::vec3& pointM) const;
+    // The mesh's own TEXCOORD_0 (before flip_v) at (b1, b2): the layout of the
+    // engine's texture-space irradiance.
+    glm::vec2 rawUvAt(size_t triangle, float b1, float b2) const;
     double areaM2() const;
 
 private:
@@ -45,9 +57,10 @@ private:
     std::vector<glm::vec3> mNormals;   // normal matrix applied, not normalised (interpolated first, as on the GPU)
     std::vector<glm::vec4> mTangents;  // xyz world tangent, w bitangent sign
     std::vector<glm::vec2> mUvs;       // flipV already applied
+    std::vector<glm::vec2> mRawUvs;    // as the mesh gives them
     std::vector<uint32_t> mIndices;
-    Image mAlbedoMap;  // linear; empty: none
-    Image mNormalMap;  // empty: none
+    MipPyramid mAlbedoMap;  // linear; empty: none
+    MipPyramid mNormalMap;  // empty: none
     glm::vec3 mAlbedoTint{1.0f};
     float mRoughness = 0.3f;
     float mRhoS = 0.0f;

@@ -17,16 +17,9 @@ float edgePerSigma(float density) { return std::sqrt(4.0f / (std::sqrt(3.0f) * s
 
 }  // namespace
 
-glm::vec3 albedoPower(const glm::vec3& albedo, float exponent) {
-    if (exponent <= 0.0f) return glm::vec3(1.0f);
-    if (exponent == 1.0f) return glm::max(albedo, glm::vec3(0.0f));
-    if (exponent == 0.5f) return glm::sqrt(glm::max(albedo, glm::vec3(0.0f)));
-    return glm::pow(glm::max(albedo, glm::vec3(0.0f)), glm::vec3(exponent));
-}
-
-DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const ReferenceLighting& lighting,
-                                         const DiffusionProfile& profile, float mix, const QuadratureSettings& quadrature)
-    : mSurface(&surface), mLighting(&lighting), mMix(mix), mQuadrature(quadrature) {
+DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
+                                         const QuadratureSettings& quadrature)
+    : mSurface(&surface), mQuadrature(quadrature) {
     for (const ProfileGaussian& g : profile.gaussians()) {
         mSigmasMm.push_back(std::sqrt(g.varianceMm2));
         mTerms.push_back(Term{0.5f / g.varianceMm2, g.weight / (2.0f * kPi * g.varianceMm2)});
@@ -64,19 +57,19 @@ void DiffusionIntegrator::markNeeded(const glm::vec3& pointM, std::vector<uint8_
     mGrid.forEachNear(pointM, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM, [&](uint32_t index) { needed[index] = 1; });
 }
 
-DiffusionIntegrator::Shaded DiffusionIntegrator::shade(const Cell& cell, float childAreaMm2) const {
+DiffusionIntegrator::Shaded DiffusionIntegrator::shade(const Cell& cell, float childAreaMm2,
+                                                       const SampleValues& values) const {
     const glm::vec2 b = cellCentroid(cell);
-    const SurfacePoint point = mSurface->pointAt(cell.triangle, b.x, b.y);
     Shaded shaded;
-    shaded.sample.positionM = point.positionM;
+    shaded.sample.positionM = mSurface->positionAt(cell.triangle, b.x, b.y);
     shaded.sample.areaMm2 = childAreaMm2;
-    shaded.sample.value = mLighting->irradiance(point, &shaded.visibility) * albedoPower(point.albedo, mMix);
+    shaded.sample.value = values.valueAt(cell.triangle, b, &shaded.visibility);
     return shaded;
 }
 
 template <class Emit>
 void DiffusionIntegrator::shadeCell(const Cell& cell, float areaMm2, int edgeLevels, const Shaded* knownCentre,
-                                    Emit&& emit) const {
+                                    const SampleValues& values, Emit&& emit) const {
     const std::array<Cell, 4> children = splitCell(cell);
     const float childAreaMm2 = 0.25f * areaMm2;
     std::array<Shaded, 4> shaded;
@@ -86,7 +79,7 @@ void DiffusionIntegrator::shadeCell(const Cell& cell, float areaMm2, int edgeLev
             shaded[c] = *knownCentre;
             shaded[c].sample.areaMm2 = childAreaMm2;
         } else {
-            shaded[c] = shade(children[c], childAreaMm2);
+            shaded[c] = shade(children[c], childAreaMm2, values);
         }
     }
     bool edge = false;
@@ -94,15 +87,15 @@ void DiffusionIntegrator::shadeCell(const Cell& cell, float areaMm2, int edgeLev
         for (size_t j = i + 1; j < 4; ++j) edge = edge || shaded[i].visibility.disagreesWith(shaded[j].visibility);
     }
     if (edge && edgeLevels > 0) {
-        for (size_t c = 0; c < 4; ++c) shadeCell(children[c], childAreaMm2, edgeLevels - 1, &shaded[c], emit);
+        for (size_t c = 0; c < 4; ++c) shadeCell(children[c], childAreaMm2, edgeLevels - 1, &shaded[c], values, emit);
         return;
     }
     for (const Shaded& s : shaded) emit(s.sample);
 }
 
-std::vector<Sample> DiffusionIntegrator::shadeBaseCell(size_t index) const {
+std::vector<Sample> DiffusionIntegrator::shadeBaseCell(size_t index, const SampleValues& values) const {
     std::vector<Sample> samples;
-    shadeCell(mBaseCells[index], mBaseShapes[index].areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr,
+    shadeCell(mBaseCells[index], mBaseShapes[index].areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr, values,
               [&](const Sample& s) { samples.push_back(s); });
     return samples;
 }
@@ -122,19 +115,21 @@ void DiffusionIntegrator::accumulate(const Sample& s, const glm::vec3& pointM, g
     sum += glm::dvec3(profileAt(glm::dot(dMm, dMm)) * (s.value * s.areaMm2));
 }
 
-void DiffusionIntegrator::integrateCell(const Cell& cell, const glm::vec3& pointM, int level, glm::dvec3& sum) const {
+void DiffusionIntegrator::integrateCell(const Cell& cell, const glm::vec3& pointM, int level,
+                                        const SampleValues& values, glm::dvec3& sum) const {
     const CellShape shape = cellShape(*mSurface, cell);
     const float dMinMm = std::max(0.0f, glm::length(shape.centroidM - pointM) - shape.boundRadiusM) * kMmPerM;
     if (dMinMm > mQueryRadiusMm) return;
     if (shape.maxEdgeM * kMmPerM > neededEdgeMm(dMinMm) && level < kMaxSplitLevels) {
-        for (const Cell& child : splitCell(cell)) integrateCell(child, pointM, level + 1, sum);
+        for (const Cell& child : splitCell(cell)) integrateCell(child, pointM, level + 1, values, sum);
         return;
     }
-    shadeCell(cell, shape.areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr,
+    shadeCell(cell, shape.areaM2 * kMm2PerM2, mQuadrature.edgeLevels, nullptr, values,
               [&](const Sample& s) { accumulate(s, pointM, sum); });
 }
 
-glm::vec3 DiffusionIntegrator::integrate(const glm::vec3& pointM, const std::vector<std::vector<Sample>>& baseSamples) const {
+glm::vec3 DiffusionIntegrator::integrate(const glm::vec3& pointM, const std::vector<std::vector<Sample>>& baseSamples,
+                                         const SampleValues& values) const {
     glm::dvec3 sum(0.0);
     mGrid.forEachNear(pointM, (mQueryRadiusMm + mMaxBaseBoundMm) / kMmPerM, [&](uint32_t index) {
         const CellShape& shape = mBaseShapes[index];
@@ -143,7 +138,7 @@ glm::vec3 DiffusionIntegrator::integrate(const glm::vec3& pointM, const std::vec
         if (shape.maxEdgeM * kMmPerM <= neededEdgeMm(dMinMm)) {
             for (const Sample& s : baseSamples[index]) accumulate(s, pointM, sum);
         } else {
-            for (const Cell& child : splitCell(mBaseCells[index])) integrateCell(child, pointM, 1, sum);
+            for (const Cell& child : splitCell(mBaseCells[index])) integrateCell(child, pointM, 1, values, sum);
         }
     });
     return glm::vec3(sum);

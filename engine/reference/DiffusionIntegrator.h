@@ -11,10 +11,11 @@
 // samples are the centroids of its four children; where two of them disagree
 // on a light's visibility (a shadow edge crosses the cell) the children are
 // split again, up to `edgeLevels` times, so hard shadows converge like the
-// smooth parts.
+// smooth parts. The samples' values come from a SampleValues source (exact
+// lighting, or the engine's irradiance texture), passed to each call.
 
 #include "reference/CharacterSurface.h"
-#include "reference/ReferenceLighting.h"
+#include "reference/SampleValues.h"
 #include "reference/SurfaceCells.h"
 #include "sss/DiffusionProfile.h"
 
@@ -44,14 +45,11 @@ struct Sample {
     glm::vec3 value{0.0f};  // E x albedo^mix
 };
 
-// albedo^exponent with x^0 = 1 and 0^e = 0 (shaders/include/Common.glsl albedoPower).
-glm::vec3 albedoPower(const glm::vec3& albedo, float exponent);
-
 class DiffusionIntegrator {
 public:
-    // `surface` and `lighting` must outlive the integrator; the profile is copied.
-    DiffusionIntegrator(const CharacterSurface& surface, const ReferenceLighting& lighting,
-                        const DiffusionProfile& profile, float mix, const QuadratureSettings& quadrature);
+    // `surface` must outlive the integrator; the profile is copied.
+    DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
+                        const QuadratureSettings& quadrature);
 
     // The largest edge of a base cell: (just under) two sample spacings of the widest Gaussian.
     static float baseCellEdgeM(const DiffusionProfile& profile, const QuadratureSettings& quadrature);
@@ -60,29 +58,31 @@ public:
     float queryRadiusMm() const { return mQueryRadiusMm; }
     // Flags (needed[i] = 1) the base cells that integrate(x_o) may read.
     void markNeeded(const glm::vec3& pointM, std::vector<uint8_t>& needed) const;
-    // Shades base cell i (thread-safe: reads only).
-    std::vector<Sample> shadeBaseCell(size_t index) const;
-    // I(x_o) from the shaded base cells (baseSamples[i] for every cell markNeeded flagged).
-    glm::vec3 integrate(const glm::vec3& pointM, const std::vector<std::vector<Sample>>& baseSamples) const;
+    // Shades base cell i with `values` (thread-safe: reads only).
+    std::vector<Sample> shadeBaseCell(size_t index, const SampleValues& values) const;
+    // I(x_o) from the base cells shaded with the same `values` (baseSamples[i] for
+    // every cell markNeeded flagged); finer cells are shaded with `values` too.
+    glm::vec3 integrate(const glm::vec3& pointM, const std::vector<std::vector<Sample>>& baseSamples,
+                        const SampleValues& values) const;
 
 private:
     struct Shaded {
         Sample sample;
         LightVisibility visibility;
     };
-    Shaded shade(const Cell& cell, float childAreaMm2) const;
+    Shaded shade(const Cell& cell, float childAreaMm2, const SampleValues& values) const;
     // The cell's samples: its four children's centroids, refined at shadow edges.
     template <class Emit>
-    void shadeCell(const Cell& cell, float areaMm2, int edgeLevels, const Shaded* knownCentre, Emit&& emit) const;
+    void shadeCell(const Cell& cell, float areaMm2, int edgeLevels, const Shaded* knownCentre,
+                   const SampleValues& values, Emit&& emit) const;
     // Largest cell edge that Gaussians reaching distance dMinMm need.
     float neededEdgeMm(float dMinMm) const;
-    void integrateCell(const Cell& cell, const glm::vec3& pointM, int level, glm::dvec3& sum) const;
+    void integrateCell(const Cell& cell, const glm::vec3& pointM, int level, const SampleValues& values,
+                       glm::dvec3& sum) const;
     void accumulate(const Sample& s, const glm::vec3& pointM, glm::dvec3& sum) const;
     glm::vec3 profileAt(float radiusSquaredMm2) const;
 
     const CharacterSurface* mSurface;
-    const ReferenceLighting* mLighting;
-    float mMix;
     QuadratureSettings mQuadrature;
     std::vector<float> mSigmasMm;  // ascending
     struct Term {

@@ -46,9 +46,20 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     if (!(quadrature.refineCutoffSigmas > 0.0f) || !std::isfinite(quadrature.refineCutoffSigmas)) {
         return makeError("reference", "the refinement cut-off must be a finite number > 0");
     }
+    if (strataPerSide(options.samplesPerPixel) == 0) {
+        return makeError("reference", "the samples per pixel must be a perfect square from 1 to " +
+                                          std::to_string(kMaxSamplesPerPixel) + " (got " +
+                                          std::to_string(options.samplesPerPixel) + ")");
+    }
+    if (!options.engineIrradiance.empty() && options.engineIrradiance.size() != scene.characters.size()) {
+        return makeError("reference", "expected one engine irradiance image per character (" +
+                                          std::to_string(scene.characters.size()) + "), got " +
+                                          std::to_string(options.engineIrradiance.size()));
+    }
     ReferenceRenderer renderer;
     renderer.mScene = scene;
     renderer.mOptions = options;
+    renderer.mOptions.engineIrradiance.clear();  // kept once, as EngineIrradiance below
     std::vector<glm::vec3> corners;
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         auto surface = CharacterSurface::create(scene.characters[c], std::move(models[c]));
@@ -63,6 +74,15 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     renderer.mBvh = std::make_unique<Bvh>(Bvh::build(corners));
     renderer.mLighting = std::make_unique<ReferenceLighting>(renderer.mScene, *renderer.mBvh);
     renderer.mStats.triangles = renderer.mBvh->triangleCount();
+    for (size_t c = 0; c < scene.characters.size(); ++c) {
+        renderer.mExactValues.push_back(
+            std::make_unique<ExactLightingValues>(*renderer.mSurfaces[c], *renderer.mLighting, scene.settings.sss.mix));
+        renderer.mEngineValues.emplace_back();
+        if (c >= options.engineIrradiance.size() || options.engineIrradiance[c].empty()) continue;
+        auto engine = EngineIrradiance::create(*renderer.mSurfaces[c], options.engineIrradiance[c]);
+        if (!engine.ok()) return engine.error();
+        renderer.mEngineValues.back() = std::move(*engine);
+    }
 
     const SssSettings& sss = scene.settings.sss;
     for (size_t c = 0; c < scene.characters.size(); ++c) {
@@ -83,21 +103,15 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
                              "the reference would need " + std::to_string(cells) + " base cells (at most " +
                                  std::to_string(kMaxBaseCells) + "): lower the density");
         }
-        renderer.mIntegrators.back() = std::make_unique<DiffusionIntegrator>(
-            *renderer.mSurfaces[c], *renderer.mLighting, *scaledProfile, sss.mix, options.quadrature);
+        renderer.mIntegrators.back() =
+            std::make_unique<DiffusionIntegrator>(*renderer.mSurfaces[c], *scaledProfile, options.quadrature);
         renderer.mStats.baseCells += renderer.mIntegrators.back()->baseCellCount();
     }
     return renderer;
 }
 
 Ray ReferenceRenderer::cameraRay(const Camera& camera, int width, int height, int x, int y) {
-    const glm::mat4 worldFromView = glm::inverse(glm::lookAt(camera.positionM, camera.targetM, camera.up));
-    const float tanHalfFov = std::tan(0.5f * glm::radians(camera.verticalFovDeg));
-    const float aspect = float(width) / float(height);
-    const float ndcX = 2.0f * (float(x) + 0.5f) / float(width) - 1.0f;
-    const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(height);
-    const glm::vec3 viewDirection(ndcX * tanHalfFov * aspect, ndcY * tanHalfFov, -1.0f);
-    return Ray{glm::vec3(worldFromView[3]), glm::mat3(worldFromView) * viewDirection};
+    return CameraRays(camera, width, height).through(float(x) + 0.5f, float(y) + 0.5f);
 }
 
 ReferenceRenderer::Hit ReferenceRenderer::trace(const Ray& ray, float tMin, float tMax) const {
@@ -116,16 +130,46 @@ ReferenceRenderer::Hit ReferenceRenderer::trace(const Ray& ray, float tMin, floa
     return hit;
 }
 
-glm::vec4 ReferenceRenderer::shadeHit(const Hit& hit, const Ray& ray,
+MapFootprint ReferenceRenderer::pixelFootprint(const Hit& hit, const Ray& ray, const CameraRays& camera) const {
+    const CharacterSurface& surface = *mSurfaces[size_t(hit.character)];
+    const glm::vec3 p = surface.positionAt(hit.triangle, hit.b1, hit.b2);
+    const glm::vec3 normal = glm::cross(surface.corner(hit.triangle, 1) - surface.corner(hit.triangle, 0),
+                                        surface.corner(hit.triangle, 2) - surface.corner(hit.triangle, 0));
+    const glm::vec2 uv = surface.mapUvAt(hit.triangle, hit.b1, hit.b2);
+    // A step whose ray misses the plane (grazing views) reads the coarsest level, as an
+    // unbounded derivative would on the GPU.
+    auto step = [&](const glm::vec3& directionStep) {
+        glm::vec3 q;
+        if (!offsetRayOnPlane(ray, directionStep, p, normal, &q)) return glm::vec2(std::numeric_limits<float>::infinity());
+        return surface.mapUvAtPlanePoint(hit.triangle, q) - uv;
+    };
+    return MapFootprint{step(camera.directionPerPixelX()), step(camera.directionPerPixelY())};
+}
+
+const SampleValues* ReferenceRenderer::valuesFor(Quantity quantity, size_t character) const {
+    if (quantity == Quantity::Diffuse) return mExactValues[character].get();
+    return mEngineValues[character].get();
+}
+
+glm::vec4 ReferenceRenderer::shadeHit(Quantity quantity, const Hit& hit, const Ray& ray, const CameraRays* camera,
                                       const std::vector<std::vector<Sample>>* baseSamples) const {
     if (hit.character < 0) return glm::vec4(0.0f);
     const auto c = size_t(hit.character);
-    const SurfacePoint point = mSurfaces[c]->pointAt(hit.triangle, hit.b1, hit.b2, hit.backFacing);
+    const SampleValues* values = valuesFor(quantity, c);
+    if (quantity == Quantity::ScatterChange && !(mIntegrators[c] && values)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    MapFootprint footprint;
+    if (camera) footprint = pixelFootprint(hit, ray, *camera);
+    const SurfacePoint point =
+        mSurfaces[c]->pointAt(hit.triangle, hit.b1, hit.b2, hit.backFacing, camera ? &footprint : nullptr);
     const glm::vec3 towardsViewer = glm::normalize(-ray.direction);
     const float mix = mScene.settings.sss.mix;
     glm::vec3 diffuse;
-    if (mIntegrators[c] && baseSamples) {
-        diffuse = mIntegrators[c]->integrate(point.positionM, *baseSamples) * albedoPower(point.albedo, 1.0f - mix);
+    if (quantity == Quantity::ScatterChange) {
+        const glm::vec3 here = values->valueAt(hit.triangle, glm::vec2(hit.b1, hit.b2), nullptr);
+        diffuse = (mIntegrators[c]->integrate(point.positionM, *baseSamples, *values) - here) *
+                  albedoPower(point.albedo, 1.0f - mix);
+    } else if (mIntegrators[c]) {
+        diffuse = mIntegrators[c]->integrate(point.positionM, *baseSamples, *values) * albedoPower(point.albedo, 1.0f - mix);
     } else {
         diffuse = mLighting->irradiance(point) * albedoPower(point.albedo, mix) * albedoPower(point.albedo, 1.0f - mix);
     }
@@ -134,11 +178,15 @@ glm::vec4 ReferenceRenderer::shadeHit(const Hit& hit, const Ray& ray,
 }
 
 std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray>& rays, float tMin, float tMax) {
-    return diffuseAlongRays(rays, tMin, tMax, 64);
+    return evaluate(Quantity::Diffuse, rays, tMin, tMax, nullptr, 64);
 }
 
-std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray>& rays, float tMin, float tMax,
-                                                          size_t itemSize) {
+std::vector<glm::vec4> ReferenceRenderer::scatterChangeAlongRays(const std::vector<Ray>& rays, float tMin, float tMax) {
+    return evaluate(Quantity::ScatterChange, rays, tMin, tMax, nullptr, 64);
+}
+
+std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin,
+                                                   float tMax, const CameraRays* camera, size_t itemSize) {
     const int threads = mOptions.threads;
     const size_t items = (rays.size() + itemSize - 1) / itemSize;
     auto forItem = [&](size_t item, auto&& perRay) {
@@ -153,7 +201,8 @@ std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray
     mStats.shadedBaseCells = 0;
     mStats.sssHits = 0;
     for (size_t c = 0; c < mSurfaces.size(); ++c) {
-        if (!mIntegrators[c]) continue;
+        const SampleValues* values = valuesFor(quantity, c);
+        if (!mIntegrators[c] || !values) continue;
         const DiffusionIntegrator& integrator = *mIntegrators[c];
         std::vector<uint8_t> needed(integrator.baseCellCount(), 0);
         for (size_t r = 0; r < rays.size(); ++r) {
@@ -170,7 +219,7 @@ std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray
         constexpr size_t kCellsPerItem = 256;
         parallelFor((list.size() + kCellsPerItem - 1) / kCellsPerItem, threads, [&](size_t item) {
             for (size_t i = item * kCellsPerItem; i < std::min(list.size(), (item + 1) * kCellsPerItem); ++i) {
-                baseSamples[c][list[i]] = integrator.shadeBaseCell(list[i]);
+                baseSamples[c][list[i]] = integrator.shadeBaseCell(list[i], *values);
             }
         }, mOptions.showProgress ? "reference: irradiance (" + mSurfaces[c]->name() + ")" : std::string());
     }
@@ -179,26 +228,49 @@ std::vector<glm::vec4> ReferenceRenderer::diffuseAlongRays(const std::vector<Ray
     parallelFor(items, threads, [&](size_t item) {
         forItem(item, [&](size_t r) {
             const Hit& hit = hits[r];
-            out[r] = shadeHit(hit, rays[r], hit.character >= 0 ? &baseSamples[size_t(hit.character)] : nullptr);
+            out[r] = shadeHit(quantity, hit, rays[r], camera,
+                              hit.character >= 0 ? &baseSamples[size_t(hit.character)] : nullptr);
         });
     }, mOptions.showProgress ? "reference: scattering" : std::string());
+    mStats.emptyIrradianceReads = 0;
+    for (const auto& engine : mEngineValues) {
+        if (engine) mStats.emptyIrradianceReads += engine->emptyReads();
+    }
     return out;
 }
 
-Image ReferenceRenderer::renderDiffuse(int width, int height) {
+Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height) {
+    const CameraRays camera(mScene.camera, width, height);
+    const int spp = mOptions.samplesPerPixel;
     std::vector<Ray> rays;
-    rays.reserve(size_t(width) * size_t(height));
+    rays.reserve(size_t(width) * size_t(height) * size_t(spp));
     for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) rays.push_back(cameraRay(mScene.camera, width, height, x, y));
+        for (int x = 0; x < width; ++x) {
+            for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
+                rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
+            }
+        }
     }
     // One work item per pixel row.
-    const std::vector<glm::vec4> values = diffuseAlongRays(rays, mScene.camera.nearM, mScene.camera.farM, size_t(width));
+    const std::vector<glm::vec4> values =
+        evaluate(quantity, rays, mScene.camera.nearM, mScene.camera.farM, &camera, size_t(width) * size_t(spp));
     Image image;
     image.width = width;
     image.height = height;
     image.colourSpace = ColourSpace::Linear;
-    image.texels = values;
+    image.texels.resize(size_t(width) * size_t(height));
+    for (size_t p = 0; p < image.texels.size(); ++p) {
+        glm::dvec4 sum(0.0);
+        for (size_t s = 0; s < size_t(spp); ++s) sum += glm::dvec4(values[p * size_t(spp) + s]);
+        image.texels[p] = glm::vec4(sum / double(spp));
+    }
     return image;
+}
+
+Image ReferenceRenderer::renderDiffuse(int width, int height) { return renderPixels(Quantity::Diffuse, width, height); }
+
+Image ReferenceRenderer::renderScatterChange(int width, int height) {
+    return renderPixels(Quantity::ScatterChange, width, height);
 }
 
 }  // namespace dermis::reference

@@ -12,29 +12,49 @@
 // applied (variances x scale^2); the real-time knobs (taps, Gaussians used,
 // blur mode) are approximations and do not change it.
 //
-// The output is the `diffuse` AOV of `dermis render`: linear RGB, alpha 1 where
-// a surface is hit and 0 (with RGB 0) on the background, one ray per pixel
-// centre through the scene camera (glm::lookAt + glm::perspective, OpenGL
-// conventions, the near and far planes clip), image rows top first.
+// The output is the `diffuse` AOV of `dermis render`: linear RGB, image rows top
+// first, through the scene camera (PixelSampling.h; the near and far planes clip).
+// Each pixel is the box-filtered mean of its sub-samples (samplesPerPixel, an
+// n x n jittered grid; 1 is the pixel centre): alpha is the fraction that hit a
+// surface, RGB the mean over all of them with the background counting 0, so it
+// compares with the engine where alpha is 1. Maps are read trilinearly at the
+// level of detail of one whole pixel's footprint at each sub-sample's hit, as
+// the GPU reads them per pixel; the sub-samples average geometry, not texels.
+//
+// The matched-irradiance mode (docs/reference.md): with the engine's own
+// texture-space irradiance of a character, renderScatterChange gives
+//   Delta = albedo^(1-mix)(x_o) x outgoing(x_o) x [integral of R(|x_o - x_i|) E~(x_i) dA_i - E~(x_o)],
+// E~ the engine's integrand (E x albedo^mix) read from its texture, so that
+// "engine diffuse with SSS off + Delta" is the engine's own light scattered
+// exactly: its difference from the engine with SSS on is the SSS technique's error.
 
 #include "core/Image.h"
 #include "core/Result.h"
 #include "reference/Bvh.h"
 #include "reference/CharacterSurface.h"
 #include "reference/DiffusionIntegrator.h"
+#include "reference/EngineIrradiance.h"
+#include "reference/PixelSampling.h"
 #include "reference/ReferenceLighting.h"
 #include "mesh/Model.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
 namespace dermis::reference {
 
+// The default sub-samples per pixel (docs/reference.md: the convergence table).
+constexpr int kDefaultSamplesPerPixel = 4;
+
 struct ReferenceOptions {
     QuadratureSettings quadrature;  // density: samples per s^2 for every Gaussian of standard deviation s (> 0)
+    int samplesPerPixel = kDefaultSamplesPerPixel;  // a perfect square n^2, 1 to kMaxSamplesPerPixel
+    // per character (scene order); an empty Image = this character uses the exact lighting
+    std::vector<Image> engineIrradiance;   // empty: none at all (EngineIrradiance.h for the layout)
     int threads = 0;            // 0: one per hardware thread
     bool showProgress = false;  // progress bars on stderr
 };
@@ -43,8 +63,12 @@ struct ReferenceStats {
     size_t triangles = 0;      // in the ray-tracing BVH (all characters)
     size_t baseCells = 0;      // base tessellation cells, all SSS characters
     size_t shadedBaseCells = 0;  // those the last call needed
-    size_t sssHits = 0;        // rays of the last call that landed on an SSS character
+    size_t sssHits = 0;        // rays (sub-samples) of the last call that landed on an SSS character
+    size_t emptyIrradianceReads = 0;  // engine irradiance reads with no covered texel in reach, all calls
 };
+
+// renderThicknessMm where the ray through the part leaves without meeting the character again.
+constexpr float kNoExitThicknessMm = std::numeric_limits<float>::infinity();
 
 class ReferenceRenderer {
 public:
@@ -53,10 +77,20 @@ public:
     // Loads every character's model with loadCharacterModel.
     static Result<ReferenceRenderer> load(const Scene& scene, const ReferenceOptions& options);
 
-    // L_d (rgb) and coverage (a) for each ray's nearest hit with tMin < t < tMax.
+    // L_d (rgb) and coverage (a) for each ray's nearest hit with tMin < t < tMax;
+    // maps at level 0 (a bare ray has no pixel footprint).
     std::vector<glm::vec4> diffuseAlongRays(const std::vector<Ray>& rays, float tMin, float tMax);
-    // The scene camera's view at width x height.
+    // Delta (rgb, 0 where it does not apply) and coverage (a), likewise.
+    std::vector<glm::vec4> scatterChangeAlongRays(const std::vector<Ray>& rays, float tMin, float tMax);
+    // The scene camera's view at width x height, samplesPerPixel sub-samples each.
     Image renderDiffuse(int width, int height);
+    // Delta at the same sub-samples as renderDiffuse: 0 on characters without SSS or
+    // without an engine texture, and everywhere when SSS is off.
+    Image renderScatterChange(int width, int height);
+    // At each pixel centre's hit: the distance in mm along minus the geometric normal
+    // (turned to the viewer's side) to the next surface of the same character,
+    // kNoExitThicknessMm where there is none; alpha 1 there, 0 (RGB 0) on the background.
+    Image renderThicknessMm(int width, int height);
 
     // Ray through the centre of pixel (x, y), y = 0 the top row; its direction has
     // view-space z = -1, so t is the view depth in metres.
@@ -71,9 +105,18 @@ private:
         float b1 = 0.0f, b2 = 0.0f;
         bool backFacing = false;
     };
+    enum class Quantity { Diffuse, ScatterChange };
+
     Hit trace(const Ray& ray, float tMin, float tMax) const;
-    glm::vec4 shadeHit(const Hit& hit, const Ray& ray, const std::vector<std::vector<Sample>>* baseSamples) const;
-    std::vector<glm::vec4> diffuseAlongRays(const std::vector<Ray>& rays, float tMin, float tMax, size_t itemSize);
+    // The footprint of one pixel of `camera` at the hit, in map UV.
+    MapFootprint pixelFootprint(const Hit& hit, const Ray& ray, const CameraRays& camera) const;
+    glm::vec4 shadeHit(Quantity quantity, const Hit& hit, const Ray& ray, const CameraRays* camera,
+                       const std::vector<std::vector<Sample>>* baseSamples) const;
+    const SampleValues* valuesFor(Quantity quantity, size_t character) const;
+    // The quantity along each ray; with a camera, maps are read at its pixel footprint.
+    std::vector<glm::vec4> evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin, float tMax,
+                                    const CameraRays* camera, size_t itemSize);
+    Image renderPixels(Quantity quantity, int width, int height);
 
     Scene mScene;
     ReferenceOptions mOptions;
@@ -82,6 +125,8 @@ private:
     std::unique_ptr<Bvh> mBvh;
     std::unique_ptr<ReferenceLighting> mLighting;
     std::vector<std::unique_ptr<DiffusionIntegrator>> mIntegrators;  // per character, width-scaled profile (null: local)
+    std::vector<std::unique_ptr<ExactLightingValues>> mExactValues;    // per character
+    std::vector<std::unique_ptr<EngineIrradiance>> mEngineValues;      // per character (null: no texture)
     ReferenceStats mStats;
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 // Texture reads as the GPU makes them for the renderer's maps: bilinear, GL_REPEAT,
 // texel centres at (i + 0.5) / size, row 0 at v = 0 (engine/render/GpuScene.cpp
-// uploads images top row first, so texture(uv) follows glTF's convention). No
-// mip levels: the reference's samples are finer than any texel footprint it uses.
+// uploads images top row first, so texture(uv) follows glTF's convention). One
+// level; MipPyramid.h builds the levels and the trilinear read on it.
 
 #include "core/Image.h"
 

@@ -55,6 +55,7 @@ TEST(ReferenceCli, BadInputFailsCleanly) {
     const Case cases[] = {
         {furnaceScene() + " --out " + out + " --density 0", 2, "--density"},
         {furnaceScene() + " --out " + out + " --aov specular", 2, "--aov"},
+        {furnaceScene() + " --out " + out + " --spp 2", 2, "--spp"},  // not a perfect square
         {furnaceScene() + " --out " + dir.file("ref.png"), 2, ".exr"},
         {furnaceScene() + " --out " + out + " --set sss.mix=7", 1, "mix"},
         {dir.file("missing.json") + " --out " + out, 1, "missing.json"},

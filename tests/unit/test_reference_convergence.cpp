@@ -1,7 +1,7 @@
 // Convergence of the CPU reference on the procedural sphere (radius 0.1 m,
 // skin profile, a spot light and a card's hard shadow across it): the error
 // against the densest run falls as the sample density rises. Prints the table
-// (density, time, relative RMSE) that docs/reference_section.md quotes.
+// (density, time, relative RMSE) that docs/reference.md quotes.
 // Labelled `slow` (tests/CMakeLists.txt): it renders the sphere six times.
 #include "ReferenceTestScenes.h"
 
@@ -24,6 +24,7 @@ constexpr int kHeight = 30;
 Image renderAt(float density, double* seconds) {
     reference::ReferenceOptions options;
     options.quadrature.density = density;
+    options.samplesPerPixel = 1;  // the quadrature's convergence alone (test_reference_pixels.cpp: the sub-samples')
     auto renderer = reference::ReferenceRenderer::create(sphereScene(), sphereSceneModels(false), options);
     EXPECT_TRUE(renderer.ok());
     const auto start = std::chrono::steady_clock::now();

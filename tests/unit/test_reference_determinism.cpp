@@ -1,5 +1,6 @@
-// The reference's image depends on the scene and the density only: not on the
-// thread count (no shared random state, results written per pixel).
+// The reference's image depends on the scene, the density and the samples per
+// pixel only: not on the thread count (the sub-samples' jitter is a hash of the
+// pixel, results are written per sub-sample).
 #include "ReferenceTestScenes.h"
 
 #include "reference/ReferenceRenderer.h"
@@ -15,6 +16,7 @@ Image renderWithThreads(int threads) {
     reference::ReferenceOptions options;
     options.quadrature.density = 2.0f;  // the check needs no accuracy
     options.threads = threads;
+    options.samplesPerPixel = 4;  // jittered sub-samples
     auto renderer = reference::ReferenceRenderer::create(sphereScene(), sphereSceneModels(true), options);
     EXPECT_TRUE(renderer.ok());
     return renderer->renderDiffuse(20, 15);

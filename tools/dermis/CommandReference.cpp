@@ -26,8 +26,8 @@ constexpr int kMaxReferenceDimension = 8192;
 const char* const kHelp =
     "usage: dermis reference SCENE --out FILE.exr [options]\n"
     "\n"
-    "Computes the CPU reference of the diffuse AOV: for each pixel centre, the point x_o\n"
-    "the camera ray hits and\n"
+    "Computes the CPU reference of the diffuse AOV: for each sub-sample of a pixel, the\n"
+    "point x_o the camera ray hits and\n"
     "  L_d(x_o) = albedo^(1-mix)(x_o) (1 - rho_s rho_dt(N.V, m))\n"
     "             x integral over the character of R(|x_o - x_i|) E(x_i) albedo^mix(x_i) dA_i\n"
     "with R the character's diffusion profile over 3-D distance and E the irradiance of\n"
@@ -35,6 +35,10 @@ const char* const kHelp =
     "transmittance). Characters without a profile are Lambertian. The result compares\n"
     "with `dermis render SCENE --aov diffuse --out x.exr` at the same size; run that with\n"
     "--set ssao.enabled=false --set transmittance.enabled=false for the same definition.\n"
+    "A pixel is the mean of its sub-samples: alpha is the fraction that hit a surface and\n"
+    "RGB counts the background as 0, so compare with the engine only where alpha is 1.\n"
+    "Albedo and normal maps are read trilinearly at the level of detail of the whole\n"
+    "pixel's footprint, as the GPU reads them.\n"
     "\n"
     "options:\n"
     "  --out FILE          output image, linear float .exr (required); written only on success\n"
@@ -42,6 +46,9 @@ const char* const kHelp =
     "  --size WxH          image size in pixels (default 640x360, as dermis render)\n"
     "  --density N         quadrature samples per s^2 for each Gaussian of standard deviation s,\n"
     "                      near x_o; the error falls about as 1/N (default 8)\n"
+    "  --spp N             sub-samples per pixel, a perfect square from 1 to 256 on a jittered\n"
+    "                      sqrt(N) x sqrt(N) grid; 1 is the pixel centre (default 4); the time\n"
+    "                      grows about as N\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable (as in\n"
     "                      dermis render: --set sss.mix=0.5 --set camera.position_m=[0,0.1,0.5])\n"
     "  --threads N         worker threads (default: one per hardware thread); the image does not\n"
@@ -55,7 +62,7 @@ const char* const kHelp =
 }  // namespace
 
 int runReference(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "set", "threads"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "set", "threads"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -84,6 +91,16 @@ int runReference(const std::vector<std::string>& rawArgs) {
         if (!density.ok()) return usageError(density.error());
         options.quadrature.density = *density;
     }
+    if (args->has("spp")) {
+        auto spp = parsePositiveInt("--spp", args->get("spp", ""));
+        if (!spp.ok()) return usageError(spp.error());
+        if (reference::strataPerSide(*spp) == 0) {
+            return usageError(makeError("--spp " + args->get("spp", ""), "expected a perfect square from 1 to " +
+                                                                            std::to_string(reference::kMaxSamplesPerPixel) +
+                                                                            " (1, 4, 9, 16, ...)"));
+        }
+        options.samplesPerPixel = *spp;
+    }
     if (args->has("threads")) {
         auto threads = parsePositiveInt("--threads", args->get("threads", ""));
         if (!threads.ok()) return usageError(threads.error());
@@ -101,7 +118,8 @@ int runReference(const std::vector<std::string>& rawArgs) {
     if (!renderer.ok()) return failure(renderer.error());
     const auto built = std::chrono::steady_clock::now();
     log::info("reference: " + std::to_string(size->first) + "x" + std::to_string(size->second) + ", density " +
-              std::to_string(options.quadrature.density) + " per s^2, " +
+              std::to_string(options.quadrature.density) + " per s^2, " + std::to_string(options.samplesPerPixel) +
+              " samples per pixel, " +
               std::to_string(reference::resolveThreadCount(options.threads)) + " threads");
     const Image image = renderer->renderDiffuse(size->first, size->second);
     const auto done = std::chrono::steady_clock::now();
@@ -111,7 +129,7 @@ int runReference(const std::vector<std::string>& rawArgs) {
     auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
     char summary[512];
     std::snprintf(summary, sizeof summary,
-                  "reference: %zu SSS pixels, %zu triangles, %zu of %zu base cells shaded; load %.1f s, render %.1f s",
+                  "reference: %zu SSS sub-samples, %zu triangles, %zu of %zu base cells shaded; load %.1f s, render %.1f s",
                   stats.sssHits, stats.triangles, stats.shadedBaseCells, stats.baseCells, seconds(start, built),
                   seconds(built, done));
     log::info(summary);
