@@ -215,6 +215,7 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
             uploadTsBlocks(frame, plan, b);
             runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tsBlur.get(), {d.in, d.stretch});
         };
+        block.params.z = std::sqrt(std::max(step.stepVarianceMm2, 0.0f));
         block.blur = glm::vec4(1.0f, 0.0f, sigmaMm, float(taps));
         const FilterData& u = graph.addPass<FilterData>(
             name + " u",
