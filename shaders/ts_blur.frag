@@ -69,6 +69,8 @@ void main() {
         return;
     }
     float sigmaTexels = min(uTs.params.z / stretchMm * uTs.size.x, kMaxTexelsPerSigma);
+    // Less what the gather's bilinear reads add (params.w, passes/TsUvPasses.cpp).
+    sigmaTexels = sqrt(max(sigmaTexels * sigmaTexels - uTs.params.w, 0.0));
     int radius = int(ceil(3.0 * sigmaTexels));
     if (radius <= kMaxExactRadiusTexels) {
         oBlurred = exactBlur(texel, ivec2(direction), max(sigmaTexels, 1e-3), max(radius, 1), centre);
