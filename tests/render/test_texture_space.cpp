@@ -666,8 +666,8 @@ namespace {
 // [0, 0.45]) and, 3-8 mm behind it, front-facing fins turned almost edge-on
 // to the camera (u in [0.55, 1], drawn after the quad). The fins are hidden,
 // but their depth slope is so steep that the gather's slope-scaled depth
-// margin reaches them: how the head scan's ears and nostrils showed the light
-// of another part of the layout (docs/texture-space.md).
+// margin reaches them: how lit pixels of the head scan showed the light of
+// another part of the layout (docs/texture-space.md).
 std::string writeHiddenFinsScene(const test::TempDir& dir) {
     std::vector<float> positions, normals, uvs;
     std::vector<uint16_t> indices;
