@@ -1,11 +1,22 @@
 // Texture-space step 4: one separable pass of one incremental Gaussian step
 // (Chappuis 2011 §2.2.4, listing 2.2; include/TextureSpace.glsl is the manual).
-// Taps sit at offset_k x sigma along U or V, sigma in mm turned into UV by
-// the stretch map (mm per UV unit) at the centre texel. The kernel's weights
-// and offsets come from engine/sss/BlurKernel.cpp and sigma is divided by
-// the kernel's own spread, so a step blurs by exactly its variance.
-// Texels with no stretch (gutters, degenerate triangles) keep their value;
-// taps on empty texels (alpha 0) are dropped and the rest renormalised.
+// sigma (mm) is turned into texels by the stretch map (mm per UV unit) at the
+// centre texel. Texels with no stretch (gutters, degenerate triangles) keep
+// their value; taps on empty texels (alpha 0) are dropped and the rest
+// renormalised.
+//
+// Two ways to blur, by the width in texels:
+//  - up to kMaxExactRadiusTexels texels within 3 sigma: every texel, weighted
+//    by the Gaussian integrated over it (its cell; the outer cells take the
+//    tails). On a texture seen as constant per texel this is the exact
+//    convolution at the texel centres. A few wide taps would step: Chappuis
+//    2011's 7 taps spaced 1 sigma apart turn a sharp edge (the irradiance is
+//    sharp where no narrower Gaussian smoothed it) into a staircase, 5.8% of
+//    the step off on the analytic edge (docs/texture-space.md).
+//  - wider: the kernel's taps (engine/sss/BlurKernel.cpp) at offset_k x sigma,
+//    bilinear, sigma divided by the kernel's own spread so that a step blurs
+//    by exactly its variance. There the input is already blurred by the
+//    narrower steps, smoother than the taps' spacing.
 #define DERMIS_USE_TS_BLOCK
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
@@ -17,6 +28,37 @@ layout(location = 0) out vec4 oBlurred;
 
 // A tap never reaches further than this many texels per standard deviation.
 const float kMaxTexelsPerSigma = 64.0;
+// The widest exact blur: 3 sigma within this many texels (33 fetches).
+const int kMaxExactRadiusTexels = 16;
+
+// The standard normal CDF, from erf as Abramowitz & Stegun 1964 (7.1.26)
+// approximate it (absolute error under 1.5e-7).
+float normalCdf(float z) {
+    float x = abs(z) * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    float erfX = 1.0 - poly * exp(-x * x);
+    return 0.5 + 0.5 * sign(z) * erfX;
+}
+
+vec4 exactBlur(ivec2 texel, ivec2 step, float sigmaTexels, int radius, vec4 centre) {
+    ivec2 size = textureSize(uInput, 0);
+    vec4 sum = vec4(0.0);
+    float weightSum = 0.0;
+    float lower = 0.0;  // the CDF at the cell's lower edge; the outer cells reach to infinity
+    for (int k = -radius; k <= radius; ++k) {
+        float upper = k == radius ? 1.0 : normalCdf((float(k) + 0.5) / sigmaTexels);
+        float weight = upper - lower;
+        lower = upper;
+        ivec2 p = texel + step * k;
+        if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) continue;
+        vec4 value = texelFetch(uInput, p, 0);
+        if (value.a <= 0.0) continue;
+        sum += value * weight;
+        weightSum += weight;
+    }
+    return weightSum > 0.0 ? sum / weightSum : centre;
+}
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -25,6 +67,14 @@ void main() {
     float stretchMm = dot(texelFetch(uStretch, texel, 0).rg, direction);
     if (centre.a <= 0.0 || !(stretchMm > 0.0)) {
         oBlurred = centre;
+        return;
+    }
+    float sigmaTexels = min(uTs.params.z / stretchMm * uTs.size.x, kMaxTexelsPerSigma);
+    // Less what the gather's bilinear reads add (params.w, passes/TsUvPasses.cpp).
+    sigmaTexels = sqrt(max(sigmaTexels * sigmaTexels - uTs.params.w, 0.0));
+    int radius = int(ceil(3.0 * sigmaTexels));
+    if (radius <= kMaxExactRadiusTexels) {
+        oBlurred = exactBlur(texel, ivec2(direction), max(sigmaTexels, 1e-3), max(radius, 1), centre);
         return;
     }
     float texelUv = uTs.size.y;

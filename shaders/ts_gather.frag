@@ -16,6 +16,7 @@
 layout(binding = 0) uniform sampler2D uBlurred[DERMIS_MAX_PROFILE_GAUSSIANS];
 layout(binding = 8) uniform sampler2D uTsm;
 layout(binding = 9) uniform sampler2D uAlbedo;  // G-buffer target 0: a = object id / 255
+layout(binding = 10) uniform usampler2D uDepthKey;  // G-buffer target 2: the view depth of the surface kept
 
 in vec3 vWorldPositionM;
 in vec2 vUv;
@@ -25,9 +26,20 @@ in float vBorderDistanceM;
 
 layout(location = 0) out vec4 oDiffuse;
 
+// The G-buffer and this pass interpolate the same triangle at the same pixel
+// centre: their view depths differ by float rounding (under a micrometre at
+// 1 m) and the key's 1 um step. A surface further behind is hidden: the depth
+// test's slope-scaled margin let it through at a grazing angle, and it would
+// overwrite the visible one with the light of another part of the layout.
+const float kSameSurfaceMm = 0.1;
+const float kSameSurfacePerDepth = 1e-4;
+
 void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
     if (objectId != int(uObject.material.y + 0.5)) discard;
+    float viewDepthM = -(uFrame.viewFromWorld * vec4(vWorldPositionM, 1.0)).z;
+    float keptDepthM = viewDepthFromKey(texelFetch(uDepthKey, ivec2(gl_FragCoord.xy), 0).r);
+    if (abs(viewDepthM - keptDepthM) > max(kSameSurfaceMm * 1e-3, kSameSurfacePerDepth * keptDepthM)) discard;
     // A triangle seen from behind (a sliver at a silhouette, a fold of the
     // mesh): its texels were lit with the normal facing away, while the
     // G-buffer turned it towards the viewer. The pixel keeps the lighting

@@ -2,6 +2,7 @@
 
 #include "core/Log.h"
 #include "frame/FrameDeclaration.h"
+#include "frame/IrradianceCapture.h"
 
 #include <algorithm>
 
@@ -45,6 +46,7 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     mPlan = std::move(*plan);
     if (const Status prepared = mResources->prepare(*mPlan, mGeometry); !prepared.ok()) return prepared;
     mOutputAov = request.aov;
+    mLastRequest = request;
 
     mProfiler.beginFrame(mFrame);
     graph::RenderGraph graph;
@@ -60,6 +62,42 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     mTimings.addTimings(mProfiler.takeCompleted());
     ++mFrame;
     return success();
+}
+
+Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
+    if (sizeTexels < kMinIrradianceCaptureTexels || sizeTexels > kMaxIrradianceCaptureTexels ||
+        (sizeTexels & (sizeTexels - 1)) != 0) {
+        return makeError("irradiance capture", "size " + std::to_string(sizeTexels) + " is not a power of two in [" +
+                                                   std::to_string(kMinIrradianceCaptureTexels) + ", " +
+                                                   std::to_string(kMaxIrradianceCaptureTexels) + "]");
+    }
+    // Planned as the UV-space AOV is (texture-space plans in either mode);
+    // then every SSS character is made visible at the asked size, and the
+    // output keeps the last frame's format so that readOutput() still reads it.
+    FrameRequest request = mLastRequest;
+    request.aov = Aov::IrradianceTexture;
+    auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
+    if (!plan.ok()) return plan.error();
+    plan->aov = mLastRequest.aov;
+    for (TsCharacterPlan& character : plan->ts.characters) {
+        character.visible = mScene.settings.sss.enabled;
+        character.size = sizeTexels;
+    }
+    if (const Status prepared = mResources->prepare(*plan, mGeometry); !prepared.ok()) return prepared.error();
+
+    std::vector<Image> images;
+    mProfiler.beginFrame(mFrame);
+    graph::RenderGraph graph;
+    declareIrradianceCapture(graph, *plan, mResources->inputs(), images);
+    if (const Status compiled = graph.compile(); !compiled.ok()) return compiled.error();
+    graph.execute(mBackend);
+    mBackend.endFrame();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    recordShadowMaps(*plan, graph, mShadowCache);
+    // Its pass timers are not the frame's.
+    mProfiler.drain();
+    mProfiler.takeCompleted();
+    return images;
 }
 
 Status Renderer::reloadShaders() {

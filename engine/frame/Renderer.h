@@ -45,6 +45,16 @@ public:
     GLuint outputTexture() const { return mResources->output(); }
     // Inspect every texture each pass writes (gl/NonFiniteCounter.h); slow.
     void setPassInspector(gl::PassInspector inspector) { mBackend.setInspector(std::move(inspector)); }
+    // The texture-space irradiance texture (E x albedo^mix, shaders/ts_irradiance.frag)
+    // of every character, in scene order, sizeTexels on a side, before
+    // dilation and blurs; frame/IrradianceCapture.h gives the layout. Empty
+    // for a character without SSS (or with sss.enabled false). In either
+    // mode, as the last frame's view lit it (640 x 360 Final before the
+    // first): its shadow maps, SSAO (the caller turns it off for a reference
+    // that has none), energy conservation and ambient. The next frame and
+    // readOutput() are not affected; sizeTexels is a power of two within
+    // frame/IrradianceCapture.h's limits (an error otherwise).
+    Result<std::vector<Image>> captureIrradianceTextures(int sizeTexels);
     // Recompiles every shader from disk. On an error the old programs stay
     // in use and the error (file and compiler log) is returned.
     Status reloadShaders();
@@ -67,6 +77,7 @@ private:
     std::optional<FramePlan> mPlan;  // the frame being run: its passes read it while they execute
     FrameTimings mTimings;
     Aov mOutputAov = Aov::Final;
+    FrameRequest mLastRequest;
     uint64_t mFrame = 0;
 };
 

@@ -12,7 +12,7 @@ struct InitData {
 };
 struct GatherData {
     std::vector<graph::TextureHandle> blurred;
-    graph::TextureHandle tsm, depthStencil, albedo, accumulatedIn, accumulatedOut;
+    graph::TextureHandle tsm, depthStencil, albedo, depthKey, accumulatedIn, accumulatedOut;
 };
 
 graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle irradiance) {
@@ -48,6 +48,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 d.tsm = builder.read(tsm);
                 d.depthStencil = builder.read(gbuffer.depthStencil);
                 d.albedo = builder.read(gbuffer.albedo);
+                d.depthKey = builder.read(gbuffer.depthKey);
                 d.accumulatedIn = builder.read(accumulated);
                 d.accumulatedOut = builder.write(accumulated);
                 builder.skipIf(!plan.visible, "character off screen");
@@ -66,11 +67,14 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 }
                 glBindTextureUnit(8, resources.texture(d.tsm));
                 glBindTextureUnit(9, resources.texture(d.albedo));
+                glBindTextureUnit(10, resources.texture(d.depthKey));
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 // Only the surface the G-buffer kept: its own depth, pulled a
                 // little towards the camera so that the two programs' rounding
-                // cannot make it fail; the object id check in the shader rules
-                // out other characters within that margin.
+                // cannot make it fail. The margin grows with the depth slope, so
+                // at grazing angles surfaces millimetres behind pass too; the
+                // shader rules them out by the view depth the G-buffer stored,
+                // and other characters by the object id.
                 glEnable(GL_DEPTH_TEST);
                 glDepthFunc(GL_LEQUAL);
                 glDepthMask(GL_FALSE);

@@ -50,6 +50,9 @@ void beginUvRaster(const FrameContext& frame, GLuint texture, int size) {
 
 const char* const kOffScreen = "character off screen";
 
+// The mean of f (1 - f) for f uniform in [0, 1].
+constexpr float kBilinearVarianceTexels2 = 1.0f / 6.0f;
+
 }  // namespace
 
 gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsCharacterPlan& plan) {
@@ -198,6 +201,7 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
     const BlurKernel& kernel = frame.plan.tsKernel;
     std::vector<graph::TextureHandle> textures;
     const float kernelVariance = kernelVarianceSigma2(kernel);
+    bool firstBlur = true;
     for (const TsStep& step : plan.steps) {
         const std::string name = tsPassName(plan, "g" + std::to_string(step.gaussian));
         const graph::TextureHandle previous = textures.empty() ? dilated : textures.back();
@@ -215,6 +219,12 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
             uploadTsBlocks(frame, plan, b);
             runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tsBlur.get(), {d.in, d.stretch});
         };
+        block.params.z = std::sqrt(std::max(step.stepVarianceMm2, 0.0f));
+        // The gather reads the blurred textures bilinearly, which blurs by
+        // f (1 - f) texels^2 more at fraction f between texel centres, 1/6 on
+        // average; the first blur leaves that much out (ts_blur.frag).
+        block.params.w = firstBlur && !step.skipped ? kBilinearVarianceTexels2 : 0.0f;
+        firstBlur = firstBlur && step.skipped;
         block.blur = glm::vec4(1.0f, 0.0f, sigmaMm, float(taps));
         const FilterData& u = graph.addPass<FilterData>(
             name + " u",

@@ -126,7 +126,7 @@ DERMIS_BLOCK(TextureSpaceBlock, DERMIS_BINDING_PASS) {
     vec4 tsm;               // x: c (1/mm) of the stored exp(-c d); y: strength; z: TSM side (texels); w: Gaussian the TSM terms start at
     vec4 size;              // x: irradiance side (texels), y: 1 / side, z: seam blend (std devs), w: Gaussian count
     vec4 blur;              // xy: (1,0) U or (0,1) V; z: std dev of this step over the kernel's own (mm); w: tap count
-    vec4 params;            // x: dilation radius (texels); y: object-to-world scale (m per object unit)
+    vec4 params;            // x: dilation radius (texels); y: object-to-world scale (m per object unit); z: std dev of this blur step (mm); w: variance it leaves out (texels^2)
     vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
     vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight, a: variance (mm^2); [i] is blurred texture i
 } DERMIS_BLOCK_END(uTs)
