@@ -45,14 +45,15 @@ vec4 exactBlur(ivec2 texel, ivec2 step, float sigmaTexels, int radius, vec4 cent
     ivec2 size = textureSize(uInput, 0);
     vec4 sum = vec4(0.0);
     float weightSum = 0.0;
+    float lower = 0.0;  // the CDF at the cell's lower edge; the outer cells reach to infinity
     for (int k = -radius; k <= radius; ++k) {
+        float upper = k == radius ? 1.0 : normalCdf((float(k) + 0.5) / sigmaTexels);
+        float weight = upper - lower;
+        lower = upper;
         ivec2 p = texel + step * k;
         if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) continue;
         vec4 value = texelFetch(uInput, p, 0);
         if (value.a <= 0.0) continue;
-        float upper = k == radius ? 1.0 : normalCdf((float(k) + 0.5) / sigmaTexels);
-        float lower = k == -radius ? 0.0 : normalCdf((float(k) - 0.5) / sigmaTexels);
-        float weight = upper - lower;
         sum += value * weight;
         weightSum += weight;
     }

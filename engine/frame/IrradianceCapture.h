@@ -18,6 +18,10 @@
 
 namespace dermis {
 
+// The sides Renderer::captureIrradianceTextures accepts (powers of two).
+constexpr int kMinIrradianceCaptureTexels = 64;
+constexpr int kMaxIrradianceCaptureTexels = 8192;
+
 // `images` gets one entry per scene character: RGBA linear floats, row y at
 // v = (y + 0.5) / side (not flipped: row 0 is v near 0), column x at
 // u = (x + 0.5) / side, in the mesh's raw TEXCOORD_0; alpha > 0 on covered

@@ -65,8 +65,11 @@ Status Renderer::renderFrame(const FrameRequest& request) {
 }
 
 Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
-    if (sizeTexels < 64 || sizeTexels > 8192 || (sizeTexels & (sizeTexels - 1)) != 0) {
-        return makeError("irradiance capture", "size " + std::to_string(sizeTexels) + " is not a power of two in [64, 8192]");
+    if (sizeTexels < kMinIrradianceCaptureTexels || sizeTexels > kMaxIrradianceCaptureTexels ||
+        (sizeTexels & (sizeTexels - 1)) != 0) {
+        return makeError("irradiance capture", "size " + std::to_string(sizeTexels) + " is not a power of two in [" +
+                                                   std::to_string(kMinIrradianceCaptureTexels) + ", " +
+                                                   std::to_string(kMaxIrradianceCaptureTexels) + "]");
     }
     // Planned as the UV-space AOV is (texture-space plans in either mode);
     // then every SSS character is made visible at the asked size, and the

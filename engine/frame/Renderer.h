@@ -52,8 +52,8 @@ public:
     // mode, as the last frame's view lit it (640 x 360 Final before the
     // first): its shadow maps, SSAO (the caller turns it off for a reference
     // that has none), energy conservation and ambient. The next frame and
-    // readOutput() are not affected; sizeTexels is a power of two in
-    // [64, 8192].
+    // readOutput() are not affected; sizeTexels is a power of two within
+    // frame/IrradianceCapture.h's limits (an error otherwise).
     Result<std::vector<Image>> captureIrradianceTextures(int sizeTexels);
     // Recompiles every shader from disk. On an error the old programs stay
     // in use and the error (file and compiler log) is returned.

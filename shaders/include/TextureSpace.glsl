@@ -18,11 +18,15 @@
 //                    texel, so taps past a chart's edge read plausible light,
 //                    never black.
 //     4. blurs       texture i is texture i-1 blurred by v_i - v_(i-1), U
-//                    then V, with N taps spaced by the stretch map (§2.2.4,
-//                    listing 2.2); Gaussian 0 is the irradiance itself unless
+//                    then V, sigma turned into texels by the stretch map
+//                    (§2.2.4, listing 2.2): every texel within 3 sigma,
+//                    weighted by the Gaussian integrated over it, up to 16
+//                    texels; beyond, N taps spaced by sigma (ts_blur.frag
+//                    says why). Gaussian 0 is the irradiance itself unless
 //                    it spans texels (render/TsPlan.h). Alpha is blurred
 //                    along, so the thickness is smooth (§2.5).
-//     5. gather      in screen space, for the character's pixels:
+//     5. gather      in screen space, for the character's pixels (the
+//                    surface the G-buffer kept, by its stored view depth):
 //                    sum_i w_i T_i(uv) / sum_i w_i, each T_i giving way to
 //                    T_0 (the narrowest, "local" light) near a chart border,
 //                    plus the TSM terms; the

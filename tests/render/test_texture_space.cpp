@@ -643,7 +643,7 @@ TEST_F(TextureSpace, FlatSkinEdgeIsTheExactDiffusionOfItsIrradiance) {
                     scales[k], fits[k].maxError, fits[k].widthScale.r, fits[k].widthScale.g, fits[k].widthScale.b);
     }
     // Texture space came to 0.0023 and 1.004-1.005 (docs/texture-space.md);
-    // with every width 5% off, 0.0065-0.0088 and 0.954-0.955 or 1.051-1.055.
+    // with every width 5% off, 0.0088 and 0.954-0.955 (narrow) or 0.0106 and 1.051-1.055 (wide).
     // The bounds sit between: a max error of 0.5% of the step (the goal is
     // 1%), a fitted width within 2%.
     const auto passes = [](const EdgeFit& f) {
@@ -666,8 +666,8 @@ namespace {
 // [0, 0.45]) and, 3-8 mm behind it, front-facing fins turned almost edge-on
 // to the camera (u in [0.55, 1], drawn after the quad). The fins are hidden,
 // but their depth slope is so steep that the gather's slope-scaled depth
-// margin reaches them: how the head scan's ears and nostrils showed the light
-// of another part of the layout (docs/texture-space.md).
+// margin reaches them: how lit pixels of the head scan showed the light of
+// another part of the layout (docs/texture-space.md).
 std::string writeHiddenFinsScene(const test::TempDir& dir) {
     std::vector<float> positions, normals, uvs;
     std::vector<uint16_t> indices;
