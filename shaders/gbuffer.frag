@@ -1,6 +1,6 @@
 // G-buffer layout (docs/screen-space.md):
 //   depth/stencil  D24S8; stencil = SSS profile slot (0 = opaque), for the blurs
-//   target 0       RGBA8 sRGB: albedo (linear after decode), a = object id / 255
+//   target 0       RGBA16F: linear albedo, a = object id / 255
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s
 //   target 2       R32UI: profile slot and view depth packed, the key that
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)

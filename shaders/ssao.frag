@@ -9,7 +9,7 @@
 //   target of the G-buffer's size. Inputs:
 //     unit 0  uDepth           G-buffer D24S8 depth (sampled as depth)
 //     unit 1  uNormalMaterial  G-buffer RGBA16F, xy = octahedral VIEW-space normal
-//     unit 2  uAlbedo          G-buffer RGBA8, a = object id / 255 (0 = background)
+//     unit 2  uAlbedo          G-buffer RGBA16F, a = object id / 255 (0 = background)
 //     FrameBlock       viewFromClip, clipFromView, viewport, features.z (strength)
 //     CharactersBlock  characters[id].params: y = radius (m), z = sample count
 //     SsaoBlock        (DERMIS_BINDING_PASS) fallbacks and biases, see below

@@ -18,7 +18,7 @@ static_assert(sizeof(ProfilesBlock) == (DERMIS_MAX_PROFILES + 1) * sizeof(Profil
 static_assert(sizeof(GpuLight) == 64 + 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
 static_assert(sizeof(ObjectBlock) == 2 * 64 + 3 * 16, "ObjectBlock must match std140");
-static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 2) * 16, "SssBlurBlock must match std140");
+static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");
 static_assert(sizeof(SsaoBlock) == 2 * 16, "SsaoBlock must match std140");
 static_assert(sizeof(TextureSpaceBlock) == 64 + (6 + DERMIS_MAX_BLUR_TAPS + DERMIS_MAX_PROFILE_GAUSSIANS) * 16,
               "TextureSpaceBlock must match std140");

@@ -9,7 +9,9 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
         "gbuffer",
         [&](graph::PassBuilder& builder, GBuffer& g) {
             g.depthStencil = builder.create("depth", {w, h, graph::TextureFormat::Depth24Stencil8});
-            g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba8Srgb});
+            // Half floats: 2^-11 relative (0.05%), where 8-bit sRGB lost up to 0.8% at albedo 0.5; the id
+            // k / 255 reads back as k (aov.frag, lighting.frag round it) with an error 50x below half a step.
+            g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba16F});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
             g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
             if (frame.plan.lean) {
@@ -40,9 +42,6 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 glClearBufferfv(GL_COLOR, 4, zero);
             }
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-            // The albedo target is sRGB: without this GL stores the linear value
-            // unencoded and every later read decodes it a second time.
-            glEnable(GL_FRAMEBUFFER_SRGB);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
             glDepthMask(GL_TRUE);
@@ -65,7 +64,6 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             }
             glDisable(GL_STENCIL_TEST);
             glDisable(GL_DEPTH_TEST);
-            glDisable(GL_FRAMEBUFFER_SRGB);
         });
 }
 

@@ -13,7 +13,7 @@ namespace dermis {
 
 struct GBuffer {
     graph::TextureHandle depthStencil;    // D24S8; stencil = SSS profile slot (0 = opaque)
-    graph::TextureHandle albedo;          // RGBA8 sRGB; alpha = object id / 255
+    graph::TextureHandle albedo;          // RGBA16F linear; alpha = object id / 255
     graph::TextureHandle normalMaterial;  // RGBA16F: octahedral view normal, roughness m, rho_s
     graph::TextureHandle depthKey;        // R32UI: profile slot and view depth (UniformBlocks.glsl)
     graph::TextureHandle leanMoments;     // RGBA16F (B'.x, B'.y, M'.xx, M'.yy); invalid in variant c

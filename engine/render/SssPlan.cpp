@@ -30,19 +30,24 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
     const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
     plan.initWeight = glm::vec3(0.0f);
     plan.steps.clear();
+    float blurredVarianceMm2 = 0.0f;  // of the chain so far: 0 while it is the irradiance itself
     for (int i = 0; i < used; ++i) {
         SssGaussianStep step;
         step.gaussian = i;
-        const float variance = gaussians[static_cast<size_t>(i)].varianceMm2;
-        const float previous = i == 0 ? 0.0f : gaussians[static_cast<size_t>(i - 1)].varianceMm2;
-        step.stepVarianceMm2 = (variance - previous) * widthScale2;
+        const float variance = gaussians[static_cast<size_t>(i)].varianceMm2 * widthScale2;
         step.weight = weights[static_cast<size_t>(i)];
-        step.widthPxAtNearest = std::sqrt(variance * widthScale2) * pixelsPerMm;
+        step.widthPxAtNearest = std::sqrt(variance) * pixelsPerMm;
         step.skipped = !plan.visible || step.widthPxAtNearest < settings.minWidthPx;
         // Only a prefix can be skipped for width (variances increase), so a
         // skipped Gaussian counts as the identity and its weight starts the
         // accumulation.
-        if (step.skipped) plan.initWeight += step.weight;
+        if (step.skipped) {
+            plan.initWeight += step.weight;
+        } else {
+            step.readsIrradiance = blurredVarianceMm2 == 0.0f;
+            step.stepVarianceMm2 = variance - blurredVarianceMm2;
+            blurredVarianceMm2 = variance;
+        }
         plan.steps.push_back(step);
     }
 }

@@ -9,7 +9,8 @@
 // (v_(-1) = 0) and adds w_i x result into the accumulation.
 // A Gaussian whose standard deviation at the nearest SSS pixel is below
 // SssSettings::minWidthPx is skipped: it counts as the identity, its weight
-// starts the accumulation, so energy is kept. At ordinary distances that is
+// starts the accumulation, so energy is kept. The chain then still holds the
+// unblurred irradiance, so the first step that runs blurs by its whole v_i. At ordinary distances that is
 // always Gaussian 0 (0.0064 mm^2, docs/screen-space.md: "the identity"); only extreme
 // close-ups, where it spans pixels, blur it. With settings.gaussians < N the
 // widest Gaussians are dropped and their weights folded into the widest one
@@ -28,7 +29,8 @@ namespace dermis {
 
 struct SssGaussianStep {
     int gaussian = 0;               // index into the profile's Gaussians
-    float stepVarianceMm2 = 0.0f;   // blur of this step: v_i - v_(i-1), scaled by widthScale^2
+    float stepVarianceMm2 = 0.0f;   // blur of this step: v_i - v_(i-1), scaled by widthScale^2; v_i for the first blurred step
+    bool readsIrradiance = false;   // the first step that blurs: its input is the unblurred irradiance
     glm::vec3 weight{0.0f};         // w_i (after folding dropped Gaussians)
     float widthPxAtNearest = 0.0f;  // std dev of Gaussian i in pixels at the nearest SSS pixel
     bool skipped = false;

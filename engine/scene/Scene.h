@@ -101,7 +101,7 @@ struct SssSettings {
 // Back-normal transmittance through thin regions (Papanikolaou 2013 §4.3, Jimenez 2010).
 struct TransmittanceSettings {
     bool enabled = true;
-    float shrinkMm = 1.0f;   // the surface point moves this far inwards along -N before the shadow-map lookup
+    float shrinkMm = 0.0f;   // the surface point moves this far inwards along -N before the shadow-map lookup
     float strength = 1.0f;   // multiplies the transmitted light
 };
 

@@ -22,9 +22,11 @@
 //      set glStencilFunc(GL_EQUAL, slot, 0xFF): only that profile's pixels run.
 //      A scissor around its characters trims the rest.
 //   3. Fill SssBlurBlock (UniformBlocks.glsl) per draw: the kernel (offsets in
-//      standard deviations and weights, computed on the CPU by
-//      engine/sss/BlurKernel.cpp), the direction, this step's standard
-//      deviation in mm, the edge mode and the profile slot.
+//      standard deviations, computed on the CPU by engine/sss/BlurKernel.cpp;
+//      the shader takes its tap spacing from them and integrates its own
+//      weights, SAMPLING AND WEIGHTS below), the direction, this step's
+//      standard deviation in mm, the edge mode, the profile slot and whether
+//      the step reads the unblurred irradiance.
 //   4. Bind the chain input to unit 0 and the depth key (G-buffer target 2,
 //      R32UI) to unit 1.
 //   5. Outputs: location 0 the blurred chain value, 1 the colour's
@@ -88,10 +90,26 @@
 //   centre (control) or dropped (bilateral) by selection, not by a multiply,
 //   so a non-finite value outside the mask can never leak in.
 //
-// SAMPLING
-//   Taps fetch the nearest texel (texelFetch): a bilinear fetch at a
-//   silhouette would mix in a texel the depth test never saw. Offsets are
-//   rounded to whole pixels; the discrete kernel keeps its CPU weights.
+// SAMPLING AND WEIGHTS (per pixel, from its own width in pixels sigma_px)
+//   Taps fetch whole texels (texelFetch): a bilinear fetch at a silhouette
+//   would mix in a texel the depth test never saw. So the taps sit at whole
+//   pixels k_j = j * s, j = -H..H (H = taps / 2), with a whole-pixel spacing
+//   s = max(1, round(x_1 * sigma_px)) (x_1: the CPU kernel's first offset in
+//   standard deviations, so taps span about its extent). Each tap stands for
+//   its cell [k_j - s/2, k_j + s/2] (the outer two reach to infinity) and
+//   weighs the Gaussian integrated over that cell, not its point value
+//   (Phi from erf, Abramowitz & Stegun 1964 7.1.26), so the weights sum to 1
+//   and the width is exact to a fraction of a pixel at every depth.
+//   - A step that reads the unblurred irradiance (uSssBlur.source.x = 1)
+//     treats its texels as boxes: with s = 1 the cell integrals are exactly
+//     the diffusion of that piecewise-constant image (the box adds its own
+//     1/12 px^2, as the true diffusion of the box image does).
+//   - A later step reads a blurred, smooth chain, where the cells' own width
+//     would add ~s^2/12 px^2 per step (Sheppard's correction) on top of the
+//     variance the step must add: there the Gaussian's width sigma' is
+//     solved so that the discrete kernel's variance, sum_j w_j k_j^2, is
+//     exactly sigma_px^2 (a few fixed-point steps; the variance grows by
+//     about as much as sigma'^2 does).
 //
 // CONFIGURATION (define before including)
 //   SSS_EXTRA_TARGETS  0 (default) or 1: one extra RGBA target (the LEAN
@@ -139,6 +157,47 @@ uvec4 sssPack(vec4 colour, vec4 extra) {
 }
 #endif
 
+// The upper tail 1 - Phi(z) of the standard normal for z >= 0
+// (Abramowitz & Stegun 1964 7.1.26, |error| < 1.5e-7 in erf).
+float sssNormalUpperTail(float z) {
+    float x = z * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    return 0.5 * poly * exp(-x * x);
+}
+
+const int kSssMaxHalfTaps = DERMIS_MAX_BLUR_TAPS / 2;
+
+// Cell-integrated weights of taps 0..halfTaps at spacing s px for a Gaussian of
+// std dev sigma px (SAMPLING AND WEIGHTS); returns the kernel's variance in px^2.
+float sssCellWeights(float sigmaPx, float spacingPx, int halfTaps, out float weights[kSssMaxHalfTaps + 1]) {
+    float inverseSigma = 1.0 / max(sigmaPx, 1e-6);
+    float lowerTail = sssNormalUpperTail(0.5 * spacingPx * inverseSigma);
+    weights[0] = 1.0 - 2.0 * lowerTail;
+    float variance = 0.0;
+    for (int j = 1; j <= halfTaps; ++j) {
+        float upperTail = j == halfTaps ? 0.0 : sssNormalUpperTail((float(j) + 0.5) * spacingPx * inverseSigma);
+        weights[j] = lowerTail - upperTail;
+        variance += 2.0 * weights[j] * float(j * j) * spacingPx * spacingPx;
+        lowerTail = upperTail;
+    }
+    return variance;
+}
+
+// The taps' spacing (whole pixels) and weights for this pixel's width.
+float sssTapWeights(float sigmaPx, int halfTaps, bool readsBoxes, out float weights[kSssMaxHalfTaps + 1]) {
+    float spacingPx = max(1.0, round(uSssBlur.kernel[halfTaps + 1].x * sigmaPx));
+    float variance = sssCellWeights(sigmaPx, spacingPx, halfTaps, weights);
+    if (readsBoxes) return spacingPx;
+    float target = sigmaPx * sigmaPx;
+    float sigma2 = target;
+    for (int iteration = 0; iteration < 3; ++iteration) {
+        sigma2 = max(sigma2 + target - variance, 1e-6);
+        variance = sssCellWeights(sqrt(sigma2), spacingPx, halfTaps, weights);
+    }
+    return spacingPx;
+}
+
 // The blurred values at `pixel` along uSssBlur.step.xy. Returns the centre
 // when the pixel is not on this profile (stencil keeps that from happening;
 // this is the belt to its braces).
@@ -152,6 +211,9 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
     vec2 direction = uSssBlur.step.xy;
     int taps = int(uSssBlur.step.w);
+    int halfTaps = min(taps / 2, kSssMaxHalfTaps);
+    float halfWeights[kSssMaxHalfTaps + 1];
+    float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.source.x > 0.5, halfWeights);
     int edges = int(uSssBlur.edges.x + 0.5);
     bool bilateral = edges == DERMIS_BLUR_EDGES_BILATERAL;
     bool fetchOnly = edges == DERMIS_BLUR_EDGES_FETCH_ONLY;
@@ -161,10 +223,9 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
     float weightSum = 0.0;
-    for (int i = 0; i < taps; ++i) {
-        vec2 offset = direction * (uSssBlur.kernel[i].x * sigmaPx);
-        ivec2 tapPixel = clamp(pixel + ivec2(round(offset)), ivec2(0), size - 1);
-        float weight = uSssBlur.kernel[i].y;
+    for (int j = -halfTaps; j <= halfTaps; ++j) {
+        ivec2 tapPixel = clamp(pixel + ivec2(direction * (float(j) * spacingPx)), ivec2(0), size - 1);
+        float weight = halfWeights[abs(j)];
         if (fetchOnly) {
             SssValues tap = sssFetch(colour, tapPixel);
             tap.v[0].a = float(texelFetch(depthKey, tapPixel, 0).r & 255u);

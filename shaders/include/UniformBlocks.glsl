@@ -102,9 +102,10 @@ DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
 // the one it uses before including this file.
 #if defined(__cplusplus) || defined(DERMIS_USE_SSS_BLUR_BLOCK)
 DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
-    vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
+    vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations (y: its CPU weight; the shader integrates its own)
     vec4 step;   // xy: blur direction, (1,0) or (0,1); z: standard deviation of this step (mm); w: tap count
     vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+    vec4 source;  // x: 1 when the step reads the unblurred irradiance (texels are boxes), 0 a blurred chain; yzw: 0
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 

@@ -4,6 +4,7 @@
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
+#include "brdf/EnergyTable.h"
 #include "sss/DiffusionProfile.h"
 
 #include <algorithm>
@@ -17,93 +18,337 @@ namespace {
 
 class Sss : public test::RenderFixture {};
 
-constexpr int kTapCounts[] = {5, 7, 9, 13, 17};
+constexpr int kTapCounts[] = {5, 9, 17};
 
-// The analytic edge (AnalyticEdge.h) at this size.
-constexpr int kEdgeWidth = 640;
-constexpr int kEdgeHeight = 360;
 
 }  // namespace
 
-TEST_F(Sss, FurnaceUniformLightStaysUniformForEveryTapCount) {
+// The furnace: a uniformly lit skin plane, E = 1 straight down, seen from
+// 3 cm so that at 320x180 (11 px/mm) all six Gaussians blur (the narrowest is
+// 0.9 px wide). Every blur pass must run, and the diffuse AOV must be the
+// closed form E x albedo x (1 - rho_s rho_dt(N.L, m)) x (1 - rho_s rho_dt(N.V, m))
+// (Chappuis 2011 §2.6), rho_dt by quadrature on the CPU (brdf/EnergyTable.h),
+// N.V per pixel from the pinhole camera.
+TEST_F(Sss, FurnaceRunsEveryGaussianAndMatchesTheClosedForm) {
+    constexpr int kWidth = 320;
+    constexpr int kHeight = 180;
     for (const char* blur : {"bilateral", "control"}) {
         for (int taps : kTapCounts) {
-            load("furnace.json", {"sss.taps=" + std::to_string(taps), std::string("sss.blur=") + blur});
-            const Image image = render(Aov::Diffuse, 160, 90);
+            load("furnace.json", {"camera.position_m=[0,0.03,0]", "sss.taps=" + std::to_string(taps),
+                                  std::string("sss.blur=") + blur});
+            const Image image = render(Aov::Diffuse, kWidth, kHeight);
             ASSERT_EQ(test::countNonFinite(image), 0u);
-            load("furnace.json", {"sss.enabled=false"});
-            const Image unblurred = render(Aov::Diffuse, 160, 90);
-            double worst = 0.0;
-            for (size_t i = 0; i < image.texels.size(); ++i) {
-                for (int c = 0; c < 3; ++c) {
-                    const double reference = unblurred.texels[i][c];
-                    ASSERT_GT(reference, 0.05);
-                    worst = std::max(worst, std::abs(image.texels[i][c] - reference) / reference);
+            for (int g = 0; g < 6; ++g) {
+                for (const char* direction : {" h", " v"}) {
+                    const std::string name = "sss skin g" + std::to_string(g) + direction;
+                    const PassSummary* p = pass(name);
+                    EXPECT_TRUE(p && p->executed) << name << " did not run (" << blur << ", " << taps << " taps)";
                 }
             }
-            std::printf("furnace %-9s %2d taps: largest relative change %.5f\n", blur, taps, worst);
-            EXPECT_LT(worst, 0.005) << blur << " " << taps << " taps";
+            const Material& material = mScene->characters[0].material;
+            const Light& light = mScene->lights[0];
+            const double tanHalf = std::tan(glm::radians(double(mScene->camera.verticalFovDeg)) / 2.0);
+            const double aspect = double(kWidth) / kHeight;
+            const double lightShare = 1.0 - material.rhoS * rhoDt(1.0f, material.roughness);
+            glm::dvec3 worst(0.0);
+            for (int y = 0; y < kHeight; ++y) {
+                for (int x = 0; x < kWidth; ++x) {
+                    const glm::dvec3 ray((2.0 * (x + 0.5) / kWidth - 1.0) * tanHalf * aspect,
+                                         (1.0 - 2.0 * (y + 0.5) / kHeight) * tanHalf, -1.0);
+                    const double nDotV = 1.0 / glm::length(ray);
+                    const double viewShare = 1.0 - material.rhoS * rhoDt(float(nDotV), material.roughness);
+                    for (int c = 0; c < 3; ++c) {
+                        const double expected =
+                            light.intensity * light.colour[c] * material.albedo[c] * lightShare * viewShare;
+                        const double error = (image.at(x, y)[c] - expected) / expected;
+                        if (std::abs(error) > std::abs(worst[c])) worst[c] = error;
+                    }
+                }
+            }
+            std::printf("furnace %-9s %2d taps: worst relative error R %+.4f%% G %+.4f%% B %+.4f%%\n", blur, taps,
+                        100.0 * worst.r, 100.0 * worst.g, 100.0 * worst.b);
+            // 0.1% (the goal is 0.2%; measured at most 0.065%): the albedo and irradiance targets
+            // are half float (up to 0.05% each way), the blur's weights sum to 1 to float rounding
+            // and the accumulation is float; the energy table's bilinear lookup is within 5e-4 of
+            // rho_dt, times rho_s = 0.18. An 8-bit sRGB albedo (-0.25% / -0.65% / -0.76% at 0.8 /
+            // 0.6 / 0.5) or a half-float accumulation (-0.14% / -0.19% / -0.16%) fails it.
+            for (int c = 0; c < 3; ++c) EXPECT_LT(std::abs(worst[c]), 0.001) << blur << " " << taps << " taps, channel " << c;
         }
     }
 }
 
-TEST_F(Sss, AnalyticEdgeMatchesSumOfGaussianCdfs) {
-    test::TempDir dir;
-    const std::string scene = test::writeEdgeScene(dir);
-    for (int taps : kTapCounts) {
-        load(scene, {"sss.taps=" + std::to_string(taps), "sss.min_width_px=0"});
-        const test::EdgeError error = test::edgeError(render(Aov::Diffuse, kEdgeWidth, kEdgeHeight), kEdgeWidth, kEdgeHeight);
-        const double maxError = error.max;
-        const double rms = error.rms;
-        std::printf("analytic edge, %2d taps: max error %.4f, RMS %.4f (of a unit step)\n", taps, maxError, rms);
-        // Bounds from the measured errors with margin: taps are nearest-texel
-        // (SssBlur.glsl), so a few taps spread over a narrow Gaussian miss
-        // the step by up to a pixel.
-        EXPECT_LT(maxError, taps < 9 ? 0.2 : 0.08) << taps << " taps";
-        EXPECT_LT(rms, 0.01) << taps << " taps";
+namespace {
+
+// The flat-skin edge (AnalyticEdge.h's scene: a black|white albedo step at
+// x = 0 on a plane seen straight down, no shadow, mix = 1 so the blur's input
+// is the irradiance step itself) at 320x180: 0.1 mm per pixel, so even the
+// narrowest Gaussian (0.08 mm = 0.8 px) blurs and all six run, and the widest
+// (2.72 mm, 3 sigma = 82 px) fits in the 160 px either side of the step.
+constexpr int kFlatEdgeWidth = 320;
+constexpr int kFlatEdgeHeight = 180;
+
+double edgeMmPerPixel() {
+    return 2.0 * test::kEdgeHeightM * 1000.0 * std::tan(test::kEdgeFovDeg * M_PI / 360.0) / kFlatEdgeHeight;
+}
+
+struct EdgeComparison {
+    double maxError = 0.0;      // largest |rendered - exact| of any channel, a fraction of that channel's step
+    double rms = 0.0;           // over the pixels within 3 widest sigmas of the step
+    glm::dvec3 widthScale{0.0};  // per channel: the profile width scale whose exact diffusion fits best
+    double irradianceOffStep = 0.0;  // largest departure of the irradiance row from a step, 2 px from it
+};
+
+// The exact diffusion of the rendered irradiance row: each texel a box, the
+// profile's marginal across the row sum_i w_i N(0, v_i s^2) (the row is
+// uniform in y, so the 2-D integral is this 1-D one), evaluated at the pixel
+// centres. An independent computation: it shares nothing with the shader.
+double exactDiffusion(const Image& irradiance, int row, int x, int c, double mmPerPixel, double widthScale) {
+    // Sum over texels j of I_j x (the marginal's mass over texel j), written as the left border
+    // texel plus each jump I_j - I_(j-1) times the mass beyond the boundary between them, so only
+    // the few texels where the row changes cost anything. The border texels stand for everything
+    // beyond the frame (the shader clamps its taps there).
+    double sum = irradiance.at(0, row)[c];
+    for (int j = 1; j < kFlatEdgeWidth; ++j) {
+        const double jump = double(irradiance.at(j, row)[c]) - double(irradiance.at(j - 1, row)[c]);
+        if (jump == 0.0) continue;
+        const double boundaryMm = (j - 0.5 - x) * mmPerPixel;
+        double beyond = 0.0;
+        for (const ProfileGaussian& g : skinProfile().gaussians()) {
+            const double sigma = std::sqrt(double(g.varianceMm2)) * widthScale;
+            beyond += g.weight[c] * 0.5 * std::erfc(boundaryMm / (sigma * M_SQRT2));
+        }
+        sum += jump * beyond;
+    }
+    return sum;
+}
+
+EdgeComparison compareEdge(const Image& irradiance, const Image& diffuse) {
+    const double mmPerPixel = edgeMmPerPixel();
+    const int row = kFlatEdgeHeight / 2;
+    const double reachMm = 3.0 * skinProfile().largestStdDevMm();
+    EdgeComparison e;
+    double sumSquares = 0.0;
+    int samples = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double low = irradiance.at(0, row)[c];
+        const double high = irradiance.at(kFlatEdgeWidth - 1, row)[c];
+        const double step = high - low;
+        // Beyond the two texels either side of the step (which the albedo map's filtering mixes).
+        for (int x = 0; x < kFlatEdgeWidth; ++x) {
+            if (std::abs(x + 0.5 - kFlatEdgeWidth / 2.0) < 2.0) continue;
+            const double ideal = x < kFlatEdgeWidth / 2 ? low : high;
+            e.irradianceOffStep = std::max(e.irradianceOffStep, std::abs(irradiance.at(x, row)[c] - ideal) / step);
+        }
+        // Width-scale fit: the scale in [0.85, 1.15] (steps of 0.001) whose exact diffusion is
+        // nearest (least squares) to the rendered row, over the pixels the widest Gaussian reaches.
+        double bestScale = 0.0;
+        double bestCost = 1e300;
+        std::vector<int> pixels;
+        for (int x = 0; x < kFlatEdgeWidth; ++x) {
+            if (std::abs((x + 0.5 - kFlatEdgeWidth / 2.0) * mmPerPixel) < reachMm) pixels.push_back(x);
+        }
+        for (int k = -150; k <= 150; ++k) {
+            const double scale = 1.0 + 0.001 * k;
+            double cost = 0.0;
+            for (int x : pixels) {
+                const double d = diffuse.at(x, row)[c] - exactDiffusion(irradiance, row, x, c, mmPerPixel, scale);
+                cost += d * d;
+            }
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestScale = scale;
+            }
+        }
+        e.widthScale[c] = bestScale;
+        for (int x = 0; x < kFlatEdgeWidth; ++x) {
+            const double error =
+                std::abs(diffuse.at(x, row)[c] - exactDiffusion(irradiance, row, x, c, mmPerPixel, 1.0)) / step;
+            e.maxError = std::max(e.maxError, error);
+            if (std::abs((x + 0.5 - kFlatEdgeWidth / 2.0) * mmPerPixel) < reachMm) {
+                sumSquares += error * error;
+                ++samples;
+            }
+        }
+    }
+    e.rms = std::sqrt(sumSquares / samples);
+    return e;
+}
+
+class SssEdge : public test::RenderFixture {
+protected:
+    // Renders the edge and checks that `gaussians` Gaussians blurred (both passes each).
+    EdgeComparison renderEdge(const std::vector<std::string>& overrides, int gaussians = 6) {
+        std::vector<std::string> all = {"sss.taps=9"};
+        all.insert(all.end(), overrides.begin(), overrides.end());
+        load(mScenePath, all);
+        const Image irradiance = render(Aov::Irradiance, kFlatEdgeWidth, kFlatEdgeHeight);
+        const Image diffuse = render(Aov::Diffuse, kFlatEdgeWidth, kFlatEdgeHeight);
+        for (int g = 0; g < gaussians; ++g) {
+            for (const char* direction : {" h", " v"}) {
+                const std::string name = "sss skin g" + std::to_string(g) + direction;
+                const PassSummary* p = pass(name);
+                EXPECT_TRUE(p && p->executed) << name << " did not run: every Gaussian must blur here";
+            }
+        }
+        return compareEdge(irradiance, diffuse);
+    }
+    void SetUp() override {
+        test::RenderFixture::SetUp();
+        mScenePath = test::writeEdgeScene(mDir);
+    }
+    test::TempDir mDir;
+    std::string mScenePath;
+};
+
+// Bounds (the measured figures are in docs/screen-space.md):
+// - max error 1% of the step: the accuracy goal (measured 0.27% at 9 taps).
+//   The Gaussians' cell integrals are exact for the boxes of the unblurred
+//   irradiance; later steps sample a smooth chain every s pixels, which
+//   costs a fraction of a percent at 9 taps;
+// - fitted width scale within 1.5% of 1 in every channel: a width error of
+//   5% moves the best fit by 4-5% (the mutation tests below), and skipping
+//   the variance correction of the later steps by 1.4-2.4%, while the fit
+//   at the right width is within 0.3% (0.997-1.001 measured). The maximum
+//   error alone would not catch a 5% width error (0.66% and 0.88%).
+constexpr double kEdgeMaxError = 0.01;
+constexpr double kEdgeWidthTolerance = 0.015;
+
+bool edgeMatches(const EdgeComparison& e) {
+    bool widths = true;
+    for (int c = 0; c < 3; ++c) widths = widths && std::abs(e.widthScale[c] - 1.0) < kEdgeWidthTolerance;
+    return e.maxError < kEdgeMaxError && widths;
+}
+
+void printEdge(const char* what, const EdgeComparison& e) {
+    std::printf("edge %-22s max error %.4f, RMS %.4f of the step; fitted width scale %.3f %.3f %.3f; "
+                "irradiance off its step by %.4f\n",
+                what, e.maxError, e.rms, e.widthScale.r, e.widthScale.g, e.widthScale.b, e.irradianceOffStep);
+}
+
+}  // namespace
+
+TEST_F(SssEdge, FlatSkinMatchesTheExactDiffusionOfItsIrradiance) {
+    const EdgeComparison e = renderEdge({});
+    printEdge("9 taps (default)", e);
+    // The irradiance must be a step (the two texels beside it are the albedo map's filtering, which
+    // the exact diffusion takes as they are), lit uniformly: no shadow, no penumbra in the signal.
+    EXPECT_LT(e.irradianceOffStep, 1e-3);
+    EXPECT_LT(e.maxError, kEdgeMaxError);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(e.widthScale[c], 1.0, kEdgeWidthTolerance) << "channel " << c;
+}
+
+TEST_F(SssEdge, ComparisonFailsWhenEveryWidthIsFivePercentOff) {
+    for (const char* scale : {"0.95", "1.05"}) {
+        const EdgeComparison e = renderEdge({std::string("sss.width_scale=") + scale});
+        printEdge((std::string("width scale ") + scale).c_str(), e);
+        EXPECT_FALSE(edgeMatches(e)) << "width scale " << scale << " passed the edge comparison";
     }
 }
 
-TEST_F(Sss, SlabThicknessMatchesTheWedgeAndTransmittanceFollowsT) {
-    // Camera straight above the wedge; its back light shines straight up
-    // through it, so the thickness along the light is the wedge's thickness.
-    load("slab.json", {"transmittance.shrink_mm=0", "lights.0.shadow=false"});
-    const int width = 320;
-    const int height = 180;
-    const Image thickness = render(Aov::Thickness, width, height);
-    const Image transmitted = render(Aov::Transmittance, width, height);
-    const Image depth = render(Aov::Depth, width, height);
-    const Camera& camera = mScene->camera;
-    const double tanHalf = std::tan(glm::radians(double(camera.verticalFovDeg)) / 2.0);
-    const DiffusionProfile& skin = skinProfile();
-    const glm::vec3 radiance = mScene->lights[1].colour * mScene->lights[1].intensity;
-    const glm::vec3 albedoRoot = glm::sqrt(mScene->characters[0].material.albedo);
+TEST_F(SssEdge, ComparisonFailsWithTheWidestGaussianDropped) {
+    const EdgeComparison e = renderEdge({"sss.gaussians=5"}, 5);
+    printEdge("widest Gaussian dropped", e);
+    EXPECT_FALSE(edgeMatches(e));
+}
 
-    double worstThickness = 0.0;
-    double worstTransmittance = 0.0;
-    int checked = 0;
-    const int row = height / 2;
-    for (int x = 0; x < width; ++x) {
-        const double viewDepthM = depth.at(x, row).r;
-        if (viewDepthM > 0.5) continue;  // background
-        const double xM = camera.positionM.x + (x + 0.5 - width / 2.0) * 2.0 * viewDepthM * tanHalf / height;
-        if (xM < 0.005 || xM > 0.195) continue;  // away from the ends
-        const double trueMm = 1.0 + 19.0 * xM / 0.2;
-        const double measuredMm = thickness.at(x, row).r;
-        worstThickness = std::max(worstThickness, std::abs(measuredMm - trueMm) / trueMm);
-        const glm::vec3 expected = radiance * skin.transmittance(float(measuredMm)) * albedoRoot;
-        for (int c = 0; c < 3; ++c) {
-            if (expected[c] < 1e-3f) continue;
-            worstTransmittance =
-                std::max(worstTransmittance, std::abs(double(transmitted.at(x, row)[c]) - expected[c]) / expected[c]);
-        }
-        ++checked;
+TEST_F(SssEdge, TapCountTable) {
+    for (int taps : {5, 7, 13, 17}) {
+        const EdgeComparison e = renderEdge({"sss.taps=" + std::to_string(taps)});
+        printEdge((std::to_string(taps) + " taps").c_str(), e);
+        // From 7 taps on the 1% goal holds (measured 0.03-0.28%). 5 taps sample the smooth
+        // chain every ~1.5 sigma of the step and cannot: measured 2.2%, bound 5% (a breakdown,
+        // e.g. the old whole-pixel rounding of point-weighted taps, shows as more).
+        EXPECT_LT(e.maxError, taps == 5 ? 0.05 : kEdgeMaxError) << taps << " taps";
     }
-    std::printf("slab: %d pixels, worst thickness error %.2f%%, worst T(s) error %.2f%%\n", checked,
-                100.0 * worstThickness, 100.0 * worstTransmittance);
-    EXPECT_GT(checked, 100);
-    EXPECT_LT(worstThickness, 0.05);
-    EXPECT_LT(worstTransmittance, 0.02);
+}
+
+namespace {
+
+struct SlabRow {
+    double worstThickness = 0.0;             // relative
+    glm::dvec3 worstTransmittance{0.0};      // relative, per channel
+    glm::ivec3 checked{0};                   // pixels per channel where T_c(s) >= kMeasurableT
+    double thinnestMm = 1e9, thickestMm = 0.0;
+};
+
+// A channel is compared where it transmits at least 1%: there the AOV's
+// value is a hundred times the float noise of the passes.
+constexpr double kMeasurableT = 0.01;
+
+}  // namespace
+
+// The wedge (1-20 mm thick along x over 0.2 m) seen straight from above, its
+// back light shining straight up through it.
+// From the skin profile's variances, T_c(s) >= 1% for s up to ~3.9 mm in red
+// (w = 0.078 at 7.41 mm^2), ~0.75 mm in green (0.198 at 0.187 mm^2) and
+// ~0.41 mm in blue (0.344 at 0.0484 mm^2). So the slab is rendered twice:
+// as it is (red, 1-20 mm) and scaled by 0.05 (0.05-1 mm: green and blue),
+// seen from 15 mm so that the thin end covers enough pixels.
+class SssSlab : public test::RenderFixture {
+protected:
+    SlabRow measure(double scale, const std::vector<std::string>& overrides) {
+        std::vector<std::string> all = {"transmittance.shrink_mm=0", "lights.0.shadow=false",
+                                        "characters.0.transform.scale=" + std::to_string(scale)};
+        all.insert(all.end(), overrides.begin(), overrides.end());
+        load("slab.json", all);
+        const int width = 320;
+        const int height = 180;
+        const Image thickness = render(Aov::Thickness, width, height);
+        const Image transmitted = render(Aov::Transmittance, width, height);
+        const Image depth = render(Aov::Depth, width, height);
+        const Camera& camera = mScene->camera;
+        const double tanHalf = std::tan(glm::radians(double(camera.verticalFovDeg)) / 2.0);
+        const DiffusionProfile& skin = skinProfile();
+        const glm::vec3 radiance = mScene->lights[1].colour * mScene->lights[1].intensity;
+        const glm::vec3 albedoRoot = glm::sqrt(mScene->characters[0].material.albedo);
+        const double lengthM = 0.2 * scale;
+        // E = saturate(dot(-N, L)) with the light straight up: the top face's normal y, whose
+        // slope is half the thickness's, 0.5 x 19 mm / 200 mm at any scale.
+        const double backLight = 1.0 / std::sqrt(1.0 + 0.0475 * 0.0475);
+        SlabRow r;
+        const int row = height / 2;
+        for (int x = 0; x < width; ++x) {
+            const double viewDepthM = depth.at(x, row).r;
+            if (viewDepthM <= 0.0 || viewDepthM > camera.positionM.y) continue;  // background
+            const double xM = camera.positionM.x + (x + 0.5 - width / 2.0) * 2.0 * viewDepthM * tanHalf / height;
+            if (xM < 0.025 * lengthM || xM > 0.975 * lengthM) continue;  // away from the ends
+            const double trueMm = scale * (1.0 + 19.0 * xM / lengthM);
+            const double measuredMm = thickness.at(x, row).r;
+            r.worstThickness = std::max(r.worstThickness, std::abs(measuredMm - trueMm) / trueMm);
+            r.thinnestMm = std::min(r.thinnestMm, measuredMm);
+            r.thickestMm = std::max(r.thickestMm, measuredMm);
+            const glm::vec3 t = skin.transmittance(float(measuredMm));
+            for (int c = 0; c < 3; ++c) {
+                if (t[c] < kMeasurableT) continue;
+                const double expected = double(radiance[c]) * t[c] * albedoRoot[c] * backLight;
+                r.worstTransmittance[c] =
+                    std::max(r.worstTransmittance[c], std::abs(double(transmitted.at(x, row)[c]) - expected) / expected);
+                ++r.checked[c];
+            }
+        }
+        std::printf("slab x%.2f (%.2f-%.2f mm): thickness error %.2f%%; T(s) error R %.3f%% (%d px) G %.3f%% (%d px) "
+                    "B %.3f%% (%d px)\n",
+                    scale, r.thinnestMm, r.thickestMm, 100.0 * r.worstThickness, 100.0 * r.worstTransmittance.r,
+                    r.checked.r, 100.0 * r.worstTransmittance.g, r.checked.g, 100.0 * r.worstTransmittance.b,
+                    r.checked.b);
+        return r;
+    }
+};
+
+TEST_F(SssSlab, ThicknessMatchesTheWedgeAndEveryChannelFollowsT) {
+    const SlabRow thick = measure(1.0, {});
+    const SlabRow thin = measure(0.05, {"camera.position_m=[0.005,0.015,0]", "camera.target_m=[0.005,0,0]"});
+    // Thickness from the shadow map: 5% (the map's depth is float metres, its texels 0.1 mm
+    // apart along the wedge; measured 0.2% on the thick wedge).
+    EXPECT_LT(thick.worstThickness, 0.05);
+    // T(s) at the measured thickness: 1%. The pass evaluates the same sum of exponentials in
+    // float, and its output is half float (0.05%); a weight or variance off by 5% moves T
+    // by more than that wherever it is measurable.
+    const glm::ivec3 checked = thick.checked + thin.checked;
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(checked[c], 20) << "channel " << c << " is measurable at too few pixels";
+        EXPECT_LT(std::max(thick.worstTransmittance[c], thin.worstTransmittance[c]), 0.01) << "channel " << c;
+    }
 }
 
 TEST_F(Sss, PixelsOutsideTheSssMaskAreBitIdenticalAfterTheBlur) {
@@ -146,13 +391,13 @@ TEST_F(Sss, NoSssSceneRunsNoSssPass) {
     }
 }
 
-TEST_F(Sss, AlbedoSurvivesTheSrgbGBufferExactly) {
-    // The G-buffer stores albedo as sRGB: the write must encode (GL_FRAMEBUFFER_SRGB)
-    // so the read's decode gives back the linear value, within 8-bit steps.
+TEST_F(Sss, AlbedoSurvivesTheGBufferWithinATenthOfAPercent) {
+    // The G-buffer's albedo is half float: 2^-11 relative rounding (0.05%), under the 0.1% goal.
+    // 8-bit sRGB (what it was) reads 0.7980 / 0.5961 / 0.4962 for 0.8 / 0.6 / 0.5 and fails.
     load("furnace.json");
     const Image albedo = render(Aov::Albedo, 64, 36);
     const glm::vec3 expected = mScene->characters[0].material.albedo;
     for (const glm::vec4& t : albedo.texels) {
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(t[c], expected[c], 0.004f);
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(t[c] / expected[c], 1.0f, 0.001f) << "channel " << c;
     }
 }

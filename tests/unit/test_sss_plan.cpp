@@ -77,6 +77,38 @@ TEST(SssPlan, SkippedGaussiansKeepTheirEnergyInTheIdentityTerm) {
     }
 }
 
+TEST(SssPlan, ExecutedStepsBlurTheIrradianceByExactlyTheWidestVariance) {
+    // The chain's variance after the last step is the sum of the executed steps' variances; it
+    // must be the widest Gaussian's v (times width_scale^2) whether or not narrow ones were
+    // skipped: a skipped Gaussian leaves the chain unblurred, so the first step that runs blurs
+    // by its whole v_i (v_i - v_(i-1) there would leave that Gaussian and all wider ones
+    // narrower by v_(i-1): 0.0064 mm^2, 13% of Gaussian 1's variance).
+    const auto& skin = skinProfile().gaussians();
+    for (float distance : {0.02f, 0.45f, 3.0f}) {
+        for (float widthScale : {1.0f, 1.05f}) {
+            Scene scene = headScene();
+            scene.settings.sss.widthScale = widthScale;
+            auto plan = planSss(scene, {kHeadBounds}, viewFrom(distance));
+            ASSERT_TRUE(plan.ok());
+            const SssSlotPlan& slot = plan->slots[0];
+            double total = 0.0;
+            int readers = 0;
+            bool seenExecuted = false;
+            for (const SssGaussianStep& step : slot.steps) {
+                if (step.skipped) continue;
+                total += step.stepVarianceMm2;
+                readers += step.readsIrradiance ? 1 : 0;
+                EXPECT_EQ(step.readsIrradiance, !seenExecuted) << "only the first step that runs reads the irradiance";
+                seenExecuted = true;
+            }
+            if (!seenExecuted) continue;
+            EXPECT_EQ(readers, 1);
+            EXPECT_NEAR(total / (double(skin.back().varianceMm2) * widthScale * widthScale), 1.0, 1e-5)
+                << "at " << distance << " m, width scale " << widthScale;
+        }
+    }
+}
+
 TEST(SssPlan, FewerGaussiansFoldTheWidestIntoTheLastKept) {
     Scene scene = headScene();
     scene.settings.sss.gaussians = 3;
