@@ -31,16 +31,6 @@ const float kMaxTexelsPerSigma = 64.0;
 // The widest exact blur: 3 sigma within this many texels (33 fetches).
 const int kMaxExactRadiusTexels = 16;
 
-// The standard normal CDF, from erf as Abramowitz & Stegun 1964 (7.1.26)
-// approximate it (absolute error under 1.5e-7).
-float normalCdf(float z) {
-    float x = abs(z) * 0.70710678;
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-    float erfX = 1.0 - poly * exp(-x * x);
-    return 0.5 + 0.5 * sign(z) * erfX;
-}
-
 vec4 exactBlur(ivec2 texel, ivec2 step, float sigmaTexels, int radius, vec4 centre) {
     ivec2 size = textureSize(uInput, 0);
     vec4 sum = vec4(0.0);

@@ -79,4 +79,17 @@ float keyDistanceMm(uint a, uint b) {
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
+// The upper tail 1 - Phi(z) of the standard normal for z >= 0, from erf as
+// Abramowitz & Stegun 1964 (7.1.26) approximate it (|error| < 1.5e-7 in erf);
+// computed directly, so the tail keeps its precision where Phi(z) rounds to 1.
+float normalUpperTail(float z) {
+    float x = z * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    return 0.5 * poly * exp(-x * x);
+}
+
+// The standard normal CDF Phi(z), any z.
+float normalCdf(float z) { return z >= 0.0 ? 1.0 - normalUpperTail(z) : normalUpperTail(-z); }
+
 #endif

@@ -157,26 +157,17 @@ uvec4 sssPack(vec4 colour, vec4 extra) {
 }
 #endif
 
-// The upper tail 1 - Phi(z) of the standard normal for z >= 0
-// (Abramowitz & Stegun 1964 7.1.26, |error| < 1.5e-7 in erf).
-float sssNormalUpperTail(float z) {
-    float x = z * 0.70710678;
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-    return 0.5 * poly * exp(-x * x);
-}
-
 const int kSssMaxHalfTaps = DERMIS_MAX_BLUR_TAPS / 2;
 
 // Cell-integrated weights of taps 0..halfTaps at spacing s px for a Gaussian of
 // std dev sigma px (SAMPLING AND WEIGHTS); returns the kernel's variance in px^2.
 float sssCellWeights(float sigmaPx, float spacingPx, int halfTaps, out float weights[kSssMaxHalfTaps + 1]) {
     float inverseSigma = 1.0 / max(sigmaPx, 1e-6);
-    float lowerTail = sssNormalUpperTail(0.5 * spacingPx * inverseSigma);
+    float lowerTail = normalUpperTail(0.5 * spacingPx * inverseSigma);
     weights[0] = 1.0 - 2.0 * lowerTail;
     float variance = 0.0;
     for (int j = 1; j <= halfTaps; ++j) {
-        float upperTail = j == halfTaps ? 0.0 : sssNormalUpperTail((float(j) + 0.5) * spacingPx * inverseSigma);
+        float upperTail = j == halfTaps ? 0.0 : normalUpperTail((float(j) + 0.5) * spacingPx * inverseSigma);
         weights[j] = lowerTail - upperTail;
         variance += 2.0 * weights[j] * float(j * j) * spacingPx * spacingPx;
         lowerTail = upperTail;
