@@ -144,20 +144,29 @@ float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float n
     float searchM = orthographic ? size * (receiverDepthM - nearM)
                                  : size * (receiverDepthM - nearM) / nearM;
     float searchTexels = clamp(searchM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS));
-    float blockerSumM = 0.0;
-    float blockers = 0.0;
-    for (int i = 0; i < DERMIS_PCSS_BLOCKER_SAMPLES; ++i) {
-        vec3 q = tapPosition(f, searchTexels * vogelDisc(i, DERMIS_PCSS_BLOCKER_SAMPLES));
-        float storedM = storedDepthM(shadowMap, light, q);
-        if (storedM < planeTestDepthM(light, f, q)) {
-            blockerSumM += storedM;
-            blockers += 1.0;
+    // Two searches: the near plane's region is far wider than the cone that
+    // reaches the blockers, and a mean over it weights blockers the receiver
+    // does not see the light past. The second search covers the penumbra the
+    // first mean depth implies (still wider than the true one, since that mean
+    // is nearer the light), and its mean sets the penumbra.
+    float halfWidthM = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+        float blockerSumM = 0.0;
+        float blockers = 0.0;
+        for (int i = 0; i < DERMIS_PCSS_BLOCKER_SAMPLES; ++i) {
+            vec3 q = tapPosition(f, searchTexels * vogelDisc(i, DERMIS_PCSS_BLOCKER_SAMPLES));
+            float storedM = storedDepthM(shadowMap, light, q);
+            if (storedM < planeTestDepthM(light, f, q)) {
+                blockerSumM += storedM;
+                blockers += 1.0;
+            }
         }
+        if (blockers == 0.0) return 1.0;
+        float blockerDepthM = max(blockerSumM / blockers, 1e-4);
+        halfWidthM = orthographic ? size * max(receiverDepthM - blockerDepthM, 0.0)
+                                  : size * max(receiverDepthM - blockerDepthM, 0.0) / blockerDepthM;
+        searchTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, searchTexels);
     }
-    if (blockers == 0.0) return 1.0;
-    float blockerDepthM = max(blockerSumM / blockers, 1e-4);
-    float halfWidthM = orthographic ? size * max(receiverDepthM - blockerDepthM, 0.0)
-                                    : size * max(receiverDepthM - blockerDepthM, 0.0) / blockerDepthM;
     // The smallest kernel is one texel: below that the map cannot resolve a penumbra.
     float radiusTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS));
     float lit = 0.0;
