@@ -3,7 +3,7 @@
 docs/shadow_edge.png of docs/shadows.md.
 
     mkdir -p /tmp/pen
-    S="--size 160x36 --set camera.vertical_fov_deg=3.074 --set transmittance.enabled=false"
+    S="--size 160x12 --set camera.vertical_fov_deg=1.0249 --set transmittance.enabled=false"
     for d in 0.53 5; do for sss in true false; do
         build/dermis render content/scenes/penumbra.json $S --aov diffuse --frames 1 \\
             --set lights.0.angular_diameter_deg=$d --set sss.enabled=$sss --out /tmp/pen/engine_${d}_$sss.exr
@@ -13,12 +13,13 @@ docs/shadow_edge.png of docs/shadows.md.
     /usr/bin/python3 docs/shadow_edge_figure.py csv /tmp/pen      # each EXR's middle row -> a CSV beside it
     /usr/bin/python3 docs/shadow_edge_figure.py plot /tmp/pen docs/shadow_edge.png
 
-160x36 pixels at a 3.074-degree vertical field of view are the middle
-(36 rows x 160 columns) of edge.json's 640x360 frame: 0.447 mm per pixel on
-the plane 0.3 m below, 71.5 mm across (the reference with SSS costs minutes
-per light size on two cores, so only what the plot shows is rendered).
+160x12 pixels at a 1.0249-degree vertical field of view are the middle
+(12 rows x 160 columns) of edge.json's 640x360 frame: 0.447 mm per pixel on
+the plane 0.3 m below, 71.5 mm across (the reference with SSS costs many
+minutes per light size on two shared cores, so only what the plot shows is
+rendered; the edge runs along the rows, so the rows differ only in noise).
 The CSVs hold x (mm on the plane, 0 at the geometric shadow edge) and the
-green channel of the diffuse AOV averaged over the 36 rows. Prints, per light
+green channel of the diffuse AOV averaged over the rows. Prints, per light
 size and SSS setting, the largest |engine - reference| as a fraction of the
 reference's lit level (the mean of its right tenth).
 """
@@ -33,7 +34,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from PIL import Image  # noqa: E402
 
-MM_PER_PIXEL = 2 * 300.0 * np.tan(np.radians(3.074 / 2)) / 36
+MM_PER_PIXEL = 2 * 300.0 * np.tan(np.radians(1.0249 / 2)) / 12
 SIZES = ["0.53", "5"]
 
 
