@@ -72,7 +72,7 @@ def plot(folder, out):
             label = "SSS on" if sss == "true" else "SSS off"
             ax.plot(x, reference / lit, "k" + style, lw=1.5, label=f"reference, {label}")
             ax.plot(x, engine / lit, "C3" + style, lw=1.2, label=f"engine (pcss), {label}")
-        ax.set_xlim(-15, 15)
+        ax.set_xlim(*((-4, 4) if size == "0.53" else (-15, 15)))
         ax.set_title(f"directional light, angular diameter {size} deg")
         ax.set_xlabel("x on the skin plane (mm; geometric shadow edge at 0)")
         ax.set_ylabel("diffuse AOV / lit level")
