@@ -24,8 +24,8 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
     for (int index : plan.lights.shadowedLights) {
         const Light& light = scene.lights[static_cast<size_t>(index)];
         // Transmittance reads a 2-D map's thickness: a point light's cube atlas gives none.
-        bool behind = false;
         if (light.type == LightType::Point) continue;
+        bool behind = false;
         for (size_t c = 0; c < plan.characters.size() && !behind; ++c) {
             const int slot = plan.sss.slotOfCharacter[c];
             behind = slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible &&
