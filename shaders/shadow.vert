@@ -1,15 +1,23 @@
-// Shadow pass: positions into the light's clip space; linear light depth out.
+// Shadow pass: positions into the light's clip space (a cube face's for point
+// lights, include/Shadows.glsl); the world position out for the depth.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "Shadows.glsl"
 
 layout(location = 0) in vec3 aPosition;
 
+out vec3 vWorldPositionM;
 out float vLightDepthM;
 
 void main() {
     GpuLight light = uLights.lights[int(uObject.mapping.y)];
     vec3 worldPositionM = (uObject.worldFromObject * vec4(aPosition, 1.0)).xyz;
+    vWorldPositionM = worldPositionM;
     vLightDepthM = lightLinearDepth(light, worldPositionM);
-    gl_Position = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
+    if (isCubeShadow(light)) {
+        gl_Position = cubeFaceClip(int(uObject.mapping.z + 0.5), worldPositionM - light.positionType.xyz,
+                                   light.shadowDepth.x, light.shadowDepth.y);
+    } else {
+        gl_Position = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
+    }
 }

@@ -23,6 +23,13 @@ constexpr int kMaxSsaoSamples = DERMIS_MAX_SSAO_SAMPLES;
 constexpr int kMinShadowMapSize = 64;
 constexpr int kMaxShadowMapSize = 8192;
 
+// Light sizes (a light's angular_diameter_deg and radius_m): at most a
+// 30-degree disc of directions and a 1 m sphere, far past the sun (0.53
+// degrees) and studio softboxes, where PCSS's one-blocker-depth assumption
+// (Fernando 2005) still holds roughly.
+constexpr double kMaxLightAngularDiameterDeg = 30.0;
+constexpr double kMaxLightRadiusM = 1.0;
+
 // Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
 constexpr int kMinTsSize = 64;
 constexpr int kMaxTsSize = 4096;

@@ -13,11 +13,6 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
         return makeError(scene.path, std::to_string(scene.characters.size()) + " characters; the G-buffer's object ids allow " +
                                          std::to_string(DERMIS_MAX_CHARACTERS));
     }
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        if (scene.lights[i].type == LightType::Point && scene.lights[i].castsShadow) {
-            log::warn(scene.path + ": /lights/" + std::to_string(i) + ": point lights cast no shadow yet (no cube maps)");
-        }
-    }
     if (scene.lights.size() > DERMIS_MAX_LIGHTS) {
         log::warn(scene.path + ": only the first " + std::to_string(DERMIS_MAX_LIGHTS) + " of " +
                   std::to_string(scene.lights.size()) + " lights are used");

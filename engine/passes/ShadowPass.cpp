@@ -30,6 +30,10 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 builder.skipIf(shadow.current, "light and casters unchanged since the cached map");
             },
             [frame, desc, lightIndex = shadow.light](const graph::PassResources& resources, const ShadowData& d) {
+                // A point light's map is a 3x2 atlas of cube faces (render/LightSetup.h): each caster is drawn once per face.
+                const bool cube = frame.plan.lights.block.lights[lightIndex].area.y > 0.5f;
+                const int faces = cube ? 6 : 1;
+                const int faceSize = cube ? static_cast<int>(desc.height) / 2 : 0;
                 gl::Attachments attachments;
                 attachments.colour[0] = resources.texture(d.depthM);
                 attachments.depth = resources.texture(d.zBuffer);
@@ -44,13 +48,17 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 glDisable(GL_CULL_FACE);  // thin ears need both faces in the map
                 glUseProgram(frame.gl->programs->shadow.get());
                 const auto& characters = frame.gl->gpuScene->characters();
-                for (size_t index = 0; index < characters.size(); ++index) {
-                    const GpuCharacter& character = characters[index];
-                    gpu::ObjectBlock block = frame.objectBlock(index);
-                    block.mapping.y = float(lightIndex);
-                    frame.gl->uploadObject(block);
-                    glBindVertexArray(character.mesh.vertexArray.get());
-                    glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+                for (int face = 0; face < faces; ++face) {
+                    if (cube) glViewport(face % 3 * faceSize, face / 3 * faceSize, faceSize, faceSize);
+                    for (size_t index = 0; index < characters.size(); ++index) {
+                        const GpuCharacter& character = characters[index];
+                        gpu::ObjectBlock block = frame.objectBlock(index);
+                        block.mapping.y = float(lightIndex);
+                        block.mapping.z = float(face);
+                        frame.gl->uploadObject(block);
+                        glBindVertexArray(character.mesh.vertexArray.get());
+                        glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+                    }
                 }
                 glDisable(GL_DEPTH_TEST);
             });

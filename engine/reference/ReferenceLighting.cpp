@@ -3,6 +3,8 @@
 #include "gpu/UniformBlocks.h"
 #include "brdf/EnergyTable.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,13 +22,63 @@ float smoothstep(float edge0, float edge1, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
+// Van der Corput's radical inverse in base 2: the second coordinate of the
+// Hammersley set.
+float radicalInverse2(uint32_t i) {
+    i = (i << 16u) | (i >> 16u);
+    i = ((i & 0x55555555u) << 1u) | ((i & 0xAAAAAAAAu) >> 1u);
+    i = ((i & 0x33333333u) << 2u) | ((i & 0xCCCCCCCCu) >> 2u);
+    i = ((i & 0x0F0F0F0Fu) << 4u) | ((i & 0xF0F0F0F0u) >> 4u);
+    i = ((i & 0x00FF00FFu) << 8u) | ((i & 0xFF00FF00u) >> 8u);
+    return float(double(i) / 4294967296.0);
+}
+
+// A stratified (Hammersley) set on the unit square, taken onto the unit disc by
+// the concentric map (Shirley & Chiu 1997), which keeps the strata's areas.
+std::vector<glm::vec2> discSamples(int count) {
+    std::vector<glm::vec2> samples;
+    for (int i = 0; i < count; ++i) {
+        const float a = 2.0f * (float(i) + 0.5f) / float(count) - 1.0f;
+        const float b = 2.0f * (radicalInverse2(uint32_t(i)) + 0.5f / float(count)) - 1.0f;
+        const float quarterPi = 0.25f * glm::pi<float>();
+        float r = 0.0f;
+        float phi = 0.0f;
+        if (std::fabs(a) > std::fabs(b)) {
+            r = a;
+            phi = quarterPi * (b / a);
+        } else if (b != 0.0f) {
+            r = b;
+            phi = 2.0f * quarterPi - quarterPi * (a / b);
+        }
+        samples.emplace_back(r * std::cos(phi), r * std::sin(phi));
+    }
+    return samples;
+}
+
+// A unit direction within the cone of half-angle asin(sinRadius) around `axis`,
+// for the disc point `p`: uniform in solid angle when `p` is uniform over the
+// disc, as cos(theta) = 1 - |p|^2 (1 - cos(radius)).
+glm::vec3 coneDirection(const glm::vec3& axis, float sinRadius, const glm::vec2& p) {
+    const glm::vec3 t = glm::normalize(glm::cross(axis, std::fabs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    const glm::vec3 b = glm::cross(axis, t);
+    const double sinR = sinRadius;
+    const double oneMinusCosR = sinR * sinR / (1.0 + std::sqrt(std::max(0.0, 1.0 - sinR * sinR)));
+    const double r2 = double(glm::dot(p, p));
+    if (r2 <= 0.0) return axis;
+    const double oneMinusCos = r2 * oneMinusCosR;
+    const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+    const glm::vec2 unit = p / float(std::sqrt(r2));
+    return glm::normalize(float(1.0 - oneMinusCos) * axis + float(sinTheta) * (unit.x * t + unit.y * b));
+}
+
 }  // namespace
 
 ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders)
     : mOccluders(&occluders),
       mAmbient(scene.settings.ambient),
       mEnergyConservation(scene.settings.energyConservation),
-      mEnergyTable(makeEnergyTable(kEnergyTableSize)) {
+      mEnergyTable(makeEnergyTable(kEnergyTableSize)),
+      mDiscSamples(discSamples(kAreaLightSamples)) {
     const size_t count = std::min<size_t>(scene.lights.size(), DERMIS_MAX_LIGHTS);
     int shadowedCount = 0;
     for (size_t i = 0; i < count; ++i) {
@@ -40,8 +92,9 @@ ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders)
         prepared.radiance = light.colour * light.intensity;
         prepared.cosInner = std::cos(glm::radians(light.spotInnerDeg));
         prepared.cosOuter = std::cos(glm::radians(light.spotOuterDeg));
-        prepared.shadowed = light.castsShadow && prepared.type != DERMIS_LIGHT_POINT &&
-                            shadowedCount < DERMIS_MAX_SHADOWED_LIGHTS;
+        prepared.shadowed = light.castsShadow && shadowedCount < DERMIS_MAX_SHADOWED_LIGHTS;
+        prepared.sinAngularRadius = std::sin(glm::radians(0.5f * light.angularDiameterDeg));
+        prepared.radiusM = light.radiusM;
         if (prepared.shadowed) ++shadowedCount;
         mLights.push_back(prepared);
     }
@@ -85,19 +138,47 @@ glm::vec3 ReferenceLighting::irradiance(const SurfacePoint& point, LightVisibili
         const float nDotL = glm::dot(n, l);
         if (!(nDotL > 0.0f)) continue;
         if (light.shadowed && i < 64) {
-            const float side = glm::dot(point.geometricNormal, l) >= 0.0f ? 1.0f : -1.0f;
-            const Ray ray{point.positionM + point.geometricNormal * (side * kShadowOffsetM), l};
-            const bool blocked = mOccluders->anyHit(ray, 0.0f, rayLength);
-            if (visibility) {
-                visibility->tested |= uint64_t(1) << i;
-                if (!blocked) visibility->visible |= uint64_t(1) << i;
-            }
-            if (blocked) continue;
+            const float visible = lightVisibility(i, point, l, rayLength, visibility);
+            if (!(visible > 0.0f)) continue;
+            radiance *= visible;
         }
         const float share = mEnergyConservation ? energyLeftForDiffuse(nDotL, point.roughness, point.rhoS) : 1.0f;
         e += radiance * (nDotL * share);
     }
     return e;
+}
+
+float ReferenceLighting::lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
+                                         LightVisibility* visibility) const {
+    const PreparedLight& light = mLights[index];
+    const float side = glm::dot(point.geometricNormal, l) >= 0.0f ? 1.0f : -1.0f;
+    const glm::vec3 origin = point.positionM + point.geometricNormal * (side * kShadowOffsetM);
+    // The light's angular radius seen from the point; a sphere around the point is a delta light.
+    float sinRadius = light.sinAngularRadius;
+    if (light.type != DERMIS_LIGHT_DIRECTIONAL) sinRadius = light.radiusM < distanceM ? light.radiusM / distanceM : 0.0f;
+    const bool delta = !(sinRadius > 0.0f);
+    const size_t rays = delta ? 1 : mDiscSamples.size();
+    size_t unblocked = 0;
+    for (size_t s = 0; s < rays; ++s) {
+        const glm::vec3 direction = delta ? l : coneDirection(l, sinRadius, mDiscSamples[s]);
+        float lengthM = distanceM;  // infinite for a directional light
+        if (!delta && light.type != DERMIS_LIGHT_DIRECTIONAL) {
+            // To the near side of the sphere along this direction.
+            const float along = distanceM * glm::dot(direction, l);
+            const float across2 = distanceM * distanceM - along * along;
+            lengthM = along - std::sqrt(std::max(light.radiusM * light.radiusM - across2, 0.0f));
+        } else if (light.type != DERMIS_LIGHT_DIRECTIONAL) {
+            lengthM = distanceM - light.radiusM;
+        }
+        if (!mOccluders->anyHit(Ray{origin, direction}, 0.0f, lengthM)) ++unblocked;
+    }
+    if (visibility) {
+        const uint64_t bit = uint64_t(1) << index;
+        visibility->tested |= bit;
+        if (unblocked == rays) visibility->visible |= bit;
+        if (unblocked == 0) visibility->blocked |= bit;
+    }
+    return float(unblocked) / float(rays);
 }
 
 float ReferenceLighting::outgoingFactor(const SurfacePoint& point, const glm::vec3& towardsViewer) const {

@@ -9,8 +9,15 @@
 // - the ambient is uniform and unoccluded: the renderer darkens it by SSAO, the
 //   reference takes AO = 1;
 // - the lights the renderer shadows are exactly the ones that cast shadow rays
-//   here (engine/render/LightSetup.cpp: shadow on, not a point light, the first
-//   DERMIS_MAX_SHADOWED_LIGHTS of them); only the first DERMIS_MAX_LIGHTS lights count.
+//   here (engine/render/LightSetup.cpp: shadow on, the first
+//   DERMIS_MAX_SHADOWED_LIGHTS of them, point lights included: a cube map takes
+//   one slot); only the first DERMIS_MAX_LIGHTS lights count;
+// - a light with a size (Light::angularDiameterDeg, Light::radiusM) is an area
+//   light for the visibility only: the visibility is the fraction of
+//   kAreaLightSamples shadow rays spread uniformly over its disc of directions
+//   (a cone for a directional light, the visible disc of the sphere for spot and
+//   point lights) that nothing blocks; radiance, N.L and the spot fade stay those
+//   of the light's centre, as in the renderer. A delta light casts one ray.
 // Transmittance (back-lit light through thin parts) is not part of E.
 
 #include "reference/Bvh.h"
@@ -24,15 +31,21 @@
 
 namespace dermis::reference {
 
-// Which lights a sample tested with a shadow ray, and which of those it saw.
-// Two samples that tested the same light and disagree lie on either side of a
-// shadow edge: the integrator refines there.
+// Shadow rays per sized light: 1/64 steps of visibility across a penumbra.
+constexpr int kAreaLightSamples = 64;
+
+// Which lights a sample tested with shadow rays, which of those it saw whole
+// (every ray unblocked) and which not at all (every ray blocked). Two samples
+// that tested the same light and differ in either lie on either side of a
+// shadow edge or inside a penumbra whose visibility changes: the integrator
+// refines there.
 struct LightVisibility {
     uint64_t tested = 0;
     uint64_t visible = 0;
+    uint64_t blocked = 0;
 
     bool disagreesWith(const LightVisibility& other) const {
-        return ((visible ^ other.visible) & tested & other.tested) != 0;
+        return (((visible ^ other.visible) | (blocked ^ other.blocked)) & tested & other.tested) != 0;
     }
 };
 
@@ -43,6 +56,10 @@ public:
 
     // E at the point (energy conservation on the way in included).
     glm::vec3 irradiance(const SurfacePoint& point, LightVisibility* visibility = nullptr) const;
+    // The fraction of light `index` that reaches the point (1 for an unshadowed
+    // light), with the light's centre towards `l`; sets its bits in `visibility`.
+    float lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
+                          LightVisibility* visibility) const;
     // 1 - rho_s rho_dt(N.V, m) when energy conservation is on, else 1.
     float outgoingFactor(const SurfacePoint& point, const glm::vec3& towardsViewer) const;
     // 1 - rho_s rho_dt(cos, m), bilinear in the renderer's table like the shader.
@@ -57,10 +74,13 @@ private:
         float cosInner = 1.0f;
         float cosOuter = 1.0f;
         bool shadowed = false;
+        float sinAngularRadius = 0.0f;  // directional: sin of half the angular diameter; 0 = delta
+        float radiusM = 0.0f;           // spot and point: the sphere's radius; 0 = delta
     };
 
     const Bvh* mOccluders;
     std::vector<PreparedLight> mLights;
+    std::vector<glm::vec2> mDiscSamples;  // kAreaLightSamples points, uniform over the unit disc
     glm::vec3 mAmbient{0.0f};
     bool mEnergyConservation = true;
     std::vector<float> mEnergyTable;  // row-major, row = m (engine/brdf/EnergyTable.h)

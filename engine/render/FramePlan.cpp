@@ -23,6 +23,8 @@ Bounds unionBounds(const std::vector<CharacterPlacement>& characters) {
 void markBackLights(const Scene& scene, FramePlan& plan) {
     for (int index : plan.lights.shadowedLights) {
         const Light& light = scene.lights[static_cast<size_t>(index)];
+        // Transmittance reads a 2-D map's thickness: a point light's cube atlas gives none.
+        if (light.type == LightType::Point) continue;
         bool behind = false;
         for (size_t c = 0; c < plan.characters.size() && !behind; ++c) {
             const int slot = plan.sss.slotOfCharacter[c];
@@ -35,8 +37,9 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
 }
 
 std::string shadowPassName(const Scene& scene, int lightIndex) {
-    const bool directional = scene.lights[static_cast<size_t>(lightIndex)].type == LightType::Directional;
-    return "shadow:light" + std::to_string(lightIndex) + (directional ? "(dir)" : "(spot)");
+    const LightType type = scene.lights[static_cast<size_t>(lightIndex)].type;
+    return "shadow:light" + std::to_string(lightIndex) +
+           (type == LightType::Directional ? "(dir)" : type == LightType::Spot ? "(spot)" : "(point)");
 }
 
 void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) {
@@ -48,6 +51,10 @@ void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) 
         s.light = plan.lights.shadowedLights[slot];
         s.passName = shadowPassName(scene, s.light);
         s.desc = {mapSize, mapSize, graph::TextureFormat::R32F};
+        if (scene.lights[static_cast<size_t>(s.light)].type == LightType::Point) {
+            const uint32_t face = cubeShadowFaceSize(scene.settings.shadow.mapSize);
+            s.desc = {3 * face, 2 * face, graph::TextureFormat::R32F};  // the cube atlas (render/LightSetup.h)
+        }
         s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], casters);
         s.current = cache.isCurrent(static_cast<int>(slot), s.desc, s.key);
         plan.shadows.push_back(std::move(s));

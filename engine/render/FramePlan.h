@@ -59,7 +59,7 @@ struct CharacterPlacement {
 // One shadow-casting light's map this frame.
 struct ShadowSlotPlan {
     int light = 0;             // index into Scene::lights
-    std::string passName;      // "shadow:light<i>(dir)" or "(spot)"
+    std::string passName;      // "shadow:light<i>(dir)", "(spot)" or "(point)"
     graph::TextureDesc desc;   // the map: R32F linear light depth, metres
     std::vector<float> key;    // what it is rendered from (ShadowCache::makeKey)
     bool current = false;      // the cached map was rendered from the same: its pass is skipped

@@ -14,6 +14,8 @@ glm::vec3 anyPerpendicularUp(const glm::vec3& direction) {
 
 }  // namespace
 
+uint32_t cubeShadowFaceSize(int mapSize) { return static_cast<uint32_t>(std::max(mapSize / 2, 1)); }
+
 LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBounds, const ShadowSettings& shadows) {
     LightSetup setup;
     const glm::vec3 centre = sceneBounds.centre();
@@ -32,10 +34,27 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBoun
         g.spot = glm::vec4(std::cos(glm::radians(light.spotInnerDeg)), std::cos(glm::radians(light.spotOuterDeg)), 0, 0);
         g.directionShadow = glm::vec4(direction, -1.0f);
         g.positionType = glm::vec4(positionM, float(type));
+        const float size = type == DERMIS_LIGHT_DIRECTIONAL ? std::tan(glm::radians(0.5f * light.angularDiameterDeg))
+                                                            : light.radiusM;
+        g.area = glm::vec4(size, 0.0f, 0.0f, 0.0f);
 
-        const bool canShadow = light.castsShadow && type != DERMIS_LIGHT_POINT &&
-                               static_cast<int>(setup.shadowedLights.size()) < DERMIS_MAX_SHADOWED_LIGHTS;
+        const bool canShadow =
+            light.castsShadow && static_cast<int>(setup.shadowedLights.size()) < DERMIS_MAX_SHADOWED_LIGHTS;
         if (!canShadow) continue;
+        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, 0.0f, float(shadows.filter));
+        g.directionShadow.w = float(setup.shadowedLights.size());
+        setup.shadowedLights.push_back(i);
+        if (type == DERMIS_LIGHT_POINT) {
+            // Cube faces: every caster lies beyond the bounding sphere's nearest
+            // distance, and a face's axial depth is at least 1/sqrt(3) of the distance.
+            const float distanceM = glm::length(centre - positionM);
+            const float nearM = std::max((distanceM - radiusM) * 0.5f, 1e-3f);
+            g.shadowDepth = glm::vec4(nearM, std::max(distanceM + radiusM, nearM + 0.01f), 0.0f, 0.0f);
+            g.shadowParams.z = 2.0f / float(cubeShadowFaceSize(shadows.mapSize));  // per metre of distance
+            g.area.y = 1.0f;
+            g.shadowClipFromWorld = glm::mat4(1.0f);  // unused: the faces' projections are the shaders'
+            continue;
+        }
 
         const glm::mat4 lightFromWorld = glm::lookAt(positionM, positionM + direction, anyPerpendicularUp(direction));
         // Depth range along the axis that encloses the scene's bounding sphere.
@@ -53,10 +72,8 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBoun
             texelM = 2.0f * std::tan(halfAngleRad) / float(shadows.mapSize);  // per metre of depth
         }
         g.shadowClipFromWorld = clipFromLight * lightFromWorld;
-        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, texelM, float(shadows.filter));
+        g.shadowParams.z = texelM;
         g.shadowDepth = glm::vec4(nearM, farM, type == DERMIS_LIGHT_DIRECTIONAL ? 1.0f : 0.0f, 0.0f);
-        g.directionShadow.w = float(setup.shadowedLights.size());
-        setup.shadowedLights.push_back(i);
     }
     return setup;
 }

@@ -33,6 +33,9 @@ struct Light {
     float spotInnerDeg = 20.0f;               // full-intensity half-angle
     float spotOuterDeg = 30.0f;               // zero-intensity half-angle
     bool castsShadow = true;
+    // The light's size (docs/shadows.md): 0 is a delta light with a hard shadow.
+    float angularDiameterDeg = 0.0f;  // directional: the disc of directions it comes from (the sun: 0.53)
+    float radiusM = 0.0f;             // spot and point: the radius of the emitting sphere
 };
 
 struct Transform {
@@ -118,7 +121,7 @@ struct ShadowSettings {
     int mapSize = 1024;              // kMinShadowMapSize..kMaxShadowMapSize
     float biasConstantM = 0.0005f;   // constant depth bias, metres along the light's axis
     float biasSlopeTexels = 2.0f;    // slope-scaled bias: this many shadow texels times tan(angle to the light)
-    ShadowFilter filter = ShadowFilter::Pcf4x4;  // kShadowFilters
+    ShadowFilter filter = ShadowFilter::Pcss;  // kShadowFilters; pcss is pcf4x4 for delta lights
 };
 
 // Texture-space SSS (d'Eon & Luebke, Chappuis 2011 §2.2-§2.8; docs/texture-space.md).

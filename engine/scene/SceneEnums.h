@@ -52,12 +52,18 @@ inline constexpr EnumTable<SssBlur, 4> kSssBlurs{
       {SssBlur::Control, "control", "Jimenez et al. 2009's lerp towards the centre"},
       {SssBlur::FetchOnly, "fetch-only", "the same fetches, unweighted: the benchmarks' bandwidth floor"}}}};
 
-enum class ShadowFilter { Pcf4x4 = DERMIS_SHADOW_FILTER_PCF4X4, Poisson = DERMIS_SHADOW_FILTER_POISSON };
+enum class ShadowFilter {
+    Pcf4x4 = DERMIS_SHADOW_FILTER_PCF4X4,
+    Poisson = DERMIS_SHADOW_FILTER_POISSON,
+    Pcss = DERMIS_SHADOW_FILTER_PCSS
+};
 
-inline constexpr EnumTable<ShadowFilter, 2> kShadowFilters{
+inline constexpr EnumTable<ShadowFilter, 3> kShadowFilters{
     "shadow filter",
     {{{ShadowFilter::Pcf4x4, "pcf4x4", "4x4 percentage-closer filtering (Chappuis 2011)"},
-      {ShadowFilter::Poisson, "poisson", "rotated Poisson-disc taps (Papanikolaou 2013)"}}}};
+      {ShadowFilter::Poisson, "poisson", "rotated Poisson-disc taps (Papanikolaou 2013)"},
+      {ShadowFilter::Pcss, "pcss",
+       "penumbrae as wide as the light's size implies (Fernando 2005); pcf4x4 for a delta light"}}}};
 
 static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssVariants.isOneToOne() &&
                   kSssBlurs.isOneToOne() && kShadowFilters.isOneToOne(),

@@ -77,7 +77,8 @@ void readCamera(JsonObject& root, Camera& camera) {
 void readLight(JsonContext& context, const json& value, const std::string& pointer, Light& light) {
     JsonObject object(
         context, value, pointer,
-        {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow"});
+        {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow",
+         "angular_diameter_deg", "radius_m"});
     choice(object, "type", kLightTypes, light.type);
     object.vec3("position_m", light.positionM);
     object.vec3("direction", light.direction);
@@ -86,6 +87,9 @@ void readLight(JsonContext& context, const json& value, const std::string& point
     object.number("spot_inner_deg", light.spotInnerDeg, Range::rightOpen(0.0, 90.0));
     object.number("spot_outer_deg", light.spotOuterDeg, Range::rightOpen(0.0, 90.0));
     object.boolean("shadow", light.castsShadow);
+    object.number("angular_diameter_deg", light.angularDiameterDeg,
+                  Range::rightOpen(0.0, kMaxLightAngularDiameterDeg));
+    object.number("radius_m", light.radiusM, Range::rightOpen(0.0, kMaxLightRadiusM));
     if (context.failed()) {
         return;
     }

@@ -60,6 +60,8 @@ Json lightJson(const Light& light) {
     j["spot_inner_deg"] = number(light.spotInnerDeg);
     j["spot_outer_deg"] = number(light.spotOuterDeg);
     j["shadow"] = light.castsShadow;
+    j["angular_diameter_deg"] = number(light.angularDiameterDeg);
+    j["radius_m"] = number(light.radiusM);
     return j;
 }
 

@@ -1,15 +1,26 @@
-// Shadow-map lookups with percentage-closer filtering.
+// Shadow-map lookups with percentage-closer filtering (docs/shadows.md).
 //
-// The shadow pass stores linear depth along the light's axis in metres (R32F),
-// so the same map serves shadows and the transmittance thickness. A receiver
-// is lit where its own light-space depth minus the bias is no further than the
-// stored occluder depth. The bias is slope-scaled: constant + slope * texel
-// footprint * tan(angle between N and L) (Papanikolaou 2013 §3).
+// The shadow pass stores linear depth in metres (R32F): along the light's axis
+// for directional and spot lights (a 2-D map), the distance to the light for
+// point lights (a cube map of six faces laid out 3x2 in one 2-D atlas,
+// GpuLight.area.y = 1). The same maps serve shadows and the transmittance
+// thickness. A receiver is lit where its own light-space depth minus the bias
+// is no further than the stored occluder depth. The bias is slope-scaled:
+// constant + slope * texel footprint * tan(angle between N and L)
+// (Papanikolaou 2013 §3).
 //
-// Two filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
+// Filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
 //   PCF4X4: a 4x4 grid of taps, box-weighted (Chappuis 2011 §2.4);
 //   POISSON: 16 Poisson-disc taps rotated per pixel by interleaved gradient noise
-//      (Papanikolaou 2013 §3), trading banding for noise.
+//      (Papanikolaou 2013 §3), trading banding for noise;
+//   PCSS: percentage-closer soft shadows (Fernando 2005) for lights with a size
+//      (GpuLight.area.x): a blocker search over the region the light's size
+//      sets, the penumbra width the mean blocker depth implies, then PCF over a
+//      disc of that width with DERMIS_PCSS_FILTER_SAMPLES fixed taps (no noise).
+//      A delta light takes the PCF4X4 path, so its shadow is PCF4X4's.
+// The wide kernels of POISSON on cube maps and of PCSS compare each tap with the
+// receiver's plane where the tap's ray meets it, not with the receiver's own
+// depth, so that a tilted receiver does not shadow itself across the kernel.
 #ifndef DERMIS_SHADOWS_GLSL
 #define DERMIS_SHADOWS_GLSL
 
@@ -25,18 +36,157 @@ float interleavedGradientNoise(vec2 pixel) {
     return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// Light-space linear depth (metres) of a world position.
+// Point (i + 0.5) of `count` on the unit disc's golden-angle spiral (Vogel 1979):
+// uniform in area, deterministic.
+vec2 vogelDisc(int i, int count) {
+    float r = sqrt((float(i) + 0.5) / float(count));
+    float theta = float(i) * 2.39996323;
+    return r * vec2(cos(theta), sin(theta));
+}
+
+bool isCubeShadow(GpuLight light) { return light.area.y > 0.5; }
+
+// Light-space linear depth (metres) of a world position: along the light's
+// axis for 2-D maps, the distance to the light for cube maps.
 float lightLinearDepth(GpuLight light, vec3 worldPositionM) {
+    if (isCubeShadow(light)) return length(worldPositionM - light.positionType.xyz);
     return dot(worldPositionM - light.positionType.xyz, light.directionShadow.xyz);
+}
+
+// Cube faces 0..5 (+x, -x, +y, -y, +z, -z): the axis each looks along and the
+// directions of its atlas cell's u and v; face f is cell (f % 3, f / 3).
+const vec3 kCubeAxis[6] = vec3[](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1));
+const vec3 kCubeU[6] = vec3[](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0), vec3(1, 0, 0), vec3(1, 0, 0), vec3(-1, 0, 0));
+const vec3 kCubeV[6] = vec3[](vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 0, -1), vec3(0, 0, 1), vec3(0, 1, 0), vec3(0, 1, 0));
+
+int cubeFace(vec3 d) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+    if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+    return d.z >= 0.0 ? 4 : 5;
+}
+
+// Clip position of the offset d (world, from the light) on face `face`: a 90-degree
+// perspective between near and far (GpuLight.shadowDepth.xy).
+vec4 cubeFaceClip(int face, vec3 d, float nearM, float farM) {
+    float w = dot(d, kCubeAxis[face]);
+    float z = (farM + nearM) / (farM - nearM) * w - 2.0 * farM * nearM / (farM - nearM);
+    return vec4(dot(d, kCubeU[face]), dot(d, kCubeV[face]), z, w);
+}
+
+// Atlas coordinates of the direction d from the light, kept half a texel inside its face.
+vec2 cubeAtlasUv(sampler2D atlas, vec3 d) {
+    int face = cubeFace(d);
+    vec2 uv = vec2(dot(d, kCubeU[face]), dot(d, kCubeV[face])) / dot(d, kCubeAxis[face]) * 0.5 + 0.5;
+    float halfTexel = 0.5 / float(textureSize(atlas, 0).y / 2);
+    uv = clamp(uv, vec2(halfTexel), vec2(1.0 - halfTexel));
+    return (vec2(face % 3, face / 3) + uv) / vec2(3.0, 2.0);
+}
+
+// The stored occluder depth where the world position p projects; a large
+// depth (unoccluded) outside a 2-D map.
+float storedDepthM(sampler2D shadowMap, GpuLight light, vec3 p) {
+    if (isCubeShadow(light)) return texture(shadowMap, cubeAtlasUv(shadowMap, p - light.positionType.xyz)).r;
+    vec4 clip = light.shadowClipFromWorld * vec4(p, 1.0);
+    if (clip.w <= kTiny) return 1e30;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1e30;
+    return texture(shadowMap, uv).r;
+}
+
+// A receiver's neighbourhood in the map: taps at offsets in texels move the
+// receiver point by metresPerTexel along axisU and axisV, and each tap's
+// receiver depth is where its ray from the light meets the receiver's plane.
+struct ShadowFrame {
+    vec3 positionM;
+    vec3 N;
+    vec3 axisU;
+    vec3 axisV;
+    float metresPerTexel;  // at the receiver
+    float biasM;
+};
+
+// The receiver plane's light-space depth along the ray through q, minus the bias.
+float planeTestDepthM(GpuLight light, ShadowFrame f, vec3 q) {
+    float receiverDepthM = lightLinearDepth(light, f.positionM);
+    if (light.shadowDepth.z > 0.5) {
+        // Orthographic: the ray runs along the axis from q.
+        float along = dot(f.N, light.directionShadow.xyz);
+        float deltaM = abs(along) > 0.05 ? dot(f.N, f.positionM - q) / along : 0.0;
+        return receiverDepthM + deltaM - f.biasM;
+    }
+    vec3 fromLight = q - light.positionType.xyz;
+    float toPlane = dot(f.N, fromLight);
+    float scale = abs(toPlane) > 0.05 * length(fromLight) ? dot(f.N, f.positionM - light.positionType.xyz) / toPlane : 1.0;
+    return lightLinearDepth(light, light.positionType.xyz + fromLight * scale) - f.biasM;
+}
+
+vec3 tapPosition(ShadowFrame f, vec2 offsetTexels) {
+    return f.positionM + f.metresPerTexel * (offsetTexels.x * f.axisU + offsetTexels.y * f.axisV);
+}
+
+float tapLit(sampler2D shadowMap, GpuLight light, ShadowFrame f, vec2 offsetTexels) {
+    vec3 q = tapPosition(f, offsetTexels);
+    return planeTestDepthM(light, f, q) <= storedDepthM(shadowMap, light, q) ? 1.0 : 0.0;
+}
+
+// PCSS (Fernando 2005) with sizes in texels at the receiver. Directional:
+// penumbra w = (d_receiver - d_blocker) tan(angular diameter), taken as
+// 2 (d_r - d_b) tan(angular radius); spot and point (a sphere of radius R):
+// w = 2 R (d_r - d_b) / d_b, at the receiver's depth.
+float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float nearM) {
+    float size = light.area.x;
+    float receiverDepthM = lightLinearDepth(light, f.positionM);
+    bool orthographic = light.shadowDepth.z > 0.5;
+    // Blocker search: a blocker at depth z hides part of the light from the
+    // receiver if it lies within the light's cone from the receiver, whose
+    // radius at z, measured at the receiver's depth, is largest at the near plane.
+    float searchM = orthographic ? size * (receiverDepthM - nearM)
+                                 : size * (receiverDepthM - nearM) / nearM;
+    float searchTexels = clamp(searchM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS));
+    // Two searches: the near plane's region is far wider than the cone that
+    // reaches the blockers, and a mean over it weights blockers the receiver
+    // does not see the light past. The second search covers the penumbra the
+    // first mean depth implies (still wider than the true one, since that mean
+    // is nearer the light), and its mean sets the penumbra.
+    float halfWidthM = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+        float blockerSumM = 0.0;
+        float blockers = 0.0;
+        for (int i = 0; i < DERMIS_PCSS_BLOCKER_SAMPLES; ++i) {
+            vec3 q = tapPosition(f, searchTexels * vogelDisc(i, DERMIS_PCSS_BLOCKER_SAMPLES));
+            float storedM = storedDepthM(shadowMap, light, q);
+            if (storedM < planeTestDepthM(light, f, q)) {
+                blockerSumM += storedM;
+                blockers += 1.0;
+            }
+        }
+        if (blockers == 0.0) return 1.0;
+        float blockerDepthM = max(blockerSumM / blockers, 1e-4);
+        halfWidthM = orthographic ? size * max(receiverDepthM - blockerDepthM, 0.0)
+                                  : size * max(receiverDepthM - blockerDepthM, 0.0) / blockerDepthM;
+        searchTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, searchTexels);
+    }
+    // The smallest kernel is one texel: below that the map cannot resolve a penumbra.
+    float radiusTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS));
+    float lit = 0.0;
+    for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; ++i) {
+        lit += tapLit(shadowMap, light, f, radiusTexels * vogelDisc(i, DERMIS_PCSS_FILTER_SAMPLES));
+    }
+    return lit / float(DERMIS_PCSS_FILTER_SAMPLES);
 }
 
 // Fraction of the light that reaches worldPositionM, in [0,1].
 float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, vec2 pixel) {
-    vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
-    if (clip.w <= kTiny) return 1.0;
-    vec3 ndc = clip.xyz / clip.w;
-    vec2 uv = ndc.xy * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    bool cube = isCubeShadow(light);
+    vec2 uv = vec2(0.0);
+    if (!cube) {
+        vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
+        if (clip.w <= kTiny) return 1.0;
+        vec3 ndc = clip.xyz / clip.w;
+        uv = ndc.xy * 0.5 + 0.5;
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    }
 
     float receiverDepthM = lightLinearDepth(light, worldPositionM);
     vec3 L = -light.directionShadow.xyz;
@@ -44,26 +194,61 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
     float cosTheta = clamp(dot(N, L), 0.05, 1.0);
     float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
     // Texel footprint in metres at the receiver: constant for orthographic,
-    // growing with distance for perspective maps.
+    // growing with distance for perspective maps and cube faces.
     float texelM = light.shadowParams.z * (light.shadowDepth.z > 0.5 ? 1.0 : max(receiverDepthM, 0.0));
     float biasM = light.shadowParams.x + light.shadowParams.y * texelM * min(tanTheta, 10.0);
     float testDepthM = receiverDepthM - biasM;
+    int filterId = int(light.shadowParams.w + 0.5);
+    bool delta = !(light.area.x > 0.0);
 
-    vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
-    float lit = 0.0;
-    if (int(light.shadowParams.w + 0.5) == DERMIS_SHADOW_FILTER_PCF4X4) {
+    if (!cube && (filterId == DERMIS_SHADOW_FILTER_PCF4X4 || (filterId == DERMIS_SHADOW_FILTER_PCSS && delta))) {
+        vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
+        float lit = 0.0;
         for (int y = 0; y < 4; ++y) {
             for (int x = 0; x < 4; ++x) {
                 vec2 offset = (vec2(x, y) - 1.5) * texel;
                 lit += testDepthM <= texture(shadowMap, uv + offset).r ? 1.0 : 0.0;
             }
         }
-    } else {
+        return lit / 16.0;
+    }
+    if (!cube && filterId == DERMIS_SHADOW_FILTER_POISSON) {
+        vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
         float angle = 6.2831853 * interleavedGradientNoise(pixel);
         mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+        float lit = 0.0;
         for (int i = 0; i < 16; ++i) {
             vec2 offset = rotation * kPoissonDisc[i] * 2.0 * texel;
             lit += testDepthM <= texture(shadowMap, uv + offset).r ? 1.0 : 0.0;
+        }
+        return lit / 16.0;
+    }
+
+    // Taps in texels around the receiver: along the map's axes (its clip
+    // matrix's first two rows) for 2-D maps, across the direction to the light for cubes.
+    ShadowFrame f;
+    f.positionM = worldPositionM;
+    f.N = N;
+    f.metresPerTexel = texelM;
+    f.biasM = biasM;
+    if (cube) {
+        vec3 d = normalize(worldPositionM - light.positionType.xyz);
+        f.axisU = normalize(cross(d, abs(d.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+        f.axisV = cross(d, f.axisU);
+    } else {
+        mat4 m = light.shadowClipFromWorld;
+        f.axisU = normalize(vec3(m[0][0], m[1][0], m[2][0]));
+        f.axisV = normalize(vec3(m[0][1], m[1][1], m[2][1]));
+    }
+    if (filterId == DERMIS_SHADOW_FILTER_PCSS && !delta) return pcssVisibility(shadowMap, light, f, light.shadowDepth.x);
+    float lit = 0.0;
+    if (filterId == DERMIS_SHADOW_FILTER_POISSON) {
+        float angle = 6.2831853 * interleavedGradientNoise(pixel);
+        mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+        for (int i = 0; i < 16; ++i) lit += tapLit(shadowMap, light, f, rotation * kPoissonDisc[i] * 2.0);
+    } else {
+        for (int y = 0; y < 4; ++y) {
+            for (int x = 0; x < 4; ++x) lit += tapLit(shadowMap, light, f, vec2(x, y) - 1.5);
         }
     }
     return lit / 16.0;

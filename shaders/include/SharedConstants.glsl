@@ -10,7 +10,7 @@
 
 // Limits of the uniform blocks.
 #define DERMIS_MAX_LIGHTS 64
-#define DERMIS_MAX_SHADOWED_LIGHTS 4
+#define DERMIS_MAX_SHADOWED_LIGHTS 4   // shadow maps per frame; a point light's cube atlas takes one
 #define DERMIS_MAX_CHARACTERS 255       // object ids 1..255 in the G-buffer (0 = background)
 #define DERMIS_MAX_PROFILES 8           // profile slots per frame; the stencil holds the slot (0 = no SSS)
 #define DERMIS_MAX_PROFILE_GAUSSIANS 8
@@ -29,6 +29,13 @@
 // Shadow filters (GpuLight::shadowParams.w); C++: ShadowFilter.
 #define DERMIS_SHADOW_FILTER_PCF4X4 0
 #define DERMIS_SHADOW_FILTER_POISSON 1
+#define DERMIS_SHADOW_FILTER_PCSS 2
+// PCSS (Fernando 2005): the fixed taps of its blocker search and of its
+// filter, on a Vogel disc (include/Shadows.glsl).
+#define DERMIS_PCSS_BLOCKER_SAMPLES 16
+#define DERMIS_PCSS_FILTER_SAMPLES 64
+// The widest PCSS search and filter radius, in shadow-map texels.
+#define DERMIS_PCSS_MAX_RADIUS_TEXELS 256
 
 // Edge handling of the screen-space SSS blur (SssBlurBlock::edges.x); C++:
 // SssBlur. Bilateral: depth-weighted taps; control: Jimenez et al. 2009's lerp

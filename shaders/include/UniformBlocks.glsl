@@ -62,8 +62,10 @@ struct GpuLight {
     vec4 directionShadow;      // xyz: unit direction the light travels, w: shadow-map slot or -1
     vec4 radiance;             // rgb: colour * intensity
     vec4 spot;                 // x: cos(inner), y: cos(outer)
-    vec4 shadowParams;         // x: constant bias (m), y: slope bias (texels), z: texel size (m at 1 m / ortho), w: filter (0 grid, 1 poisson)
+    vec4 shadowParams;         // x: constant bias (m), y: slope bias (texels), z: texel size (m at 1 m / ortho), w: filter (DERMIS_SHADOW_FILTER_*)
     vec4 shadowDepth;          // x: near (m), y: far (m), z: orthographic (1) or perspective (0), w: back light (1/0), for transmittance
+    vec4 area;                 // x: size, 0 for a delta light: directional tan(angular radius), spot/point sphere radius (m);
+                               // y: the shadow map is a point light's cube atlas (1/0)
 };
 
 DERMIS_BLOCK(LightsBlock, DERMIS_BINDING_LIGHTS) {
@@ -75,7 +77,7 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     mat4 normalWorldFromObject;  // inverse transpose of worldFromObject
     vec4 albedoRoughness;        // rgb: albedo tint (linear), w: Beckmann roughness m
     vec4 material;               // x: rho_s, y: object id (1..255), z: has albedo map, w: has normal map
-    vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index (shadow pass)
+    vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index, z: cube face 0..5 (shadow pass)
 } DERMIS_BLOCK_END(uObject)
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).

@@ -21,7 +21,8 @@ namespace {
 static_assert(int(Aov::Normal) == DERMIS_AOV_NORMAL && int(Aov::IrradianceTexture) == DERMIS_AOV_IRRADIANCE_TEXTURE);
 static_assert(int(SssBlur::Bilateral) == DERMIS_BLUR_EDGES_BILATERAL && int(SssBlur::Control) == DERMIS_BLUR_EDGES_CONTROL &&
               int(SssBlur::FetchOnly) == DERMIS_BLUR_EDGES_FETCH_ONLY);
-static_assert(int(ShadowFilter::Pcf4x4) == DERMIS_SHADOW_FILTER_PCF4X4 && int(ShadowFilter::Poisson) == DERMIS_SHADOW_FILTER_POISSON);
+static_assert(int(ShadowFilter::Pcf4x4) == DERMIS_SHADOW_FILTER_PCF4X4 && int(ShadowFilter::Poisson) == DERMIS_SHADOW_FILTER_POISSON &&
+              int(ShadowFilter::Pcss) == DERMIS_SHADOW_FILTER_PCSS);
 static_assert(int(LightType::Spot) == DERMIS_LIGHT_SPOT && int(LightType::Point) == DERMIS_LIGHT_POINT);
 static_assert(kMaxBlurTaps == DERMIS_MAX_BLUR_TAPS && kMaxProfileGaussians == DERMIS_MAX_PROFILE_GAUSSIANS);
 static_assert(sizeof(gpu::SssBlurBlock::kernel) / sizeof(glm::vec4) == kMaxBlurTaps, "the block holds the longest kernel");
@@ -102,7 +103,7 @@ TEST(EnumTables, GeneratedMessagesMatchTheFormatManual) {
     EXPECT_EQ(listForMessage(kSssModes.names(), "or"), "ss or ts");
     EXPECT_EQ(listForMessage(kSssVariants.names(), "or"), "c, lcb or lbb");
     EXPECT_EQ(listForMessage(kSssBlurs.names(), "or"), "variant, bilateral, control or fetch-only");
-    EXPECT_EQ(listForMessage(kShadowFilters.names(), "or"), "pcf4x4 or poisson");
+    EXPECT_EQ(listForMessage(kShadowFilters.names(), "or"), "pcf4x4, poisson or pcss");
     EXPECT_EQ(listForMessage(kLightTypes.names(), "or"), "directional, spot or point");
 }
 

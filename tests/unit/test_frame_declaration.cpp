@@ -250,6 +250,19 @@ TEST(FrameDeclaration, CachedShadowMapIsCulledOnTheSecondFrame) {
     EXPECT_TRUE(frames.executed("shadow:light1(spot)"));
 }
 
+TEST(FrameDeclaration, PointLightShadowIsCachedLikeTheOthersAndAbsentWithoutShadow) {
+    // edge.json's light as a shadowed point light: a cube-atlas shadow pass.
+    DeclaredFrames frames("edge.json", {"lights.0.type=point", "lights.0.position_m=[-0.2,0.3,0]"});
+    ASSERT_TRUE(frames.declare());
+    EXPECT_TRUE(frames.executed("shadow:light0(point)")) << frames.listing();
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.culledBecause("shadow:light0(point)"), "predicate: light and casters unchanged since the cached map");
+    // A point light without a shadow has no shadow pass at all.
+    frames.scene().lights[0].castsShadow = false;
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.declaredWithPrefix("shadow:"), 0) << frames.listing();
+}
+
 TEST(FrameDeclaration, AnAovCullsTheLightingChain) {
     DeclaredFrames frames("default.json");
     ASSERT_TRUE(frames.declare(Aov::Albedo));

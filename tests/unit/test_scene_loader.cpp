@@ -95,6 +95,8 @@ void expectSceneEq(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.spotInnerDeg, y.spotInnerDeg);
         EXPECT_EQ(x.spotOuterDeg, y.spotOuterDeg);
         EXPECT_EQ(x.castsShadow, y.castsShadow);
+        EXPECT_EQ(x.angularDiameterDeg, y.angularDiameterDeg);
+        EXPECT_EQ(x.radiusM, y.radiusM);
     }
     ASSERT_EQ(a.characters.size(), b.characters.size());
     for (size_t i = 0; i < a.characters.size(); ++i) {
@@ -501,6 +503,8 @@ TEST(SceneWriter, RoundTripKeepsAwkwardFloatsAndDefaults) {
     light.colour = glm::vec3(16777217.0f, 0.1f, 1e-30f);
     light.spotInnerDeg = 30.0f;
     light.spotOuterDeg = 30.0f;
+    light.angularDiameterDeg = 0.53f;
+    light.radiusM = 1.0f / 3.0f;
     scene.lights = {light, Light{}};
     Character character;
     character.name = "na\"me/with\\odd\tchars \xc3\xa9 [1,  2]\\";
@@ -540,7 +544,7 @@ TEST(SceneWriter, WritesSettingsAsNestedGroups) {
     const std::string text = sceneToJson(Scene{});
     EXPECT_NE(text.find("\"energy_conservation\": true,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"shadow\": {\n      \"map_size\": 1024,"), std::string::npos) << text;
-    EXPECT_NE(text.find("\"filter\": \"pcf4x4\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"filter\": \"pcss\""), std::string::npos) << text;
     EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"variant\": \"lbb\",\n      \"blur\": \"variant\",\n      \"taps\": 9,"),
               std::string::npos)
         << text;
@@ -624,7 +628,7 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
     EXPECT_NE(what.find("laser"), std::string::npos);
     EXPECT_EQ(what, "/lights/0/type: unknown light type \"laser\" (expected directional, spot or point)");
     EXPECT_EQ(errorOf(R"({"settings": {"shadow": {"filter": "pcf"}}})"),
-              "/settings/shadow/filter: unknown shadow filter \"pcf\" (expected pcf4x4 or poisson)");
+              "/settings/shadow/filter: unknown shadow filter \"pcf\" (expected pcf4x4, poisson or pcss)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": "gaussian"}}})"),
               "/settings/sss/blur: unknown SSS blur \"gaussian\" (expected variant, bilateral, control or fetch-only)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"blur": 1}}})"), "/settings/sss/blur: expected a string, got a number");
@@ -683,6 +687,11 @@ TEST(SceneLoader, OutOfRangeValuesAreRejected) {
               "/lights/0/spot_inner_deg: must be <= spot_outer_deg (35), got 40");
     EXPECT_EQ(errorOf(withLight(R"("spot_outer_deg": 90)")), "/lights/0/spot_outer_deg: must be in [0, 90), got 90");
     EXPECT_EQ(errorOf(withLight(R"("colour": [1, 1, -1])")), "/lights/0/colour/2: must be >= 0, got -1");
+    EXPECT_EQ(errorOf(withLight(R"("angular_diameter_deg": 30)")),
+              "/lights/0/angular_diameter_deg: must be in [0, 30), got 30");
+    EXPECT_EQ(errorOf(withLight(R"("angular_diameter_deg": -0.5)")),
+              "/lights/0/angular_diameter_deg: must be in [0, 30), got -0.5");
+    EXPECT_EQ(errorOf(withLight(R"("radius_m": 1)")), "/lights/0/radius_m: must be in [0, 1), got 1");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "metres_per_unit": 0)")),
               "/characters/0/metres_per_unit: must be > 0, got 0");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "transform": {"scale": -1})")),

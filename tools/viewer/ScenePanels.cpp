@@ -31,7 +31,6 @@ bool lightPanel(Light& light) {
         light.spotInnerDeg = std::min(light.spotInnerDeg, light.spotOuterDeg);
     }
     changed |= ImGui::Checkbox("casts shadow", &light.castsShadow);
-    if (light.type == LightType::Point && light.castsShadow) widgets::help("Point lights have no shadow map yet.");
     return changed;
 }
 
