@@ -1,19 +1,11 @@
 #include "procedural/ProceduralNoise.h"
 
+#include "core/Hash.h"
+
 #include <cmath>
 
 namespace dermis {
 namespace {
-
-uint32_t mix(uint32_t h) {
-    // lowbias32 finaliser (Wellons): good avalanche for a few multiplies.
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
 
 // Perlin's twelve cube-edge directions, padded to sixteen.
 const glm::vec3 kGradients[16] = {
@@ -36,7 +28,7 @@ uint32_t hashCell(int x, int y, int z, uint32_t seed) {
     // Odd multipliers spread the lattice coordinates before one mixing round.
     const uint32_t h = static_cast<uint32_t>(x) * 0x8da6b343u + static_cast<uint32_t>(y) * 0xd8163841u +
                        static_cast<uint32_t>(z) * 0xcb1ab31fu + seed * 0x9e3779b9u;
-    return mix(h);
+    return lowbias32(h);
 }
 
 float hashUnit(uint32_t hash) { return static_cast<float>(hash >> 8) * (1.0f / 16777216.0f); }
@@ -110,7 +102,7 @@ NoiseSample poreNoise(const glm::vec3& p, float radius, float density, uint32_t 
         const float jx = (static_cast<float>((h >> 8) & 0xffu) + 0.5f) * kByte;
         const float jy = (static_cast<float>((h >> 16) & 0xffu) + 0.5f) * kByte;
         const float jz = (static_cast<float>(h >> 24) + 0.5f) * kByte;
-        const uint32_t h2 = mix(h);
+        const uint32_t h2 = lowbias32(h);
         const float r = radius * (0.6f + 0.4f * static_cast<float>(h2 & 0xffffu) * (1.0f / 65536.0f));
         const float depth = 0.5f + 0.5f * static_cast<float>(h2 >> 16) * (1.0f / 65536.0f);
 

@@ -1,5 +1,7 @@
 #include "reference/PixelSampling.h"
 
+#include "core/Hash.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -7,17 +9,6 @@
 
 namespace dermis::reference {
 namespace {
-
-// A 32-bit integer mixing hash (xor-shift-multiply rounds): any change of its
-// input changes about half the output bits.
-uint32_t hash32(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 float unitFloat(uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }  // [0, 1), 24 bits
 
@@ -34,11 +25,11 @@ std::vector<glm::vec2> subSampleOffsets(int x, int y, int samplesPerPixel) {
     if (n <= 1) return {glm::vec2(0.5f)};
     std::vector<glm::vec2> offsets;
     offsets.reserve(size_t(n) * size_t(n));
-    const uint32_t pixel = hash32(uint32_t(x) * 0x9e3779b9U ^ hash32(uint32_t(y)));
+    const uint32_t pixel = lowbias32(uint32_t(x) * 0x9e3779b9U ^ lowbias32(uint32_t(y)));
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
-            const uint32_t h = hash32(pixel ^ uint32_t(j * n + i) * 0x85ebca6bU);
-            const glm::vec2 jitter(unitFloat(h), unitFloat(hash32(h)));
+            const uint32_t h = lowbias32(pixel ^ uint32_t(j * n + i) * 0x85ebca6bU);
+            const glm::vec2 jitter(unitFloat(h), unitFloat(lowbias32(h)));
             offsets.push_back((glm::vec2(float(i), float(j)) + jitter) / float(n));
         }
     }
