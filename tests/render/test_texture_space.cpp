@@ -747,9 +747,13 @@ int darkPixels(const Image& ts, const Image& ss, const Image& irradiance) {
     for (size_t i = 0; i < ts.texels.size(); ++i) {
         const auto sum = [](const glm::vec4& c) { return c.r + c.g + c.b; };
         const float value = sum(ts.texels[i]);
-        dark += sum(ss.texels[i]) > 0.05f && value < 0.25f * sum(ss.texels[i]) && value < 0.25f * sum(irradiance.texels[i])
-                    ? 1
-                    : 0;
+        const bool isDark =
+            sum(ss.texels[i]) > 0.05f && value < 0.25f * sum(ss.texels[i]) && value < 0.25f * sum(irradiance.texels[i]);
+        if (isDark) {
+            std::printf("  dark pixel (%zu, %zu): ts %.4f, ss %.4f, irradiance %.4f (RGB sums)\n", i % size_t(ts.width),
+                        i / size_t(ts.width), value, sum(ss.texels[i]), sum(irradiance.texels[i]));
+        }
+        dark += isDark ? 1 : 0;
     }
     return dark;
 }
@@ -776,8 +780,8 @@ TEST_F(TextureSpace, HeadScanHasNoDarkPixels) {
     if (!std::filesystem::exists(test::sharedContentDir() + "/LeePerrySmith")) {
         GTEST_SKIP() << "../shared/content/LeePerrySmith is absent";
     }
-    // The scene's framing, at its metres per unit and at the head's real
-    // 0.045 (/work/shared/content/README.md).
+    // The scene's framing at the head's real 0.045 m per unit (the scan's
+    // README in ../shared/content) and at 0.025, where it looks smaller.
     for (const char* scale : {"characters.0.metres_per_unit=0.025", "characters.0.metres_per_unit=0.045"}) {
         load("lee_perry_smith.json", {"mode=ss", scale});
         const Image ss = render(Aov::Diffuse, 320, 180);
