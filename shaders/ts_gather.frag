@@ -3,9 +3,10 @@
 // G-buffer's and the same object id) it writes, into the SSS accumulation the
 // composite reads,
 //   sum_i w_i T_i(uv) / sum_i w_i  +  the TSM terms,
-// where T_i is blurred texture i, replaced by T_0 (the narrowest, "local"
-// light) as a chart border comes nearer than seam_blend standard deviations
-// of Gaussian i. Like the screen-space accumulation this still carries
+// where T_i is blurred texture i (the lighting pass's irradiance at this pixel
+// for a Gaussian narrower than a texel), replaced by T_0 (the narrowest,
+// "local" light) as a chart border comes nearer than seam_blend standard
+// deviations of Gaussian i. Like the screen-space accumulation this still carries
 // albedo^mix; the composite applies albedo^(1-mix), the outgoing energy
 // factor and the specular.
 #define DERMIS_USE_TS_BLOCK
