@@ -40,10 +40,12 @@ const float kSameSurfacePerDepth = 1e-4;
 // texture: its texels sample the light up to 0.7 texel away from this point
 // and the bilinear read blurs by up to 1/4 texel^2, so at a shadow edge a
 // pixel reads the shadow of the texel beside it (the head scan at 256^2,
-// 1.5 mm texels: a pixel 38% lit read 0.09 of its 0.74, and 0.36 at 512^2
-// and 1024^2). For those Gaussians the lighting pass's irradiance at this
-// pixel, the same light (ts_irradiance.frag) at this very point, stands in;
-// from 0.5 to 1 texel it gives way to the texture.
+// texels 2.6 x 1.2 mm there: an eyelid pixel with irradiance 0.74, RGB sum,
+// read 0.09 from the texture and showed a diffuse of 0.105 where 512^2 and
+// 1024^2 show 0.36). For those Gaussians the lighting pass's irradiance at
+// this pixel, the same light (ts_irradiance.frag) at this very point, stands
+// in; from 0.5 to 1 texel (the coarser of u and v) it gives way to the
+// texture.
 const float kUnresolvedTexels = 0.5;
 const float kResolvedTexels = 1.0;
 
