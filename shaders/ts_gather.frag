@@ -3,9 +3,10 @@
 // G-buffer's and the same object id) it writes, into the SSS accumulation the
 // composite reads,
 //   sum_i w_i T_i(uv) / sum_i w_i  +  the TSM terms,
-// where T_i is blurred texture i, replaced by T_0 (the narrowest, "local"
-// light) as a chart border comes nearer than seam_blend standard deviations
-// of Gaussian i. Like the screen-space accumulation this still carries
+// where T_i is blurred texture i (the lighting pass's irradiance at this pixel
+// for a Gaussian narrower than a texel), replaced by T_0 (the narrowest,
+// "local" light) as a chart border comes nearer than seam_blend standard
+// deviations of Gaussian i. Like the screen-space accumulation this still carries
 // albedo^mix; the composite applies albedo^(1-mix), the outgoing energy
 // factor and the specular.
 #define DERMIS_USE_TS_BLOCK
@@ -17,6 +18,7 @@ layout(binding = 0) uniform sampler2D uBlurred[DERMIS_MAX_PROFILE_GAUSSIANS];
 layout(binding = 8) uniform sampler2D uTsm;
 layout(binding = 9) uniform sampler2D uAlbedo;  // G-buffer target 0: a = object id / 255
 layout(binding = 10) uniform usampler2D uDepthKey;  // G-buffer target 2: the view depth of the surface kept
+layout(binding = 11) uniform sampler2D uPixelIrradiance;  // the lighting pass's irradiance, the same light at this pixel
 
 in vec3 vWorldPositionM;
 in vec2 vUv;
@@ -34,6 +36,19 @@ layout(location = 0) out vec4 oDiffuse;
 const float kSameSurfaceMm = 0.1;
 const float kSameSurfacePerDepth = 1e-4;
 
+// A Gaussian narrower than a texel is not resolved by the irradiance
+// texture: its texels sample the light up to 0.7 texel away from this point
+// and the bilinear read blurs by up to 1/4 texel^2, so at a shadow edge a
+// pixel reads the shadow of the texel beside it (the head scan at 256^2,
+// texels 2.6 x 1.2 mm there: an eyelid pixel with irradiance 0.74, RGB sum,
+// read 0.09 from the texture and showed a diffuse of 0.105 where 512^2 and
+// 1024^2 show 0.36). For those Gaussians the lighting pass's irradiance at
+// this pixel, the same light (ts_irradiance.frag) at this very point, stands
+// in; from 0.5 to 1 texel (the coarser of u and v) it gives way to the
+// texture.
+const float kUnresolvedTexels = 0.5;
+const float kResolvedTexels = 1.0;
+
 void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
     if (objectId != int(uObject.material.y + 0.5)) discard;
@@ -50,6 +65,8 @@ void main() {
     float borderMm = vBorderDistanceM * 1000.0;
     float seamBlend = uTs.size.z;
     vec3 local = texture(uBlurred[0], vUv).rgb;
+    vec3 pixelIrradiance = texelFetch(uPixelIrradiance, ivec2(gl_FragCoord.xy), 0).rgb;
+    float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.size.y;
     vec3 sum = vec3(0.0);
     vec3 weightSum = vec3(0.0);
     vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
@@ -58,7 +75,9 @@ void main() {
         blurred[i] = texture(uBlurred[i], vUv);
         float sigmaMm = sqrt(uTs.gaussians[i].a);
         float trust = seamBlend > 0.0 ? smoothstep(0.0, seamBlend * sigmaMm, borderMm) : 1.0;
-        sum += uTs.gaussians[i].rgb * mix(local, blurred[i].rgb, trust);
+        float resolved = smoothstep(kUnresolvedTexels, kResolvedTexels, sigmaMm / max(mmPerTexel, kTiny));
+        vec3 light = mix(pixelIrradiance, blurred[i].rgb, resolved);
+        sum += uTs.gaussians[i].rgb * mix(local, light, trust);
         weightSum += uTs.gaussians[i].rgb;
     }
     vec3 diffuse = sum / max(weightSum, vec3(kTiny));

@@ -12,7 +12,7 @@ struct InitData {
 };
 struct GatherData {
     std::vector<graph::TextureHandle> blurred;
-    graph::TextureHandle tsm, depthStencil, albedo, depthKey, accumulatedIn, accumulatedOut;
+    graph::TextureHandle tsm, depthStencil, albedo, depthKey, irradiance, accumulatedIn, accumulatedOut;
 };
 
 graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle irradiance) {
@@ -38,7 +38,8 @@ graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& 
 
 graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                    const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& blurred,
-                                   graph::TextureHandle tsm, graph::TextureHandle accumulated) {
+                                   graph::TextureHandle tsm, graph::TextureHandle irradiance,
+                                   graph::TextureHandle accumulated) {
     const std::string name = tsPassName(plan, "gather");
     return graph
         .addPass<GatherData>(
@@ -49,6 +50,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 d.depthStencil = builder.read(gbuffer.depthStencil);
                 d.albedo = builder.read(gbuffer.albedo);
                 d.depthKey = builder.read(gbuffer.depthKey);
+                d.irradiance = builder.read(irradiance);
                 d.accumulatedIn = builder.read(accumulated);
                 d.accumulatedOut = builder.write(accumulated);
                 builder.skipIf(!plan.visible, "character off screen");
@@ -68,6 +70,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 glBindTextureUnit(8, resources.texture(d.tsm));
                 glBindTextureUnit(9, resources.texture(d.albedo));
                 glBindTextureUnit(10, resources.texture(d.depthKey));
+                glBindTextureUnit(11, resources.texture(d.irradiance));
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 // Only the surface the G-buffer kept: its own depth, pulled a
                 // little towards the camera so that the two programs' rounding
@@ -103,7 +106,7 @@ graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const Fram
         const graph::TextureHandle raw = addIrradiancePass(graph, frame, plan, gbuffer, shadowMaps, ambientOcclusion, tsm);
         const graph::TextureHandle dilated = addDilatePass(graph, frame, plan, raw);
         const std::vector<graph::TextureHandle> blurred = addBlurPasses(graph, frame, plan, stretch, dilated);
-        accumulated = addGatherPass(graph, frame, plan, gbuffer, blurred, tsm, accumulated);
+        accumulated = addGatherPass(graph, frame, plan, gbuffer, blurred, tsm, irradiance, accumulated);
     }
     return accumulated;
 }

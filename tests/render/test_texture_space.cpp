@@ -780,8 +780,8 @@ TEST_F(TextureSpace, HeadScanHasNoDarkPixels) {
     if (!std::filesystem::exists(test::sharedContentDir() + "/LeePerrySmith")) {
         GTEST_SKIP() << "../shared/content/LeePerrySmith is absent";
     }
-    // The scene's framing, at its metres per unit and at the head's real
-    // 0.045 (/work/shared/content/README.md).
+    // The scene's framing at the head's real 0.045 m per unit (the scan's
+    // README in ../shared/content) and at 0.025, where it looks smaller.
     for (const char* scale : {"characters.0.metres_per_unit=0.025", "characters.0.metres_per_unit=0.045"}) {
         load("lee_perry_smith.json", {"mode=ss", scale});
         const Image ss = render(Aov::Diffuse, 320, 180);
