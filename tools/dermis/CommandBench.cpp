@@ -66,6 +66,8 @@ const char* const kHelp =
     "                  scatter error; the machine and the sweep\n"
     "  pareto.png      total and scatter relative RMSE against frame GPU ms, both modes,\n"
     "                  fronts marked\n"
+    "  regions.png     the defaults' relative RMSE by cause and region\n"
+    "  errors.md       the same as a Markdown table\n"
     "  passes.png      stacked per-pass GPU ms of the fronts' and the default configurations\n"
     "  ERROR_IMAGES\n"
     "                  where each mode's default configuration differs from the reference:\n"
@@ -84,7 +86,7 @@ const char* const kHelp =
     "REFERENCE_OPTIONS"
     "  --set PATH=VALUE   override a scene value for every configuration; repeatable\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
-    "  --no-plots         write the CSV and JSON files only (no Python needed)\n"
+    "  --no-plots         write the CSV and JSON files only (no Python needed; no PNGs, no errors.md)\n"
     "  --quiet            no progress\n"
     "  --help             this text\n"
     "\n"
@@ -180,7 +182,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
                                          {"MODE_PREFIX", bench::modePrefixSyntax()},
                                          {"ERROR_IMAGES", errorImages},
                                          {"REGIONS", bench::kErrorRegions.list(", ")},
-                                         {"REFERENCE_OPTIONS", kReferenceOptionsHelp}}) {
+                                         {"REFERENCE_OPTIONS", referenceOptionsHelp()}}) {
             help.replace(help.find(word), word.size(), text);
         }
         std::fputs(help.c_str(), stdout);

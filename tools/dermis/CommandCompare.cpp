@@ -87,7 +87,7 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     if (args->flags.count("help")) {
         std::string help = kHelp;
         const std::string word = "REFERENCE_OPTIONS";
-        help.replace(help.find(word), word.size(), kReferenceOptionsHelp);
+        help.replace(help.find(word), word.size(), referenceOptionsHelp());
         std::fputs(help.c_str(), stdout);
         return 0;
     }

@@ -28,18 +28,21 @@ std::string readIdentity(const std::filesystem::path& path) {
 reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) {
     reference::ReferenceOptions options;
     options.quadrature.density = settings.density;
-    if (settings.samplesPerPixel > 0) options.samplesPerPixel = settings.samplesPerPixel;
+    options.samplesPerPixel = settings.samplesPerPixel;
     options.showProgress = !log::quiet();
     return options;
 }
 
 }  // namespace
 
-const char* const kReferenceOptionsHelp =
-    "  --density N        the references' quadrature density when they are computed (default 8)\n"
-    "  --spp N            the references' samples per pixel, a square (default: dermis reference's)\n"
-    "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
-    "                     (default 4096)\n";
+std::string referenceOptionsHelp() {
+    return "  --density N        the references' quadrature density when they are computed (default 8)\n"
+           "  --spp N            the references' samples per pixel, a square (default " +
+           std::to_string(reference::kDefaultSamplesPerPixel) +
+           ")\n"
+           "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
+           "                     (default 4096)\n";
+}
 
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
     ReferenceSettings settings;

@@ -16,6 +16,7 @@
 
 #include "core/Image.h"
 #include "core/Result.h"
+#include "reference/ReferenceRenderer.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -28,7 +29,7 @@ struct ReferenceSettings {
     int width = 0;
     int height = 0;
     float density = 8.0f;            // quadrature samples per s^2 (dermis reference --density)
-    int samplesPerPixel = 0;         // 0: the reference's default
+    int samplesPerPixel = reference::kDefaultSamplesPerPixel;
     int irradianceSizeTexels = 4096;  // the engine's UV irradiance for the matched reference
 };
 
@@ -59,7 +60,7 @@ private:
 // The options that set ReferenceSettings (all but the size), for the option
 // lists and help texts of the commands that take them.
 inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "irradiance-size"};
-extern const char* const kReferenceOptionsHelp;
+std::string referenceOptionsHelp();
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args);
 
 // The scene with the settings that only the real-time techniques read (mode,
