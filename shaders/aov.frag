@@ -9,7 +9,7 @@ layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uDiffuse;      // SSS-accumulated irradiance (diffuse AOV)
 layout(binding = 3) uniform sampler2D uSpecular;
 layout(binding = 4) uniform sampler2D uNormalMaterial;
-layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO, transmittance or a UV-space texture
+layout(binding = 5) uniform sampler2D uComponent;    // irradiance, AO, transmittance, a UV-space texture or the composite
 layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 
 in vec2 vUv;
@@ -49,6 +49,11 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(uDepth, pixel, 0).r;
     bool background = depth >= 1.0;
+    if (aov == DERMIS_AOV_RADIANCE) {
+        // The composite's frame, the background's radiance included.
+        oValue = vec4(component(pixel).rgb, background ? 0.0 : 1.0);
+        return;
+    }
     vec3 value = vec3(0.0);
     if (aov == DERMIS_AOV_DEPTH) {
         // Linear view depth in metres; the far plane for the background.

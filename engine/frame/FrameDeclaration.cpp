@@ -38,9 +38,10 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
             diffuse = chain.diffuse;
             if (gbuffer.hasLean()) lean = {chain.extras[0], chain.diffuse, lighting.visibility};
         }
-        if (aov == Aov::Final) {
+        if (aov == Aov::Final || aov == Aov::Radiance) {
             const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular, lean);
-            graph.markOutput(addTonemapPass(graph, frame, hdr, output));
+            graph.markOutput(aov == Aov::Final ? addTonemapPass(graph, frame, hdr, output)
+                                               : addAovPass(graph, frame, {gbuffer, {}, {}, hdr}, output));
             return;
         }
         if (aov == Aov::Specular) {

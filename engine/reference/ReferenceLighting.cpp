@@ -75,10 +75,10 @@ glm::vec3 coneDirection(const glm::vec3& axis, float sinRadius, const glm::vec2&
 
 ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders)
     : mOccluders(&occluders),
+      mDiscSamples(discSamples(kAreaLightSamples)),
       mAmbient(scene.settings.ambient),
       mEnergyConservation(scene.settings.energyConservation),
-      mEnergyTable(makeEnergyTable(kEnergyTableSize)),
-      mDiscSamples(discSamples(kAreaLightSamples)) {
+      mEnergyTable(makeEnergyTable(kEnergyTableSize)) {
     const size_t count = std::min<size_t>(scene.lights.size(), DERMIS_MAX_LIGHTS);
     int shadowedCount = 0;
     for (size_t i = 0; i < count; ++i) {

@@ -24,11 +24,14 @@ enum class Aov {
     // screen (passes/TextureSpacePasses.h, addTsAovPasses), in either mode.
     Stretch = DERMIS_AOV_STRETCH,
     IrradianceTexture = DERMIS_AOV_IRRADIANCE_TEXTURE,
+    // The final frame before exposure and tone mapping: what `--aov final`
+    // writes to an EXR.
+    Radiance = DERMIS_AOV_RADIANCE,
 };
 
 // Names and one-line descriptions (what the AOV holds and in which unit) for
 // the command line, help texts and the viewer.
-inline constexpr EnumTable<Aov, 13> kAovs{
+inline constexpr EnumTable<Aov, 14> kAovs{
     "AOV",
     {{{Aov::Final, "final", "the tone-mapped frame (sRGB)"},
       {Aov::Albedo, "albedo", "surface albedo"},
@@ -42,7 +45,8 @@ inline constexpr EnumTable<Aov, 13> kAovs{
       {Aov::Thickness, "thickness", "mm, through the first back light"},
       {Aov::Object, "object", "character index + 1, 0 for the background"},
       {Aov::Stretch, "stretch", "stretch map: mm per UV unit, u red, v green"},
-      {Aov::IrradianceTexture, "irradiance-texture", "irradiance texture, before the blurs"}}}};
+      {Aov::IrradianceTexture, "irradiance-texture", "irradiance texture, before the blurs"},
+      {Aov::Radiance, "radiance", "the final frame before exposure and tone mapping (linear)"}}}};
 static_assert(kAovs.isOneToOne(), "every AOV and every name appears once");
 
 // The AOV shows a UV layout, not the frame: the unit UV square, as large as

@@ -89,7 +89,7 @@ Status planKernel(int taps, const char* setting, BlurKernel& kernel) {
 }  // namespace
 
 bool aovReadsSss(Aov aov, bool lean) {
-    return aov == Aov::Final || aov == Aov::Diffuse || (aov == Aov::Specular && lean);
+    return aov == Aov::Final || aov == Aov::Radiance || aov == Aov::Diffuse || (aov == Aov::Specular && lean);
 }
 
 Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const FrameRequest& request,

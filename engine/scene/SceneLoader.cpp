@@ -1,10 +1,14 @@
 #include "scene/SceneLoader.h"
 
+#include "procedural/Procedural.h"
+#include "sss/DiffusionProfile.h"
+
 #include "core/Limits.h"
 #include "scene/JsonReader.h"
 #include "scene/ScenePaths.h"
 #include "scene/SettingsFields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +119,15 @@ void readTransform(JsonObject& parent, Transform& transform) {
     object.number("scale", transform.scale, Range::above(0.0));
 }
 
+// A name from a set the engine defines (diffusion profiles, procedural
+// meshes): checked here, so that the error names the file and the key.
+void checkName(JsonObject& object, const char* key, const std::string& name, const std::vector<std::string>& known,
+               const std::string& noun) {
+    if (!object.has(key) || std::find(known.begin(), known.end(), name) != known.end()) return;
+    object.context().check(false, object.pointer(key),
+                           "unknown " + noun + " " + quoteForMessage(name) + " (known: " + listForMessage(known, "or") + ")");
+}
+
 void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh) {
     const json* value = parent.member("mesh");
     JsonContext& context = parent.context();
@@ -138,6 +151,7 @@ void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh
         return;
     }
     object.string("procedural", mesh.procedural, false);
+    if (procedural) checkName(object, "procedural", mesh.procedural, proceduralModelNames(), "procedural mesh");
     object.string("gltf", mesh.gltfPath, false);
     mesh.gltfPath = resolveScenePath(sceneFile, mesh.gltfPath);
 }
@@ -159,6 +173,9 @@ void readMaterial(JsonObject& parent, const std::string& sceneFile, Material& ma
     object.number("roughness", material.roughness, Range::leftOpen(0.0, 1.0));
     object.number("rho_s", material.rhoS, Range::closed(0.0, 1.0));
     object.string("profile", material.profile, false);
+    std::vector<std::string> profiles = profileNames();
+    profiles.emplace_back(kOpaqueProfile);
+    checkName(object, "profile", material.profile, profiles, "diffusion profile");
 }
 
 // An integer that must also satisfy `valid` (odd, or 0 as "unset"): one message

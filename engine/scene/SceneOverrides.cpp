@@ -4,6 +4,9 @@
 #include "scene/SceneLoader.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <charconv>
 #include <limits>
 
@@ -25,6 +28,18 @@ size_t parseIndex(const std::string& key) {
     size_t index = 0;
     const auto result = std::from_chars(key.data(), key.data() + key.size(), index);
     return result.ec == std::errc() ? index : std::numeric_limits<size_t>::max();
+}
+
+// "1e999", "-1e400": a number in JSON's grammar that no double holds (JSON
+// parsing refuses it, and it must not fall back to being a string).
+bool looksLikeOutOfRangeNumber(const std::string& text) {
+    if (text.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    const double parsed = std::strtod(text.c_str(), &end);
+    const bool whole = end == text.c_str() + text.size();
+    const bool numeric = text.find_first_not_of("+-0123456789.eE") == std::string::npos;
+    return whole && numeric && (errno == ERANGE || !std::isfinite(parsed)) && std::fabs(parsed) > 1.0;
 }
 
 std::string elementCount(size_t n) {
@@ -113,6 +128,9 @@ Result<SceneOverride> parseSceneOverride(const std::string& text) {
     }
     const std::string valueText = text.substr(equals + 1);
     Result<json> value = parseJsonText(valueText, "");
+    if (!value.ok() && looksLikeOutOfRangeNumber(valueText)) {
+        return makeError(change.where(), valueText + " is a number out of range (finite values up to about 1.8e308)");
+    }
     change.value = value.ok() ? std::move(*value) : json(valueText);
     return change;
 }

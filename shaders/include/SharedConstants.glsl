@@ -62,6 +62,7 @@
 #define DERMIS_AOV_OBJECT 10               // the object id (scene character index + 1; 0 for the background)
 #define DERMIS_AOV_STRETCH 11              // the UV-space AOVs: a texture-space texture of one character,
 #define DERMIS_AOV_IRRADIANCE_TEXTURE 12   // its UV square letterboxed in the frame
+#define DERMIS_AOV_RADIANCE 13             // the composited frame before exposure and tone mapping
 
 // Texture units of the tables every shading pass may read, bound once per frame.
 #define DERMIS_UNIT_BECKMANN 14

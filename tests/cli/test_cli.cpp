@@ -3,9 +3,12 @@
 // crash and no partial output.
 #include "TestSupport.h"
 
+#include "core/Image.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 using dermis::test::ProcessResult;
@@ -75,6 +78,30 @@ TEST(Cli, ExrAovIsWritten) {
                                        dir.file("d.exr") + " --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir.file("d.exr")));
+}
+
+// The final image as an EXR is linear float: the frame before exposure and
+// tone mapping. On the background it is the scene's background radiance
+// (content/scenes/default.json: 0.02, 0.025, 0.03), which a tone-mapped 8-bit
+// value is not (tone mapping 0.02 gives about 0.15, and a multiple of 1/255 is
+// 0.0196 or 0.0235 at best; the half-float target holds 0.02 to 1e-5); lit skin
+// goes above 1; and the exposure does not change it.
+TEST(Cli, FinalExrIsLinearRadianceBeforeExposure) {
+    TempDir dir;
+    const std::string common = " render " + defaultScene() + " --size 64x36 --frames 1 --quiet --out ";
+    ASSERT_EQ(runProcess(kDermis + common + dir.file("f.exr")).exitCode, 0);
+    ASSERT_EQ(runProcess(kDermis + common + dir.file("bright.exr") + " --set exposure=4").exitCode, 0);
+    auto image = dermis::loadImage(dir.file("f.exr"), dermis::ColourSpace::Linear);
+    auto bright = dermis::loadImage(dir.file("bright.exr"), dermis::ColourSpace::Linear);
+    ASSERT_TRUE(image.ok() && bright.ok());
+    const glm::vec4 corner = image->at(0, 0);
+    EXPECT_NEAR(corner.r, 0.02f, 1e-4f);
+    EXPECT_NEAR(corner.g, 0.025f, 1e-4f);
+    EXPECT_NEAR(corner.b, 0.03f, 1e-4f);
+    float largest = 0.0f;
+    for (const glm::vec4& texel : image->texels) largest = std::max(largest, texel.r);
+    EXPECT_GT(largest, 1.0f);
+    EXPECT_EQ(image->texels, bright->texels);
 }
 
 TEST(Cli, OsMesaBackendRenders) {

@@ -386,6 +386,18 @@ TEST(SceneLoader, IntegralSettingsAcceptIntegralNumbersOnly) {
               "/characters/0/ssao/samples: expected an integer, got 16.5");
 }
 
+TEST(SceneLoader, ProfileAndProceduralMeshNamesAreCheckedWithTheirKey) {
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": "custom"})")),
+              "/characters/0/material/profile: unknown diffusion profile \"custom\" (known: skin, marble or none)");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "cube"})")),
+              "/characters/0/mesh/procedural: unknown procedural mesh \"cube\" (known: head, plane, sphere or wedge)");
+    // Every name the engine knows loads, "none" (opaque) included.
+    for (const std::string profile : {"skin", "marble", "none"}) {
+        const std::string members = "\"mesh\": {\"procedural\": \"sphere\"}, \"material\": {\"profile\": \"" + profile + "\"}";
+        EXPECT_TRUE(parseScene(withCharacter(members), "x.json").ok()) << profile;
+    }
+}
+
 TEST(SceneLoader, SssTapsAreOddAndWithinRange) {
     for (const int taps : {3, 5, 9, 31, 33}) {
         const Result<Scene> scene =

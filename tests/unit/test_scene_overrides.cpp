@@ -155,6 +155,14 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
     EXPECT_ERROR(errorOf({"sss={\"taps\": 2}"}), "--set sss={\"taps\": 2}",
                  "/settings/sss/taps: must be an odd number of taps in [3, 33], got 2");
     EXPECT_ERROR(errorOf({"characters.0={}"}), "--set characters.0={}", "/characters/0: missing required key \"mesh\"");
+    // Names the engine defines are checked while loading, so the error names the override and the key.
+    EXPECT_ERROR(errorOf({"characters.0.material.profile=marble2"}), "--set characters.0.material.profile=marble2",
+                 "/characters/0/material/profile: unknown diffusion profile \"marble2\" (known: skin, marble or none)");
+    // A number no double holds is out of range, not a string.
+    EXPECT_ERROR(errorOf({"exposure=1e999"}), "--set exposure=1e999",
+                 "1e999 is a number out of range (finite values up to about 1.8e308)");
+    EXPECT_ERROR(errorOf({"exposure=-1e400"}), "--set exposure=-1e400",
+                 "-1e400 is a number out of range (finite values up to about 1.8e308)");
 }
 
 TEST(SceneOverrides, UnknownKeysNameTheOverride) {

@@ -26,7 +26,8 @@ const char* const kHelp =
     "  --size WxH          frame size in pixels (default 640x360)\n"
     "  --frames N          frames to render; timings are medians over them (default 10)\n"
     "  --out FILE          output image: .png is tone-mapped 8-bit sRGB, .exr is linear\n"
-    "                      float (default out/<scene name>.png)\n"
+    "                      32-bit float; for the final image an .exr holds the frame before\n"
+    "                      exposure and tone mapping (--aov radiance) (default out/<scene name>.png)\n"
     "  --aov NAME          write one linear component before tone mapping instead of the\n"
     "                      final image (default final):\n"
     "%s"
@@ -103,7 +104,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
     if (!session.ok()) return failure(session.error());
     Renderer& renderer = *session->renderer;
 
-    const FrameRequest request{size->first, size->second, *aov};
+    // An EXR of the final image is linear: the frame before exposure and tone mapping.
+    const Aov frameAov = (*aov == Aov::Final && extension == ".exr") ? Aov::Radiance : *aov;
+    const FrameRequest request{size->first, size->second, frameAov};
     log::info("rendering " + scenePath + " at " + std::to_string(request.width) + "x" + std::to_string(request.height) +
               ", " + std::to_string(*frames) + " frames on " + session->context->renderer());
     const auto start = std::chrono::steady_clock::now();
