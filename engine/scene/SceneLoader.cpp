@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -56,8 +57,8 @@ void readCamera(JsonObject& root, Camera& camera) {
     object.vec3("position_m", camera.positionM);
     object.vec3("target_m", camera.targetM);
     object.vec3("up", camera.up);
-    object.number("vertical_fov_deg", camera.verticalFovDeg, Range::open(0.0, 180.0));
-    object.number("near_m", camera.nearM, Range::above(0.0));
+    object.number("vertical_fov_deg", camera.verticalFovDeg, Range::closed(kMinVerticalFovDeg, kMaxVerticalFovDeg));
+    object.number("near_m", camera.nearM, Range::atLeast(kMinNearM));
     object.number("far_m", camera.farM, Range::above(0.0));
 
     JsonContext& context = root.context();
@@ -67,6 +68,11 @@ void readCamera(JsonObject& root, Camera& camera) {
     context.check(camera.nearM < camera.farM, object.pointer("near_m"),
                   "must be less than far_m (" + formatNumberForMessage(camera.farM) + "), got " +
                       formatNumberForMessage(camera.nearM));
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.3g", double(camera.farM) / double(camera.nearM));
+    context.check(double(camera.farM) <= kMaxFarOverNear * double(camera.nearM), object.pointer("far_m"),
+                  "must be at most " + formatNumberForMessage(kMaxFarOverNear) + " x near_m (depth precision), got " +
+                      ratio + " x");
     context.check(camera.positionM != camera.targetM, object.pointer("target_m"),
                   "must differ from position_m (the camera needs a view direction)");
     if (!context.check(length(camera.up) > 0.0, object.pointer("up"), "must not be the zero vector") ||

@@ -81,7 +81,7 @@ void visitTextureSpaceFields(S& s, V& v) {
 
 template <typename S, typename V>
 void visitSettingsFields(S& s, V& v) {
-    v.number("exposure", s.exposure, Range::above(0.0));
+    v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
     v.vec3("ambient", s.ambient, Range::atLeast(0.0));
     v.boolean("energy_conservation", s.energyConservation);
     v.choice("mode", kSssModes, s.mode);

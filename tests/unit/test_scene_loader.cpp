@@ -508,7 +508,7 @@ TEST(SceneWriter, RoundTripKeepsAwkwardFloatsAndDefaults) {
     scene.path = "deep/dir/awkward.json";
     scene.camera.positionM = glm::vec3(1.0f / 3.0f, 1e-7f, -123456.789f);
     scene.camera.nearM = 0.1f;
-    scene.camera.farM = 3.4e38f;
+    scene.camera.farM = 9999.99f;  // as far as 1e5 x near_m allows
     Light light;
     light.type = LightType::Spot;
     light.direction = glm::normalize(glm::vec3(0.3f, -0.7f, 0.2f));
@@ -684,9 +684,16 @@ TEST(SceneLoader, OutOfRangeValuesAreRejected) {
               "/camera/near_m: must be less than far_m (2), got 2");
     EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0.5, "far_m": 0.1}})"),
               "/camera/near_m: must be less than far_m (0.1), got 0.5");
-    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0}})"), "/camera/near_m: must be > 0, got 0");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0}})"), "/camera/near_m: must be >= 1e-04, got 0");
     EXPECT_EQ(errorOf(R"({"camera": {"vertical_fov_deg": 180}})"),
-              "/camera/vertical_fov_deg: must be in (0, 180), got 180");
+              "/camera/vertical_fov_deg: must be in [1, 179], got 180");
+    // The hostile values that rendered wrong images with exit 0 (core/Limits.h).
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-5}})"), "/camera/near_m: must be >= 1e-04, got 1e-05");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 0.01, "far_m": 2e38}})"),
+              "/camera/far_m: must be at most 1e+05 x near_m (depth precision), got 2e+40 x");
+    EXPECT_EQ(errorOf(R"({"camera": {"vertical_fov_deg": 1e-10}})"),
+              "/camera/vertical_fov_deg: must be in [1, 179], got 1e-10");
+    EXPECT_EQ(errorOf(R"({"settings": {"exposure": 1e20}})"), "/settings/exposure: must be in (0, 10000], got 1e+20");
     EXPECT_EQ(errorOf(R"({"camera": {"position_m": [1, 2, 3], "target_m": [1, 2, 3]}})")
                   .rfind("/camera/target_m: must differ from position_m", 0),
               0u);
@@ -716,10 +723,10 @@ TEST(SceneLoader, OutOfRangeValuesAreRejected) {
               "/characters/0/material/albedo/1: must be in [0, 1], got 1.2");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": ""})")),
               "/characters/0/material/profile: must not be empty");
-    EXPECT_EQ(errorOf(R"({"settings": {"exposure": 0}})"), "/settings/exposure: must be > 0, got 0");
+    EXPECT_EQ(errorOf(R"({"settings": {"exposure": 0}})"), "/settings/exposure: must be in (0, 10000], got 0");
     EXPECT_EQ(errorOf(R"({"settings": {"ambient": [0, -1, 0]}})"), "/settings/ambient/1: must be >= 0, got -1");
     // A positive value that rounds to 0 as a float is as bad as 0.
-    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-60}})"), "/camera/near_m: must be > 0, got 1e-60");
+    EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-60}})"), "/camera/near_m: must be >= 1e-04, got 1e-60");
 }
 
 TEST(SceneLoader, OutOfRangeSettingsAreRejected) {
