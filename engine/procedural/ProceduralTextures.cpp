@@ -172,47 +172,47 @@ NoiseSample skinRelief(const vec3& p, bool ear, float footprintM) {
 
 }  // namespace
 
-Image makeHeadAlbedoMap(const HeadMesh& head, int size) {
+namespace {
+
+// A map over the head's UV layout: texel(surface texel) for every covered
+// texel, then the gutters filled (fillGutters) with `gutter`.
+template <class TexelValue>
+Image makeHeadMap(const HeadMesh& head, int size, ColourSpace colourSpace, const glm::vec4& gutter, bool gutterIsNormal,
+                  TexelValue&& texel) {
     const SurfaceMap surface = rasteriseSurface(head.mesh, partOfTriangle(head), size, size);
     Image image;
     image.width = size;
     image.height = size;
-    image.colourSpace = ColourSpace::Srgb;
+    image.colourSpace = colourSpace;
     image.texels.resize(surface.texels.size());
     forEachRow(size, [&](int y) {
         for (int x = 0; x < size; ++x) {
             const size_t i = static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x);
             const SurfaceTexel& s = surface.texels[i];
-            if (!s.covered) continue;
-            image.texels[i] = encodeSrgb(skinColour(s.position, s.part == kEarPart, s.footprintM));
+            if (s.covered) image.texels[i] = texel(s);
         }
     });
-    fillGutters(image, surface, kGutterRingsPer1024 * size / 1024, encodeSrgb(kBaseSkin), false);
+    fillGutters(image, surface, kGutterRingsPer1024 * size / 1024, gutter, gutterIsNormal);
     return image;
 }
 
-Image makeHeadNormalMap(const HeadMesh& head, int size) {
-    const SurfaceMap surface = rasteriseSurface(head.mesh, partOfTriangle(head), size, size);
-    Image image;
-    image.width = size;
-    image.height = size;
-    image.colourSpace = ColourSpace::Linear;
-    image.texels.resize(surface.texels.size());
-    forEachRow(size, [&](int y) {
-        for (int x = 0; x < size; ++x) {
-            const size_t i = static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x);
-            const SurfaceTexel& s = surface.texels[i];
-            if (!s.covered) continue;
-            const glm::vec3 gradient = skinRelief(s.position, s.part == kEarPart, s.footprintM).gradient;
-            // The surface z = h tilts its normal by -grad h within the tangent plane.
-            const vec3 slope = gradient - s.normal * glm::dot(s.normal, gradient);
-            const vec3 tilted(-glm::dot(slope, s.tangent), -glm::dot(slope, s.bitangent), 1.0f);
-            const vec3 n = glm::normalize(tilted);
-            image.texels[i] = glm::vec4(n * 0.5f + 0.5f, 1.0f);
-        }
+}  // namespace
+
+Image makeHeadAlbedoMap(const HeadMesh& head, int size) {
+    return makeHeadMap(head, size, ColourSpace::Srgb, encodeSrgb(kBaseSkin), false, [](const SurfaceTexel& s) {
+        return encodeSrgb(skinColour(s.position, s.part == kEarPart, s.footprintM));
     });
-    fillGutters(image, surface, kGutterRingsPer1024 * size / 1024, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f), true);
-    return image;
+}
+
+Image makeHeadNormalMap(const HeadMesh& head, int size) {
+    return makeHeadMap(head, size, ColourSpace::Linear, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f), true, [](const SurfaceTexel& s) {
+        const glm::vec3 gradient = skinRelief(s.position, s.part == kEarPart, s.footprintM).gradient;
+        // The surface z = h tilts its normal by -grad h within the tangent plane.
+        const vec3 slope = gradient - s.normal * glm::dot(s.normal, gradient);
+        const vec3 tilted(-glm::dot(slope, s.tangent), -glm::dot(slope, s.bitangent), 1.0f);
+        const vec3 n = glm::normalize(tilted);
+        return glm::vec4(n * 0.5f + 0.5f, 1.0f);
+    });
 }
 
 }  // namespace dermis

@@ -111,17 +111,13 @@ std::string identityOf(const Scene& scene, const ReferenceSettings& settings, co
     return text.str();
 }
 
-Result<reference::ReferenceRenderer> loadRenderer(const Scene& scene, const reference::ReferenceOptions& options) {
-    return reference::ReferenceRenderer::load(scene, options);
-}
-
 }  // namespace
 
 Result<Image> ReferenceImages::full(const Scene& scene) {
     return cached("reference", identityOf(scene, mSettings, "full"), [&]() -> Result<Image> {
         log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
                   std::to_string(mSettings.height));
-        auto renderer = loadRenderer(scene, referenceOptions(mSettings));
+        auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(mSettings));
         if (!renderer.ok()) return renderer.error();
         return renderer->renderDiffuse(mSettings.width, mSettings.height);
     });
@@ -132,7 +128,7 @@ Result<Image> ReferenceImages::sssOff(const Scene& scene) {
     off.settings.sss.enabled = false;
     return cached("reference_sss_off", identityOf(off, mSettings, "sss off"), [&]() -> Result<Image> {
         log::info("computing the CPU reference with SSS off");
-        auto renderer = loadRenderer(off, referenceOptions(mSettings));
+        auto renderer = reference::ReferenceRenderer::load(off, referenceOptions(mSettings));
         if (!renderer.ok()) return renderer.error();
         return renderer->renderDiffuse(mSettings.width, mSettings.height);
     });
@@ -140,7 +136,11 @@ Result<Image> ReferenceImages::sssOff(const Scene& scene) {
 
 Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
     return cached("thickness", identityOf(scene, mSettings, "thickness"), [&]() -> Result<Image> {
-        auto renderer = loadRenderer(scene, referenceOptions(mSettings));
+        // Thickness reads only the geometry: a renderer without SSS skips
+        // tessellating every character for the diffusion integral.
+        Scene geometryOnly = scene;
+        geometryOnly.settings.sss.enabled = false;
+        auto renderer = reference::ReferenceRenderer::load(geometryOnly, referenceOptions(mSettings));
         if (!renderer.ok()) return renderer.error();
         return renderer->renderThicknessMm(mSettings.width, mSettings.height);
     });
@@ -162,7 +162,7 @@ Result<Image> ReferenceImages::scatterChange(Session& session) {
         options.engineIrradiance = std::move(*irradiance);
         // The change is taken at pixel centres, where the engine shades.
         options.samplesPerPixel = 1;
-        auto renderer = loadRenderer(scene, options);
+        auto renderer = reference::ReferenceRenderer::load(scene, options);
         if (!renderer.ok()) return renderer.error();
         return renderer->renderScatterChange(mSettings.width, mSettings.height);
     });
