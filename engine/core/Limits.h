@@ -41,6 +41,20 @@ constexpr double kMaxVerticalFovDeg = 179.0;
 constexpr double kMaxExposure = 1e4;
 constexpr double kMaxLightRadiusM = 1.0;
 
+// Light values and sizes that stay inside float32 everywhere the renderer
+// sums them. A light's colour x intensity (per channel), the ambient and the
+// background: up to 64 lights, each times a Beckmann peak 1 / (pi m^2) of
+// 3e11 at m = 1e-6 (Kelemen & Szirmay-Kalos 2001), stay below float32's 3.4e38
+// with a factor 1e4 to spare. Measured: colour 3e38 x intensity 3e38
+// overflowed to Inf and turned the pixels lit only by ambient black.
+constexpr double kMaxLightRadiance = 1e20;
+// Metres per mesh unit, transform.scale x metres_per_unit: from a micrometre
+// to 1000 km, so that positions, their squares (distances, areas) and the
+// scattering widths in mesh units stay finite and normal in float32. Measured:
+// a product beyond float range rendered nothing.
+constexpr double kMinMetresPerMeshUnit = 1e-6;
+constexpr double kMaxMetresPerMeshUnit = 1e6;
+
 // Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
 constexpr int kMinTsSize = 64;
 constexpr int kMaxTsSize = 4096;

@@ -47,6 +47,14 @@ void choice(JsonObject& object, const char* key, const EnumTable<E, N>& table, E
     }
 }
 
+// A product or ratio of two float values, to 3 significant digits (the float rounding
+// of the factors is noise).
+std::string formatProductForMessage(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+}
+
 void readCamera(JsonObject& root, Camera& camera) {
     const json* value = root.member("camera");
     if (value == nullptr) {
@@ -68,11 +76,9 @@ void readCamera(JsonObject& root, Camera& camera) {
     context.check(camera.nearM < camera.farM, object.pointer("near_m"),
                   "must be less than far_m (" + formatNumberForMessage(camera.farM) + "), got " +
                       formatNumberForMessage(camera.nearM));
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.3g", double(camera.farM) / double(camera.nearM));
     context.check(double(camera.farM) <= kMaxFarOverNear * double(camera.nearM), object.pointer("far_m"),
                   "must be at most " + formatNumberForMessage(kMaxFarOverNear) + " x near_m (depth precision), got " +
-                      ratio + " x");
+                      formatProductForMessage(double(camera.farM) / double(camera.nearM)) + " x");
     context.check(camera.positionM != camera.targetM, object.pointer("target_m"),
                   "must differ from position_m (the camera needs a view direction)");
     if (!context.check(length(camera.up) > 0.0, object.pointer("up"), "must not be the zero vector") ||
@@ -103,6 +109,10 @@ void readLight(JsonContext& context, const json& value, const std::string& point
     if (context.failed()) {
         return;
     }
+    const double brightest = double(std::max({light.colour.r, light.colour.g, light.colour.b})) * light.intensity;
+    context.check(brightest <= double(float(kMaxLightRadiance)), object.pointer("intensity"),
+                  "colour x intensity must be at most " + formatNumberForMessage(kMaxLightRadiance) +
+                      " per channel (float range), got " + formatProductForMessage(brightest));
     context.check(light.spotInnerDeg <= light.spotOuterDeg, object.pointer("spot_inner_deg"),
                   "must be <= spot_outer_deg (" + formatNumberForMessage(light.spotOuterDeg) + "), got " +
                       formatNumberForMessage(light.spotInnerDeg));
@@ -220,6 +230,15 @@ void readCharacter(JsonContext& context, const json& value, const std::string& p
     readTransform(object, character.transform);
     readMesh(object, sceneFile, character.mesh);
     object.number("metres_per_unit", character.metresPerUnit, Range::above(0.0));
+    if (!context.failed()) {
+        const double metresPerMeshUnit = double(character.metresPerUnit) * double(character.transform.scale);
+        context.check(metresPerMeshUnit >= double(float(kMinMetresPerMeshUnit)) &&
+                          metresPerMeshUnit <= double(float(kMaxMetresPerMeshUnit)),
+                      object.pointer("metres_per_unit"),
+                      "transform.scale x metres_per_unit must be in [" + formatNumberForMessage(kMinMetresPerMeshUnit) +
+                          ", " + formatNumberForMessage(kMaxMetresPerMeshUnit) + "] metres per mesh unit, got " +
+                          formatProductForMessage(metresPerMeshUnit));
+    }
     readMaterial(object, sceneFile, character.material);
     readCharacterSsao(object, character.ssao);
 }
@@ -230,7 +249,7 @@ void readBackground(JsonObject& root, Background& background) {
         return;
     }
     JsonObject object(root.context(), *value, root.pointer("background"), {"colour"});
-    object.vec3("colour", background.colour, Range::atLeast(0.0));
+    object.vec3("colour", background.colour, Range::closed(0.0, kMaxLightRadiance));
 }
 
 // Reads the fields a visit lists (SettingsFields.h) from one JSON object.

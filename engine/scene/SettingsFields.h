@@ -82,7 +82,7 @@ void visitTextureSpaceFields(S& s, V& v) {
 template <typename S, typename V>
 void visitSettingsFields(S& s, V& v) {
     v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
-    v.vec3("ambient", s.ambient, Range::atLeast(0.0));
+    v.vec3("ambient", s.ambient, Range::closed(0.0, kMaxLightRadiance));
     v.boolean("energy_conservation", s.energyConservation);
     v.choice("mode", kSssModes, s.mode);
     v.group("shadow", s.shadow, [](auto& g, auto& w) { visitShadowFields(g, w); });

@@ -631,7 +631,7 @@ TEST(SceneLoader, VectorsAreThreeFiniteNumbers) {
               "/camera/up: expected an array of 3 numbers, got 4 elements");
     EXPECT_EQ(errorOf(R"({"camera": {"up": [0, "1", 0]}})"), "/camera/up/1: expected a number, got a string");
     EXPECT_EQ(errorOf(R"({"camera": {"up": 1}})"), "/camera/up: expected an array of 3 numbers, got a number");
-    EXPECT_EQ(errorOf(R"({"background": {"colour": [0, -0.5, 0]}})"), "/background/colour/1: must be >= 0, got -0.5");
+    EXPECT_EQ(errorOf(R"({"background": {"colour": [0, -0.5, 0]}})"), "/background/colour/1: must be in [0, 1e+20], got -0.5");
 }
 
 TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
@@ -724,7 +724,25 @@ TEST(SceneLoader, OutOfRangeValuesAreRejected) {
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": ""})")),
               "/characters/0/material/profile: must not be empty");
     EXPECT_EQ(errorOf(R"({"settings": {"exposure": 0}})"), "/settings/exposure: must be in (0, 10000], got 0");
-    EXPECT_EQ(errorOf(R"({"settings": {"ambient": [0, -1, 0]}})"), "/settings/ambient/1: must be >= 0, got -1");
+    EXPECT_EQ(errorOf(R"({"settings": {"ambient": [0, -1, 0]}})"), "/settings/ambient/1: must be in [0, 1e+20], got -1");
+    // The float32 limits of core/Limits.h: the values the review found to
+    // render black or blank are refused, the largest legal ones are read.
+    EXPECT_EQ(errorOf(R"({"settings": {"ambient": [0, 3e20, 0]}})"), "/settings/ambient/1: must be in [0, 1e+20], got 3e+20");
+    EXPECT_EQ(errorOf(R"({"background": {"colour": [2e20, 0, 0]}})"), "/background/colour/0: must be in [0, 1e+20], got 2e+20");
+    EXPECT_EQ(errorOf(withLight(R"("colour": [3e38, 1, 1], "intensity": 3e38)")),
+              "/lights/0/intensity: colour x intensity must be at most 1e+20 per channel (float range), got 9e+76");
+    EXPECT_EQ(errorOf(withLight(R"("colour": [0.5, 2, 1], "intensity": 1e20)")),
+              "/lights/0/intensity: colour x intensity must be at most 1e+20 per channel (float range), got 2e+20");
+    EXPECT_TRUE(parseScene(withLight(R"("colour": [0.5, 1, 1], "intensity": 1e20)"), "x.json").ok());
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "metres_per_unit": 1e20, "transform": {"scale": 1e20})")),
+              "/characters/0/metres_per_unit: transform.scale x metres_per_unit must be in [1e-06, 1e+06] metres per mesh "
+              "unit, got 1e+40");
+    EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "metres_per_unit": 1e-4, "transform": {"scale": 0.001})")),
+              "/characters/0/metres_per_unit: transform.scale x metres_per_unit must be in [1e-06, 1e+06] metres per mesh "
+              "unit, got 1e-07");
+    EXPECT_TRUE(parseScene(withCharacter(R"("mesh": {"procedural": "head"}, "metres_per_unit": 1e-3, "transform": {"scale": 1e-3})"),
+                           "x.json")
+                    .ok());
     // A positive value that rounds to 0 as a float is as bad as 0.
     EXPECT_EQ(errorOf(R"({"camera": {"near_m": 1e-60}})"), "/camera/near_m: must be >= 1e-04, got 1e-60");
 }
