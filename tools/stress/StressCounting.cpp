@@ -129,7 +129,21 @@ std::string CountingTotals::line() const {
                   static_cast<unsigned long long>(mSanitised.negative), static_cast<unsigned long long>(texels),
                   mPerTarget.size(), static_cast<unsigned long long>(bad), static_cast<unsigned long long>(atHalfMax),
                   mLargestLit);
-    return text;
+    std::string line = text;
+    // The passes that replaced anything, with their non-zero counters.
+    std::string byPass;
+    for (const auto& [pass, counts] : mPerPass) {
+        if (counts.total() == 0) continue;
+        std::string kinds;
+        const std::pair<const char*, uint64_t> named[] = {
+            {"nan", counts.nan}, {"inf", counts.inf}, {"overflow", counts.overflow}, {"negative", counts.negative}};
+        for (const auto& [name, n] : named) {
+            if (n > 0) kinds += (kinds.empty() ? "" : " ") + std::string(name) + " " + std::to_string(n);
+        }
+        byPass += (byPass.empty() ? "" : ", ") + pass + " (" + kinds + ")";
+    }
+    if (!byPass.empty()) line += "; by pass: " + byPass;
+    return line;
 }
 
 }  // namespace dermis::stress
