@@ -38,7 +38,7 @@ bool uvLayoutTexel(ivec2 pixel, out vec4 texel) {
     return true;
 }
 
-void main() {
+void shade() {
     int aov = int(uFrame.shading.w);
     if (aov == DERMIS_AOV_STRETCH || aov == DERMIS_AOV_IRRADIANCE_TEXTURE) {
         vec4 texel;
@@ -69,4 +69,10 @@ void main() {
         else value = component(pixel).rgb;  // irradiance, transmittance, thickness
     }
     oValue = vec4(value, background ? 0.0 : 1.0);
+}
+
+// The pass's output goes through the planted NaN of docs/stress.md.
+void main() {
+    shade();
+    oValue = debugPlant(oValue);
 }

@@ -81,7 +81,7 @@ void main() {
     }
 #endif
 
-    oAlbedo = vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0);
+    oAlbedo = debugPlant(vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0));
     oNormalMaterial = vec4(encodeNormal(N), roughness, uObject.material.x);
     int objectId = int(uObject.material.y + 0.5);
     int slot = int(uCharacters.characters[objectId].params.x + 0.5);

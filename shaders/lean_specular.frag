@@ -16,7 +16,7 @@ layout(binding = 6) uniform sampler2D uSpecular;     // the lighting pass's KS s
 in vec2 vUv;
 layout(location = 0) out vec4 oSpecular;
 
-void main() {
+void shade() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(uDepth, pixel, 0).r;
     if (depth >= 1.0) {
@@ -27,4 +27,10 @@ void main() {
                                        texelFetch(uAccumulated, pixel, 0).a, texelFetch(uNormalMaterial, pixel, 0).w,
                                        uLeanMoments, uVisibility),
                      1.0);
+}
+
+// The pass's output goes through the planted NaN of docs/stress.md.
+void main() {
+    shade();
+    oSpecular = debugPlant(oSpecular);
 }

@@ -11,5 +11,5 @@ layout(location = 0) out float oDepthM;
 
 void main() {
     GpuLight light = uLights.lights[int(uObject.mapping.y)];
-    oDepthM = isCubeShadow(light) ? lightLinearDepth(light, vWorldPositionM) : vLightDepthM;
+    oDepthM = debugPlant(isCubeShadow(light) ? lightLinearDepth(light, vWorldPositionM) : vLightDepthM);
 }

@@ -164,7 +164,7 @@ float ambientOcclusion(ivec2 pixel) {
         occlusion += 1.0 - smoothstep(radiusM, fadeEndM, length(toOccluder));
     }
     float ao = 1.0 - strength * occlusion / float(samples);
-    return isnan(ao) ? 1.0 : clamp(ao, 0.0, 1.0);
+    return sanitiseRange(ao, 0.0, 1.0, 1.0);
 }
 
 void main() {

@@ -51,7 +51,7 @@ float blurredAo(ivec2 pixel) {
         }
     }
     float ao = sum / max(weightSum, kTiny);
-    return isnan(ao) ? 1.0 : clamp(ao, 0.0, 1.0);
+    return sanitiseRange(ao, 0.0, 1.0, 1.0);
 }
 
 void main() {

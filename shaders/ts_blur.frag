@@ -50,7 +50,7 @@ vec4 exactBlur(ivec2 texel, ivec2 step, float sigmaTexels, int radius, vec4 cent
     return weightSum > 0.0 ? sum / weightSum : centre;
 }
 
-void main() {
+void shade() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 centre = texelFetch(uInput, texel, 0);
     vec2 direction = uTs.blur.xy;
@@ -80,4 +80,10 @@ void main() {
         weightSum += weight;
     }
     oBlurred = weightSum > 0.0 ? sum / weightSum : centre;
+}
+
+// The pass's output goes through the planted NaN of docs/stress.md.
+void main() {
+    shade();
+    oBlurred = debugPlant(oBlurred);
 }

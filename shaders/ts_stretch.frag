@@ -12,5 +12,5 @@ layout(location = 0) out vec2 oStretchMm;
 
 void main() {
     vec2 stretchMm = vec2(length(vDPduM), length(vDPdvM)) * 1000.0;
-    oStretchMm = clamp(mix(stretchMm, vec2(0.0), isnan(stretchMm)), vec2(0.0), vec2(kHalfMax));
+    oStretchMm = sanitiseRange(stretchMm, 0.0, kHalfMax);
 }

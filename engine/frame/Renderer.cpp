@@ -39,6 +39,7 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     mPlan = std::move(*plan);
+    mBackend.sanitiseCounters().bind();  // the prepare step's shaders include Sanitise.glsl too
     if (const Status prepared = mResources->prepare(*mPlan, mGeometry); !prepared.ok()) return prepared;
     mOutputAov = request.aov;
     mLastRequest = request;
@@ -78,6 +79,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
         character.visible = mScene.settings.sss.enabled;
         character.size = sizeTexels;
     }
+    mBackend.sanitiseCounters().bind();
     if (const Status prepared = mResources->prepare(*plan, mGeometry); !prepared.ok()) return prepared.error();
 
     std::vector<Image> images;

@@ -45,6 +45,11 @@ public:
     GLuint outputTexture() const { return mResources->output(); }
     // Inspect every texture each pass writes (gl/NonFiniteCounter.h); slow.
     void setPassInspector(gl::PassInspector inspector) { mBackend.setInspector(std::move(inspector)); }
+    // Per-pass counts of sanitised values and the planted NaN of
+    // `dermis stress --plant-nan` (gl/SanitiseCounters.h; counting is slow).
+    gl::SanitiseCounters& sanitiseCounters() { return mBackend.sanitiseCounters(); }
+    // The passes the last frame ran, in order.
+    const std::vector<std::string>& framePasses() const { return mBackend.framePasses(); }
     // The texture-space irradiance texture (E x albedo^mix, shaders/ts_irradiance.frag)
     // of every character, in scene order, sizeTexels on a side, before
     // dilation and blurs; frame/IrradianceCapture.h gives the layout. Empty

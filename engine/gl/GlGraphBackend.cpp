@@ -18,9 +18,14 @@ void GlGraphBackend::beginPass(std::string_view passName) {
     const std::string name(passName);
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name.c_str());
     mProfiler.beginPass(name);
+    if (mFrameEnded) mFramePasses.clear();
+    mFrameEnded = false;
+    mFramePasses.push_back(name);
+    mSanitise.beginPass(passName);
 }
 
 void GlGraphBackend::endPass() {
+    mSanitise.endPass();
     mProfiler.endPass();
     glPopDebugGroup();
 }
@@ -31,6 +36,7 @@ void GlGraphBackend::passWrote(std::string_view passName, std::string_view textu
 }
 
 void GlGraphBackend::endFrame() {
+    mFrameEnded = true;
     for (GLuint texture : mPool.endFrame()) mFramebuffers.forget(texture);
 }
 

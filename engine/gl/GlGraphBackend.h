@@ -5,10 +5,13 @@
 
 #include "gl/FramebufferCache.h"
 #include "gl/GpuProfiler.h"
+#include "gl/SanitiseCounters.h"
 #include "gl/TexturePool.h"
 #include "graph/GraphBackend.h"
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace dermis::gl {
 
@@ -30,6 +33,9 @@ public:
 
     TexturePool& pool() { return mPool; }
     FramebufferCache& framebuffers() { return mFramebuffers; }
+    SanitiseCounters& sanitiseCounters() { return mSanitise; }
+    // The passes of the last executed frame, in order.
+    const std::vector<std::string>& framePasses() const { return mFramePasses; }
     void endFrame();  // recycles stale pool textures and their framebuffers
 
 private:
@@ -37,6 +43,9 @@ private:
     TexturePool mPool;
     FramebufferCache mFramebuffers;
     PassInspector mInspector;
+    SanitiseCounters mSanitise;
+    std::vector<std::string> mFramePasses;
+    bool mFrameEnded = true;
 };
 
 }  // namespace dermis::gl

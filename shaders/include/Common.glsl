@@ -4,10 +4,10 @@
 #define DERMIS_COMMON_GLSL
 
 #include "UniformBlocks.glsl"
+#include "Sanitise.glsl"
 
 const float kPi = 3.14159265358979;
 const float kTiny = 1e-8;
-const float kHalfMax = 65504.0;  // largest finite fp16
 
 // normalize() that returns `fallback` instead of NaN for a zero vector.
 vec3 safeNormalize(vec3 v, vec3 fallback) {
@@ -20,12 +20,6 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
 vec3 albedoPower(vec3 albedo, float exponent) {
     if (exponent <= 0.0) return vec3(1.0);
     return pow(max(albedo, vec3(0.0)), vec3(exponent));
-}
-
-// Keeps colours storable in fp16 targets and free of NaN/Inf.
-vec3 sanitizeColour(vec3 c) {
-    c = mix(c, vec3(0.0), isnan(c));
-    return clamp(c, vec3(0.0), vec3(kHalfMax));
 }
 
 // Octahedral unit-vector encoding (Cigolle et al. 2014): two components.

@@ -124,8 +124,8 @@ vec3 leanClampCovariance(vec3 S) {
 
 // A slope with NaN replaced by 0 and the magnitude kept below kLeanMaxSlope.
 vec2 leanSafeSlope(vec2 B) {
-    B = mix(B, vec2(0.0), isnan(B));
-    return clamp(B, vec2(-kLeanMaxSlope), vec2(kLeanMaxSlope));
+    return vec2(sanitiseValue(B.x, -kLeanMaxSlope, kLeanMaxSlope, 0.0),
+                sanitiseValue(B.y, -kLeanMaxSlope, kLeanMaxSlope, 0.0));
 }
 
 // Tangent-space moments (B, M = (xx, yy, xy)) plus the base slope variance,
@@ -208,7 +208,7 @@ float leanSpecular(LeanLobe lobe, vec3 L, float rhoS) {
     float base2 = base * base;
     float F = kSkinF0 + (1.0 - kSkinF0) * base2 * base2 * base;
     float value = rhoS * kPi * D * F / hLengthSquared * l.z;
-    return value >= 0.0 && value <= kHalfMax ? value : (value > kHalfMax ? kHalfMax : 0.0);
+    return sanitiseValue(value, 0.0, kHalfMax, 0.0);
 }
 
 // The same for one light: pixel-frame moments (B, M), unit view-space L and V.

@@ -64,6 +64,9 @@
 #define DERMIS_AOV_IRRADIANCE_TEXTURE 12   // its UV square letterboxed in the frame
 #define DERMIS_AOV_RADIANCE 13             // the composited frame before exposure and tone mapping
 
+// The shader storage binding of the sanitise counters (include/Sanitise.glsl).
+#define DERMIS_BINDING_SANITISE_COUNTERS 0
+
 // Texture units of the tables every shading pass may read, bound once per frame.
 #define DERMIS_UNIT_BECKMANN 14
 #define DERMIS_UNIT_ENERGY 15

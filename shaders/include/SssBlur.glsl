@@ -251,8 +251,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
 // Keeps a signed value (a LEAN moment) storable in fp16 and free of NaN, so
 // one bad texel cannot spread through the chain.
 vec4 sssSanitizeSigned(vec4 value) {
-    value = mix(value, vec4(0.0), isnan(value));
-    return clamp(value, vec4(-kHalfMax), vec4(kHalfMax));
+    return sanitiseRange(value, -kHalfMax, kHalfMax);
 }
 
 #endif

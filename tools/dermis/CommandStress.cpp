@@ -7,12 +7,13 @@
 #include "core/Log.h"
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
-#include "gl/NonFiniteCounter.h"
 #include "frame/Renderer.h"
 #include "stress/StressCases.h"
+#include "stress/StressCounting.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -27,19 +28,27 @@ const char* const kHelp =
     "Renders N random scenes with extreme settings (SSS widths and tap counts, near\n"
     "and far planes, a camera inside a character, degenerate and zero-area\n"
     "triangles, zero normals, NaN/Inf texels, light intensities past fp16, grazing\n"
-    "views, no lights and 64 lights) and reads back every float target every pass\n"
-    "writes, counting non-finite texels. Each case is a function of its seed.\n"
+    "views, no lights and 64 lights). Each case is a function of its seed.\n"
+    "Every pass counts the values its shaders' sanitisers replace (NaN, Inf,\n"
+    "clamped above or below the range), and every target it writes is read back:\n"
+    "float targets for NaN/Inf, the packed SSS chain half by half, the depth key's\n"
+    "slot, unorm targets in [0, 1]. A NaN or Inf made by a pass, or a bad texel,\n"
+    "fails the case, which names the first such pass; clamps are only counted.\n"
     "\n"
     "options:\n"
     "  --cases N       how many cases (default 200)\n"
     "  --seed S        the first case's seed; case i uses S + i (default 1)\n"
     "  --out FILE      the summary JSON (default out/stress.json)\n"
     "  --backend NAME  egl or osmesa (default: egl, falling back to osmesa)\n"
+    "  --plant-nan PASS  make the pass named PASS (e.g. lighting, \"shadow:light0(dir)\")\n"
+    "                output NaN in every case, to show that it is caught: each case\n"
+    "                whose PASS shades a pixel then fails and names PASS; a name no\n"
+    "                case's frame runs is a usage error that lists the passes run\n"
     "  --quiet         no progress\n"
     "  --help          this text\n"
     "\n"
-    "Exit status: 0 when no case produced a non-finite texel, 1 otherwise or on\n"
-    "error, 2 for bad usage. The summary lists every failing case with its seed;\n"
+    "Exit status: 0 when no case produced a NaN, an Inf or a bad texel, 1 otherwise\n"
+    "or on error, 2 for bad usage. The summary lists every failing case with its seed;\n"
     "a case that cannot be set up at all (e.g. a frame larger than the GL allows)\n"
     "is listed as an error and also fails the run.\n";
 
@@ -47,12 +56,13 @@ struct CaseResult {
     uint64_t seed = 0;
     std::string description;
     uint64_t nonFinite = 0;
-    double largest = 0.0;
     std::string error;
-    nlohmann::ordered_json badTargets = nlohmann::ordered_json::object();
+    nlohmann::ordered_json counts;  // a failing case's (stress/StressCounting.h)
+    std::vector<std::string> passes;
+    bool planted = false;
 };
 
-CaseResult runCase(const stress::StressCase& c) {
+CaseResult runCase(const stress::StressCase& c, const std::string& plantPass, stress::CountingTotals& totals) {
     CaseResult result;
     result.seed = c.seed;
     result.description = c.description;
@@ -61,25 +71,24 @@ CaseResult runCase(const stress::StressCase& c) {
         result.error = renderer.error().message();
         return result;
     }
-    gl::NonFiniteCounter counter;
-    (*renderer)->setPassInspector(counter.inspector());
+    const stress::CaseCounting counting(**renderer, plantPass);
     const Status status = (*renderer)->renderFrame({c.width, c.height, c.aov});
     if (!status.ok()) {
         result.error = status.error().message();
         return result;
     }
-    result.nonFinite = counter.totalNonFinite();
-    result.largest = counter.largest();
-    for (const auto& [target, stats] : counter.targets()) {
-        if (stats.nonFinite > 0) result.badTargets[target] = stats.nonFinite;
-    }
+    totals.add(counting);
+    result.nonFinite = counting.failures();
+    if (result.nonFinite > 0) result.counts = stress::failureJson(counting);
+    result.passes = (*renderer)->framePasses();
+    result.planted = counting.planted();
     return result;
 }
 
 }  // namespace
 
 int runStress(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -94,6 +103,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
     if (!backend.ok()) return usageError(backend.error());
     const std::string outPath = args->get("out", "out/stress.json");
     const bool quiet = args->flags.count("quiet") > 0;
+    const std::string plantPass = args->get("plant-nan", "");
 
     auto context = gl::createHeadlessContext({*backend, false});
     if (!context.ok()) return failure(context.error());
@@ -106,7 +116,9 @@ int runStress(const std::vector<std::string>& rawArgs) {
     const auto start = std::chrono::steady_clock::now();
     nlohmann::ordered_json failures = nlohmann::ordered_json::array();
     uint64_t totalNonFinite = 0;
-    double largest = 0.0;
+    stress::CountingTotals totals;
+    std::vector<std::string> passesSeen;  // for --plant-nan's usage error
+    bool planted = false;
     int failed = 0;
     {
         std::unique_ptr<log::Progress> progress;
@@ -117,16 +129,20 @@ int runStress(const std::vector<std::string>& rawArgs) {
         }
         for (int i = 0; i < *cases; ++i) {
             const stress::StressCase c = stress::makeStressCase(uint64_t(*seed) + uint64_t(i), assets.string());
-            const CaseResult r = runCase(c);
+            const CaseResult r = runCase(c, plantPass, totals);
             totalNonFinite += r.nonFinite;
-            largest = std::max(largest, r.largest);
+            planted = planted || r.planted;
+            for (const std::string& pass : r.passes) {
+                if (std::find(passesSeen.begin(), passesSeen.end(), pass) == passesSeen.end()) passesSeen.push_back(pass);
+            }
             if (r.nonFinite > 0 || !r.error.empty()) {
                 ++failed;
                 nlohmann::ordered_json f;
                 f["seed"] = r.seed;
                 f["description"] = r.description;
                 f["non_finite"] = r.nonFinite;
-                f["targets"] = r.badTargets;
+                f["pass"] = r.counts.is_object() ? r.counts.value("pass", "") : "";
+                f["counts"] = r.counts;
                 f["error"] = r.error;
                 failures.push_back(f);
             }
@@ -138,6 +154,12 @@ int runStress(const std::vector<std::string>& rawArgs) {
         }
     }
     log::setQuiet(quiet);
+    if (!plantPass.empty() && !planted) {
+        std::string names;
+        for (const std::string& pass : passesSeen) names += (names.empty() ? "" : ", ") + pass;
+        return usageError(makeError("--plant-nan", "no case's frame runs a pass named '" + plantPass +
+                                                       "'; the frames ran: " + names));
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     nlohmann::ordered_json summary;
@@ -145,16 +167,24 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["first_seed"] = *seed;
     summary["renderer"] = (*context)->renderer();
     summary["failed_cases"] = failed;
+    summary["plant_nan"] = plantPass;
     summary["non_finite_texels"] = totalNonFinite;
-    summary["largest_finite_value"] = largest;
+    summary["counting"] = totals.json();
     summary["seconds"] = seconds;
     summary["failures"] = failures;
 
     if (const Status written = writeTextFileAtomically(outPath, summary.dump(2) + "\n"); !written.ok())
         return failure(written.error());
 
-    std::printf("%d cases in %.1f s: %d failed, %llu non-finite texels, largest finite value %.3g (%s)\n", *cases,
-                seconds, failed, static_cast<unsigned long long>(totalNonFinite), largest, outPath.c_str());
+    std::string failedPasses;
+    for (const auto& f : failures) {
+        const std::string pass = f.value("pass", "");
+        if (!pass.empty() && failedPasses.find("'" + pass + "'") == std::string::npos)
+            failedPasses += (failedPasses.empty() ? " in " : ", ") + ("'" + pass + "'");
+    }
+    std::printf("%d cases in %.1f s: %d failed%s, %llu NaN/Inf/bad values; %s (%s)\n", *cases, seconds, failed,
+                failedPasses.c_str(), static_cast<unsigned long long>(totalNonFinite), totals.line().c_str(),
+                outPath.c_str());
     return failed == 0 ? 0 : 1;
 }
 
