@@ -9,6 +9,8 @@
 #include "gl/GlContext.h"
 #include "gl/NonFiniteCounter.h"
 #include "frame/Renderer.h"
+#include "stress/InvariantFrame.h"
+#include "stress/InvariantJson.h"
 #include "stress/StressCases.h"
 
 #include <nlohmann/json.hpp>
@@ -35,10 +37,16 @@ const char* const kHelp =
     "  --seed S        the first case's seed; case i uses S + i (default 1)\n"
     "  --out FILE      the summary JSON (default out/stress.json)\n"
     "  --backend NAME  egl or osmesa (default: egl, falling back to osmesa)\n"
+    "  --plant-violation NAME  plant a wrong image for one detector (docs/stress.md):\n"
+    "                  none|coverage|energy|black|ss-ts (default none)\n"
     "  --quiet         no progress\n"
     "  --help          this text\n"
     "\n"
-    "Exit status: 0 when no case produced a non-finite texel, 1 otherwise or on\n"
+    "Each case also runs the wrong-image detectors (coverage, energy, black,\n"
+    "ss-ts; docs/stress.md) and fails when one is violated.\n"
+    "\n"
+    "Exit status: 0 when no case produced a non-finite texel or violated a\n"
+    "detector, 1 otherwise or on\n"
     "error, 2 for bad usage. The summary lists every failing case with its seed;\n"
     "a case that cannot be set up at all (e.g. a frame larger than the GL allows)\n"
     "is listed as an error and also fails the run.\n";
@@ -50,9 +58,10 @@ struct CaseResult {
     double largest = 0.0;
     std::string error;
     nlohmann::ordered_json badTargets = nlohmann::ordered_json::object();
+    stress::InvariantReport invariants;
 };
 
-CaseResult runCase(const stress::StressCase& c) {
+CaseResult runCase(const stress::StressCase& c, stress::Plant plant) {
     CaseResult result;
     result.seed = c.seed;
     result.description = c.description;
@@ -73,13 +82,16 @@ CaseResult runCase(const stress::StressCase& c) {
     for (const auto& [target, stats] : counter.targets()) {
         if (stats.nonFinite > 0) result.badTargets[target] = stats.nonFinite;
     }
+    auto invariants = stress::checkCaseInvariants(**renderer, c, plant);
+    if (!invariants.ok()) result.error = invariants.error().message();
+    else result.invariants = *invariants;
     return result;
 }
 
 }  // namespace
 
 int runStress(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-violation"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -92,6 +104,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     if (!seed.ok()) return usageError(seed.error());
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
+    const auto plant = stress::kPlants.parse(args->get("plant-violation", "none"));
+    if (!plant) return usageError(makeError("--plant-violation", "expected " + stress::kPlants.list()));
     const std::string outPath = args->get("out", "out/stress.json");
     const bool quiet = args->flags.count("quiet") > 0;
 
@@ -108,6 +122,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
     uint64_t totalNonFinite = 0;
     double largest = 0.0;
     int failed = 0;
+    stress::InvariantReport invariants;
     {
         std::unique_ptr<log::Progress> progress;
         if (!quiet) {
@@ -117,10 +132,11 @@ int runStress(const std::vector<std::string>& rawArgs) {
         }
         for (int i = 0; i < *cases; ++i) {
             const stress::StressCase c = stress::makeStressCase(uint64_t(*seed) + uint64_t(i), assets.string());
-            const CaseResult r = runCase(c);
+            const CaseResult r = runCase(c, *plant);
+            invariants.add(r.invariants);
             totalNonFinite += r.nonFinite;
             largest = std::max(largest, r.largest);
-            if (r.nonFinite > 0 || !r.error.empty()) {
+            if (r.nonFinite > 0 || !r.error.empty() || r.invariants.anyViolated()) {
                 ++failed;
                 nlohmann::ordered_json f;
                 f["seed"] = r.seed;
@@ -128,6 +144,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
                 f["non_finite"] = r.nonFinite;
                 f["targets"] = r.badTargets;
                 f["error"] = r.error;
+                f["invariants"] = stress::violationsJson(r.invariants);
                 failures.push_back(f);
             }
             if (progress) {
@@ -147,14 +164,17 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["failed_cases"] = failed;
     summary["non_finite_texels"] = totalNonFinite;
     summary["largest_finite_value"] = largest;
+    summary["plant_violation"] = stress::kPlants.name(*plant);
+    summary["invariants"] = stress::countsJson(invariants);
     summary["seconds"] = seconds;
     summary["failures"] = failures;
 
     if (const Status written = writeTextFileAtomically(outPath, summary.dump(2) + "\n"); !written.ok())
         return failure(written.error());
 
-    std::printf("%d cases in %.1f s: %d failed, %llu non-finite texels, largest finite value %.3g (%s)\n", *cases,
-                seconds, failed, static_cast<unsigned long long>(totalNonFinite), largest, outPath.c_str());
+    std::printf("%d cases in %.1f s: %d failed, %llu non-finite texels, largest finite value %.3g; invariants %s (%s)\n",
+                *cases, seconds, failed, static_cast<unsigned long long>(totalNonFinite), largest,
+                stress::countsLine(invariants).c_str(), outPath.c_str());
     return failed == 0 ? 0 : 1;
 }
 
