@@ -126,9 +126,10 @@ void checkNotBlack(const Image& object, const Image& albedo, const Image& radian
 
 // 4: on pixels at least kSsTsInteriorPx from any other id (interior of the
 // character), max |ss - ts| over channels <= kSsTsBound x the largest interior
-// ts value. One check per case.
+// ts value. One check per case. Measured on seeds 10-120 (step 10) of the
+// smooth-lighting family: at most 0.0022; the bound is 4.5 times that.
 constexpr int kSsTsInteriorPx = 3;
-constexpr float kSsTsBound = 0.1f;
+constexpr float kSsTsBound = 0.01f;
 void checkScreenMatchesTexture(const Image& object, const Image& ssDiffuse, const Image& tsDiffuse,
                                InvariantTally& tally, float* relativeDifference = nullptr);
 
