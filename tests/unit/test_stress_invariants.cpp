@@ -139,7 +139,7 @@ TEST(StressInvariants, RaysNearAClipPlaneAreNotUsed) {
     std::vector<RaySample> rays = agreeingRays();
     for (RaySample& r : rays) {
         r.character = 1;
-        r.nearClipPlane = true;
+        r.ambiguous = true;
     }
     InvariantTally t;
     checkRaysMatchObject(twoCharacters(), rays, 2, t);

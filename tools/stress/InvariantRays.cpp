@@ -5,6 +5,7 @@
 #include "render/SceneGeometry.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +35,22 @@ constexpr float kShadowOffset = 1e-4f;
 float depthToleranceM(float z, float nearM, float farM) {
     const float step = z * z * (farM - nearM) / (farM * nearM * 16777216.0f);
     return 8.0f * step + 1e-5f * z;
+}
+
+// Whether the triangle's smallest altitude on screen (pixels) is below
+// `minPx`; false when a corner is behind the camera (it is clipped, not snapped).
+bool thinnerOnScreenThan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::mat4& clipFromWorld,
+                         int width, int height, float minPx) {
+    glm::vec2 p[3];
+    const glm::vec3 corners[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec4 clip = clipFromWorld * glm::vec4(corners[i], 1.0f);
+        if (!(clip.w > 0.0f)) return false;
+        p[i] = glm::vec2(clip.x / clip.w * 0.5f * float(width), clip.y / clip.w * 0.5f * float(height));
+    }
+    const float doubleArea = std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+    const float longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
+    return !(doubleArea >= minPx * longest);  // altitude = 2 area / longest edge
 }
 
 }  // namespace
@@ -119,6 +136,10 @@ bool SceneRays::lightReaches(const glm::vec3& pointM, const glm::vec3& geometric
 std::vector<RaySample> SceneRays::sample(int width, int height) const {
     const Camera& camera = mScene->camera;
     const reference::CameraRays cameraRays(camera, width, height);
+    // As the engine projects (glm::lookAt + glm::perspective, PixelSampling.h).
+    const glm::mat4 clipFromWorld =
+        glm::perspective(glm::radians(camera.verticalFovDeg), float(width) / float(height), camera.nearM, camera.farM) *
+        glm::lookAt(camera.positionM, camera.targetM, camera.up);
     const int stepX = (width + kMaxRayColumns - 1) / kMaxRayColumns;
     const int stepY = (height + kMaxRayRows - 1) / kMaxRayRows;
     // Hits this close to a clip plane may be kept or clipped by the engine.
@@ -145,12 +166,15 @@ std::vector<RaySample> SceneRays::sample(int width, int height) const {
             }
             if (s.character >= 0) {
                 s.depthM = nearest.t;
-                s.nearClipPlane = nearest.t < camera.nearM * (1.0f + shell) || nearest.t > camera.farM * (1.0f - shell);
+                s.ambiguous = nearest.t < camera.nearM * (1.0f + shell) || nearest.t > camera.farM * (1.0f - shell);
                 s.depthToleranceM = depthToleranceM(nearest.t, camera.nearM, camera.farM);
                 const CharacterMesh& m = mCharacters[size_t(s.character)];
+                const size_t t = nearest.triangle;
+                if (thinnerOnScreenThan(m.cornersM[3 * t], m.cornersM[3 * t + 1], m.cornersM[3 * t + 2], clipFromWorld,
+                                        width, height, kMinTrianglePx))
+                    s.ambiguous = true;
                 s.lit = ambientLights();
                 if (!s.lit && m.predictLights) {
-                    const size_t t = nearest.triangle;
                     const glm::vec3 p0 = m.cornersM[3 * t], p1 = m.cornersM[3 * t + 1], p2 = m.cornersM[3 * t + 2];
                     glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
                     glm::vec3 ns = (1.0f - nearest.u - nearest.v) * m.cornerNormals[3 * t] +

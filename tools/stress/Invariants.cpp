@@ -87,7 +87,7 @@ void checkRaysMatchObject(const Image& object, const std::vector<RaySample>& ray
         }
     }
     for (const RaySample& ray : rays) {
-        if (ray.nearClipPlane) continue;
+        if (ray.ambiguous) continue;
         ++tally.checked;
         if (ray.character >= 0) ++raysSeeing[size_t(ray.character)];
         const int engine = objectAt(object, ray.x, ray.y);
@@ -151,7 +151,7 @@ void checkNotBlack(const Image& object, const Image& albedo, const Image& radian
     std::vector<int> litRays(size_t(characters), 0);
     std::vector<float> brightest(size_t(characters), 0.0f);
     for (const RaySample& ray : rays) {
-        if (!ray.lit || ray.nearClipPlane || ray.character < 0 || ray.character >= characters) continue;
+        if (!ray.lit || ray.ambiguous || ray.character < 0 || ray.character >= characters) continue;
         if (objectAt(object, ray.x, ray.y) != ray.character) continue;
         if (!(maxChannel(albedo.at(ray.x, ray.y)) > 0.0f)) continue;
         ++litRays[size_t(ray.character)];

@@ -62,6 +62,11 @@ struct InvariantReport {
     void add(const InvariantReport& other);
 };
 
+// GL guarantees at least 4 bits of sub-pixel precision (llvmpipe has 8): a
+// triangle whose smallest projected altitude is under one 1/16-pixel step
+// may vanish.
+constexpr float kMinTrianglePx = 1.0f / 16.0f;
+
 // One CPU ray through a pixel centre (stress/InvariantRays.h).
 struct RaySample {
     int x = 0;
@@ -72,9 +77,11 @@ struct RaySample {
     std::vector<float> characterDepthM;
     // How far apart two depths may be and still tie in the depth buffer here.
     float depthToleranceM = 0.0f;
-    // A hit within the depth buffer's precision of the near or far plane: the
-    // engine may keep or clip it, so the ray is not used.
-    bool nearClipPlane = false;
+    // The ray is not used: its hit lies within the depth buffer's precision
+    // of the near or far plane (the engine may keep or clip it), or on a
+    // triangle thinner on screen than kMinTrianglePx, which the rasteriser's
+    // snapping of vertices to its sub-pixel grid may collapse to nothing.
+    bool ambiguous = false;
     // Predicted lit: the hit receives light by an independent CPU computation
     // (ambient without SSAO, or an unshadowed light with N.L > 0 and radiance > 0).
     bool lit = false;
