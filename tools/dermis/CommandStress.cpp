@@ -8,6 +8,8 @@
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "frame/Renderer.h"
+#include "stress/InvariantFrame.h"
+#include "stress/InvariantJson.h"
 #include "stress/StressCases.h"
 #include "stress/StressCounting.h"
 
@@ -44,11 +46,17 @@ const char* const kHelp =
     "                output NaN in every case, to show that it is caught: each case\n"
     "                whose PASS shades a pixel then fails and names PASS; a name no\n"
     "                case's frame runs is a usage error that lists the passes run\n"
+    "  --plant-violation NAME  plant a wrong image for one detector (docs/stress.md):\n"
+    "                  none|coverage|energy|black|ss-ts (default none)\n"
     "  --quiet         no progress\n"
     "  --help          this text\n"
     "\n"
-    "Exit status: 0 when no case produced a NaN, an Inf or a bad texel, 1 otherwise\n"
-    "or on error, 2 for bad usage. The summary lists every failing case with its seed;\n"
+    "Each case also runs the wrong-image detectors (coverage, energy, black,\n"
+    "ss-ts; docs/stress.md) and fails when one is violated.\n"
+    "\n"
+    "Exit status: 0 when no case produced a NaN, an Inf or a bad texel or violated\n"
+    "a detector, 1 otherwise or on error, 2 for bad usage. The summary lists every\n"
+    "failing case with its seed;\n"
     "a case that cannot be set up at all (e.g. a frame larger than the GL allows)\n"
     "is listed as an error and also fails the run.\n";
 
@@ -60,9 +68,11 @@ struct CaseResult {
     nlohmann::ordered_json counts;  // a failing case's (stress/StressCounting.h)
     std::vector<std::string> passes;
     bool planted = false;
+    stress::InvariantReport invariants;
 };
 
-CaseResult runCase(const stress::StressCase& c, const std::string& plantPass, stress::CountingTotals& totals) {
+CaseResult runCase(const stress::StressCase& c, const std::string& plantPass, stress::Plant plant,
+                   stress::CountingTotals& totals) {
     CaseResult result;
     result.seed = c.seed;
     result.description = c.description;
@@ -82,13 +92,16 @@ CaseResult runCase(const stress::StressCase& c, const std::string& plantPass, st
     if (result.nonFinite > 0) result.counts = stress::failureJson(counting);
     result.passes = (*renderer)->framePasses();
     result.planted = counting.planted();
+    auto invariants = stress::checkCaseInvariants(**renderer, c, plant);
+    if (!invariants.ok()) result.error = invariants.error().message();
+    else result.invariants = *invariants;
     return result;
 }
 
 }  // namespace
 
 int runStress(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan", "plant-violation"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -101,6 +114,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     if (!seed.ok()) return usageError(seed.error());
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
+    const auto plant = stress::kPlants.parse(args->get("plant-violation", "none"));
+    if (!plant) return usageError(makeError("--plant-violation", "expected " + stress::kPlants.list()));
     const std::string outPath = args->get("out", "out/stress.json");
     const bool quiet = args->flags.count("quiet") > 0;
     const std::string plantPass = args->get("plant-nan", "");
@@ -120,6 +135,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
     std::vector<std::string> passesSeen;  // for --plant-nan's usage error
     bool planted = false;
     int failed = 0;
+    stress::InvariantReport invariants;
     {
         std::unique_ptr<log::Progress> progress;
         if (!quiet) {
@@ -129,13 +145,14 @@ int runStress(const std::vector<std::string>& rawArgs) {
         }
         for (int i = 0; i < *cases; ++i) {
             const stress::StressCase c = stress::makeStressCase(uint64_t(*seed) + uint64_t(i), assets.string());
-            const CaseResult r = runCase(c, plantPass, totals);
+            const CaseResult r = runCase(c, plantPass, *plant, totals);
+            invariants.add(r.invariants);
             totalNonFinite += r.nonFinite;
             planted = planted || r.planted;
             for (const std::string& pass : r.passes) {
                 if (std::find(passesSeen.begin(), passesSeen.end(), pass) == passesSeen.end()) passesSeen.push_back(pass);
             }
-            if (r.nonFinite > 0 || !r.error.empty()) {
+            if (r.nonFinite > 0 || !r.error.empty() || r.invariants.anyViolated()) {
                 ++failed;
                 nlohmann::ordered_json f;
                 f["seed"] = r.seed;
@@ -144,6 +161,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
                 f["pass"] = r.counts.is_object() ? r.counts.value("pass", "") : "";
                 f["counts"] = r.counts;
                 f["error"] = r.error;
+                f["invariants"] = stress::violationsJson(r.invariants);
                 failures.push_back(f);
             }
             if (progress) {
@@ -170,6 +188,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["plant_nan"] = plantPass;
     summary["non_finite_texels"] = totalNonFinite;
     summary["counting"] = totals.json();
+    summary["plant_violation"] = stress::kPlants.name(*plant);
+    summary["invariants"] = stress::countsJson(invariants);
     summary["seconds"] = seconds;
     summary["failures"] = failures;
 
@@ -182,9 +202,9 @@ int runStress(const std::vector<std::string>& rawArgs) {
         if (!pass.empty() && failedPasses.find("'" + pass + "'") == std::string::npos)
             failedPasses += (failedPasses.empty() ? " in " : ", ") + ("'" + pass + "'");
     }
-    std::printf("%d cases in %.1f s: %d failed%s, %llu NaN/Inf/bad values; %s (%s)\n", *cases, seconds, failed,
-                failedPasses.c_str(), static_cast<unsigned long long>(totalNonFinite), totals.line().c_str(),
-                outPath.c_str());
+    std::printf("%d cases in %.1f s: %d failed%s, %llu NaN/Inf/bad values; %s; invariants %s (%s)\n", *cases, seconds,
+                failed, failedPasses.c_str(), static_cast<unsigned long long>(totalNonFinite), totals.line().c_str(),
+                stress::countsLine(invariants).c_str(), outPath.c_str());
     return failed == 0 ? 0 : 1;
 }
 

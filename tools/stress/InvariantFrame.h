@@ -1,0 +1,37 @@
+#pragma once
+// Runs the wrong-image detectors (stress/Invariants.h) on a stress case: the
+// one place that renders the AOVs they read, at the case's size, and applies
+// a planted violation (kPlants) to what the checks receive.
+
+#include "core/Result.h"
+#include "frame/Renderer.h"
+#include "scene/Scene.h"
+#include "stress/Invariants.h"
+#include "stress/StressCases.h"
+
+#include <cstdint>
+
+namespace dermis::stress {
+
+// Side of the texture-space irradiance captured for the energy bound in ts mode.
+constexpr int kEnergyCaptureTexels = 512;
+
+// Invariants 1-3 on `scene` as `renderer` (made from it; any pass inspector is
+// removed) renders it at width x height.
+Result<InvariantReport> checkFrameInvariants(Renderer& renderer, const Scene& scene, int width, int height,
+                                             Plant plant = Plant::None);
+
+// Invariant 4 on the smooth-lighting family: a skin sphere, one distant
+// unshadowed directional light and ambient, no SSAO or transmittance, drawn
+// from `seed`, rendered in both modes at kSsTsFrame x kSsTsFrame. A GL
+// context must be current. *relative gets the measured difference.
+constexpr int kSsTsFrame = 64;
+Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant = Plant::None, float* relative = nullptr);
+Scene makeSmoothLightingScene(uint64_t seed, SssMode mode);
+
+// What `dermis stress` runs per case: invariants 1-3 on the case, and every
+// kSsTsEvery-th seed invariant 4 on the smooth-lighting case of that seed.
+constexpr uint64_t kSsTsEvery = 10;
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const StressCase& c, Plant plant);
+
+}  // namespace dermis::stress
