@@ -51,12 +51,18 @@ void addTexel(TargetStats& stats, const float* values, size_t count, bool half, 
     stats.atHalfMax += atHalfMax ? 1 : 0;
 }
 
+// Read with the format's own components: a shadow map (R32F, up to 8192^2)
+// then moves a quarter of the bytes, with no conversion to RGBA.
 void readFloats(TargetStats& stats, GLuint name, const graph::TextureDesc& desc) {
-    std::vector<float> texels(size_t(desc.width) * desc.height * 4);
-    glGetTextureImage(name, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+    const bool oneComponent =
+        desc.format == TextureFormat::R32F || desc.format == TextureFormat::R16F || desc.format == TextureFormat::R8;
+    const size_t components = oneComponent ? 1 : desc.format == TextureFormat::Rg16F ? 2 : 4;
+    const GLenum layout = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
+    std::vector<float> texels(size_t(desc.width) * desc.height * components);
+    glGetTextureImage(name, 0, layout, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
     const bool half = isHalfFormat(desc.format);
     const bool unorm = isUnormFormat(desc.format);
-    for (size_t i = 0; i < texels.size(); i += 4) addTexel(stats, &texels[i], 4, half, unorm);
+    for (size_t i = 0; i < texels.size(); i += components) addTexel(stats, &texels[i], components, half, unorm);
 }
 
 // sssPack: uvec4(packHalf2x16(colour.rg), packHalf2x16(colour.ba), packHalf2x16(extra.rg),
