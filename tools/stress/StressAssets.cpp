@@ -2,12 +2,13 @@
 // normals, without normals, without UVs and with duplicate vertices, and
 // images holding NaN and Inf texels.
 #include "core/Image.h"
+#include "core/TextFile.h"
 #include "stress/StressCases.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <utility>
@@ -80,14 +81,14 @@ Status writeGltf(const std::string& path, const GltfMesh& mesh) {
     if (!mesh.normals.empty()) attributes += ", \"NORMAL\": " + std::to_string(add(mesh.normals, "VEC3", 5126, ""));
     if (!mesh.uvs.empty()) attributes += ", \"TEXCOORD_0\": " + std::to_string(add(mesh.uvs, "VEC2", 5126, ""));
     const int indices = add(mesh.indices, "SCALAR", 5123, "");
-    std::ofstream out(path);
+    // Atomically: two stress processes share the asset directory.
+    std::ostringstream out;
     out << "{\"asset\": {\"version\": \"2.0\"},\n \"buffers\": [{\"byteLength\": " << bytes.size()
         << ", \"uri\": \"data:application/octet-stream;base64," << base64(bytes) << "\"}],\n \"bufferViews\": ["
         << views << "],\n \"accessors\": [" << accessors << "],\n \"meshes\": [{\"primitives\": [{\"attributes\": {"
         << attributes << "}, \"indices\": " << indices
         << "}]}],\n \"nodes\": [{\"mesh\": 0}], \"scenes\": [{\"nodes\": [0]}], \"scene\": 0}\n";
-    if (!out) return makeError(path, "cannot write the stress glTF");
-    return success();
+    return writeTextFileAtomically(path, out.str());
 }
 
 // A 10 cm quad split into two good triangles, plus a zero-area triangle (three
