@@ -9,6 +9,12 @@
 namespace dermis {
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
+    auto programs = Programs::build();
+    if (!programs.ok()) return programs.error();
+    return create(scene, std::make_shared<Programs>(std::move(*programs)));
+}
+
+Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, std::shared_ptr<Programs> programs) {
     if (scene.characters.size() > DERMIS_MAX_CHARACTERS) {
         return makeError(scene.path, std::to_string(scene.characters.size()) + " characters; the G-buffer's object ids allow " +
                                          std::to_string(DERMIS_MAX_CHARACTERS));
@@ -21,19 +27,17 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
     if (!models.ok()) return models.error();
     auto gpuScene = GpuScene::create(scene, *models);
     if (!gpuScene.ok()) return gpuScene.error();
-    auto programs = Programs::build();
-    if (!programs.ok()) return programs.error();
     return std::unique_ptr<Renderer>(
-        new Renderer(scene, SceneGeometry(*models), std::move(*gpuScene), std::move(*programs)));
+        new Renderer(scene, SceneGeometry(*models), std::move(*gpuScene), std::move(programs)));
 }
 
-Renderer::Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, Programs programs)
+Renderer::Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, std::shared_ptr<Programs> programs)
     : mScene(scene),
       mGeometry(std::move(geometry)),
       mGpuScene(std::move(gpuScene)),
       mPrograms(std::move(programs)),
       mBackend(mProfiler),
-      mResources(std::make_unique<FrameResources>(mGpuScene, mPrograms, mBackend.framebuffers())) {}
+      mResources(std::make_unique<FrameResources>(mGpuScene, *mPrograms, mBackend.framebuffers())) {}
 
 Status Renderer::renderFrame(const FrameRequest& request) {
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
@@ -100,7 +104,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
 Status Renderer::reloadShaders() {
     auto programs = Programs::build();
     if (!programs.ok()) return programs.error();
-    mPrograms = std::move(*programs);
+    *mPrograms = std::move(*programs);
     return success();
 }
 

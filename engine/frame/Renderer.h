@@ -33,6 +33,11 @@ public:
     // Loads and uploads the scene's content and compiles the shaders. The
     // scene must outlive the renderer.
     static Result<std::unique_ptr<Renderer>> create(const Scene& scene);
+    // The same with programs compiled before (Programs::build), shared by
+    // renderers made one after another in one context (the stress test's
+    // cases): compiling them is most of create's time on llvmpipe.
+    // reloadShaders() replaces them for every renderer that shares them.
+    static Result<std::unique_ptr<Renderer>> create(const Scene& scene, std::shared_ptr<Programs> programs);
 
     Status renderFrame(const FrameRequest& request);
     // The last frame's output: tone-mapped sRGB (values in [0,1]) for
@@ -69,12 +74,12 @@ public:
     GpuScene& gpuScene() { return mGpuScene; }
 
 private:
-    Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, Programs programs);
+    Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, std::shared_ptr<Programs> programs);
 
     const Scene& mScene;
     SceneGeometry mGeometry;
     GpuScene mGpuScene;
-    Programs mPrograms;
+    std::shared_ptr<Programs> mPrograms;  // never null
     gl::GpuProfiler mProfiler;
     gl::GlGraphBackend mBackend;
     ShadowCache mShadowCache;

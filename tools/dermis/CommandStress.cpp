@@ -12,6 +12,8 @@
 #include "stress/InvariantJson.h"
 #include "stress/StressCases.h"
 #include "stress/StressCounting.h"
+#include "stress/StressHash.h"
+#include "stress/StressLoading.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,15 +29,22 @@ namespace {
 const char* const kHelp =
     "usage: dermis stress [options]\n"
     "\n"
-    "Renders N random scenes with extreme settings (SSS widths and tap counts, near\n"
-    "and far planes, a camera inside a character, degenerate and zero-area\n"
-    "triangles, zero normals, NaN/Inf texels, light intensities past fp16, grazing\n"
-    "views, no lights and 64 lights). Each case is a function of its seed.\n"
+    "Renders N random scenes with extreme settings (SSS widths and tap counts, both\n"
+    "SSS modes and every variant, every AOV, frames from 1x1 to 1280x720, near and\n"
+    "far planes, a camera inside a character, degenerate triangles, glTFs without\n"
+    "normals or UVs or with duplicate vertices, NaN/Inf texels, lights past fp16\n"
+    "and of every size, no lights and 64 lights), 1 to 4 frames each with the\n"
+    "camera and a light moving. A quarter of the scenes go through a JSON file, the\n"
+    "scene loader and --set overrides; 1 in 16 cases holds a value the loader must\n"
+    "refuse (counted as refused, not rendered). Each case is a function of its seed\n"
+    "and gets a hash of every texel read and every output (the summary's\n"
+    "\"hashes\", in seed order).\n"
     "Every pass counts the values its shaders' sanitisers replace (NaN, Inf,\n"
     "clamped above or below the range), and every target it writes is read back:\n"
     "float targets for NaN/Inf, the packed SSS chain half by half, the depth key's\n"
     "slot, unorm targets in [0, 1]. A NaN or Inf made by a pass, or a bad texel,\n"
     "fails the case, which names the first such pass; clamps are only counted.\n"
+    "See docs/stress.md.\n"
     "\n"
     "options:\n"
     "  --cases N       how many cases (default 200)\n"
@@ -56,14 +65,17 @@ const char* const kHelp =
     "\n"
     "Exit status: 0 when no case produced a NaN, an Inf or a bad texel or violated\n"
     "a detector, 1 otherwise or on error, 2 for bad usage. The summary lists every\n"
-    "failing case with its seed;\n"
-    "a case that cannot be set up at all (e.g. a frame larger than the GL allows)\n"
-    "is listed as an error and also fails the run.\n";
+    "failing case with its seed; a case that cannot be set up at all (e.g. a frame\n"
+    "larger than the GL allows), a legal scene the loader refuses, or a hostile\n"
+    "value it accepts (or refuses without naming the file or override, the key and\n"
+    "the range) is listed as an error and also fails the run.\n";
 
 struct CaseResult {
     uint64_t seed = 0;
     std::string description;
     uint64_t nonFinite = 0;
+    bool refused = false;  // a hostile case the loader refused as it must
+    uint64_t hash = 0;     // stress/StressHash.h: every texel inspected and every frame's output
     std::string error;
     nlohmann::ordered_json counts;  // a failing case's (stress/StressCounting.h)
     std::vector<std::string> passes;
@@ -71,31 +83,77 @@ struct CaseResult {
     stress::InvariantReport invariants;
 };
 
-CaseResult runCase(const stress::StressCase& c, const std::string& plantPass, stress::Plant plant,
-                   stress::CountingTotals& totals) {
+// What a case is run with besides its own seed.
+struct CaseOptions {
+    std::shared_ptr<Programs> programs;  // compiled once for every case
+    std::string plantPass;               // --plant-nan
+    stress::Plant plant = stress::Plant::None;
+};
+
+// Renders the case's frames, each inspected and hashed (the scene moves
+// between them), then runs the wrong-image detectors on the last frame's scene.
+void renderCase(const stress::StressCase& c, Scene& scene, const CaseOptions& options, stress::CountingTotals& totals,
+                CaseResult& result) {
+    auto renderer = Renderer::create(scene, options.programs);
+    if (!renderer.ok()) {
+        result.error = renderer.error().message();
+        return;
+    }
+    {
+        stress::CaseCounting counting(**renderer, options.plantPass);
+        stress::CaseHash hash;
+        (*renderer)->setPassInspector(hash.inspector(counting.targetsInspector()));
+        for (int frame = 0; frame < c.frames; ++frame) {
+            if (frame > 0) stress::advanceFrame(c, scene);
+            if (const Status status = (*renderer)->renderFrame({c.width, c.height, c.aov}); !status.ok()) {
+                result.error = "frame " + std::to_string(frame) + ": " + status.error().message();
+                return;
+            }
+            auto output = (*renderer)->readOutput();
+            if (!output.ok()) {
+                result.error = output.error().message();
+                return;
+            }
+            hash.addImage(*output);
+        }
+        result.hash = hash.value();
+        totals.add(counting);
+        result.nonFinite = counting.failures();
+        if (result.nonFinite > 0) result.counts = stress::failureJson(counting);
+        result.passes = (*renderer)->framePasses();
+        result.planted = counting.planted();
+    }
+    auto invariants = stress::checkCaseInvariants(**renderer, scene, c, options.plant);
+    if (!invariants.ok()) result.error = invariants.error().message();
+    else result.invariants = *invariants;
+}
+
+CaseResult runCase(const stress::StressCase& c, const CaseOptions& options, stress::CountingTotals& totals) {
     CaseResult result;
     result.seed = c.seed;
     result.description = c.description;
-    auto renderer = Renderer::create(c.scene);
-    if (!renderer.ok()) {
-        result.error = renderer.error().message();
+    Result<Scene> loaded = stress::loadCaseScene(c);
+    if (c.path == stress::CasePath::Hostile) {
+        result.error = stress::refusalProblem(c, loaded);
+        result.refused = result.error.empty();
+        stress::CaseHash hash;  // of the refusal, so that a changed message changes the hash
+        if (!loaded.ok()) hash.addText(loaded.error().message());
+        result.hash = hash.value();
         return result;
     }
-    const stress::CaseCounting counting(**renderer, plantPass);
-    const Status status = (*renderer)->renderFrame({c.width, c.height, c.aov});
-    if (!status.ok()) {
-        result.error = status.error().message();
+    if (!loaded.ok()) {
+        result.error = "the loader refused a legal case: " + loaded.error().message();
         return result;
     }
-    totals.add(counting);
-    result.nonFinite = counting.failures();
-    if (result.nonFinite > 0) result.counts = stress::failureJson(counting);
-    result.passes = (*renderer)->framePasses();
-    result.planted = counting.planted();
-    auto invariants = stress::checkCaseInvariants(**renderer, c, plant);
-    if (!invariants.ok()) result.error = invariants.error().message();
-    else result.invariants = *invariants;
+    Scene scene = std::move(*loaded);  // outlives the renderer, which holds a reference
+    renderCase(c, scene, options, totals, result);
     return result;
+}
+
+std::string hex(uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(value));
+    return text;
 }
 
 }  // namespace
@@ -127,6 +185,13 @@ int runStress(const std::vector<std::string>& rawArgs) {
     std::filesystem::create_directories(assets, ec);
     if (const Status written = stress::writeStressAssets(assets.string()); !written.ok()) return failure(written.error());
 
+    // Compiled once for every case (most of a renderer's set-up time); the
+    // test Stress.CaseHashesDoNotDependOnEarlierCases checks that no case
+    // leaves state in them that changes a later one.
+    auto built = Programs::build();
+    if (!built.ok()) return failure(built.error());
+    const CaseOptions options{std::make_shared<Programs>(std::move(*built)), plantPass, *plant};
+
     log::setQuiet(true);  // per-case loading messages would drown the progress bar
     const auto start = std::chrono::steady_clock::now();
     nlohmann::ordered_json failures = nlohmann::ordered_json::array();
@@ -136,6 +201,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     bool planted = false;
     int failed = 0;
     stress::InvariantReport invariants;
+    int refused = 0;
+    nlohmann::ordered_json hashes = nlohmann::ordered_json::array();
     {
         std::unique_ptr<log::Progress> progress;
         if (!quiet) {
@@ -145,10 +212,12 @@ int runStress(const std::vector<std::string>& rawArgs) {
         }
         for (int i = 0; i < *cases; ++i) {
             const stress::StressCase c = stress::makeStressCase(uint64_t(*seed) + uint64_t(i), assets.string());
-            const CaseResult r = runCase(c, plantPass, *plant, totals);
+            const CaseResult r = runCase(c, options, totals);
             invariants.add(r.invariants);
             totalNonFinite += r.nonFinite;
             planted = planted || r.planted;
+            refused += r.refused ? 1 : 0;
+            hashes.push_back(hex(r.hash));
             for (const std::string& pass : r.passes) {
                 if (std::find(passesSeen.begin(), passesSeen.end(), pass) == passesSeen.end()) passesSeen.push_back(pass);
             }
@@ -186,12 +255,14 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["renderer"] = (*context)->renderer();
     summary["failed_cases"] = failed;
     summary["plant_nan"] = plantPass;
+    summary["refused"] = refused;
     summary["non_finite_texels"] = totalNonFinite;
     summary["counting"] = totals.json();
     summary["plant_violation"] = stress::kPlants.name(*plant);
     summary["invariants"] = stress::countsJson(invariants);
     summary["seconds"] = seconds;
     summary["failures"] = failures;
+    summary["hashes"] = hashes;  // per case, in seed order
 
     if (const Status written = writeTextFileAtomically(outPath, summary.dump(2) + "\n"); !written.ok())
         return failure(written.error());
@@ -202,9 +273,10 @@ int runStress(const std::vector<std::string>& rawArgs) {
         if (!pass.empty() && failedPasses.find("'" + pass + "'") == std::string::npos)
             failedPasses += (failedPasses.empty() ? " in " : ", ") + ("'" + pass + "'");
     }
-    std::printf("%d cases in %.1f s: %d failed%s, %llu NaN/Inf/bad values; %s; invariants %s (%s)\n", *cases, seconds,
-                failed, failedPasses.c_str(), static_cast<unsigned long long>(totalNonFinite), totals.line().c_str(),
-                stress::countsLine(invariants).c_str(), outPath.c_str());
+    std::printf("%d cases in %.1f s: %d failed%s, %d refused as they must be, %llu NaN/Inf/bad values; %s; invariants %s "
+                "(%s)\n",
+                *cases, seconds, failed, failedPasses.c_str(), refused, static_cast<unsigned long long>(totalNonFinite),
+                totals.line().c_str(), stress::countsLine(invariants).c_str(), outPath.c_str());
     return failed == 0 ? 0 : 1;
 }
 

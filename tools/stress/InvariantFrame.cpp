@@ -187,8 +187,8 @@ Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant, floa
     return tally;
 }
 
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const StressCase& c, Plant plant) {
-    auto report = checkFrameInvariants(renderer, c.scene, c.width, c.height, plant);
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant) {
+    auto report = checkFrameInvariants(renderer, scene, c.width, c.height, plant);
     if (!report.ok() || c.seed % kSsTsEvery != 0) return report;
     auto ssTs = checkScreenVsTextureCase(c.seed, plant);
     if (!ssTs.ok()) return ssTs.error();

@@ -29,9 +29,10 @@ constexpr int kSsTsFrame = 64;
 Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant = Plant::None, float* relative = nullptr);
 Scene makeSmoothLightingScene(uint64_t seed, SssMode mode);
 
-// What `dermis stress` runs per case: invariants 1-3 on the case, and every
-// kSsTsEvery-th seed invariant 4 on the smooth-lighting case of that seed.
+// What `dermis stress` runs per case: invariants 1-3 on `scene` (the case's
+// scene as loaded and moved to its last frame, which `renderer` renders), and
+// every kSsTsEvery-th seed invariant 4 on the smooth-lighting case of that seed.
 constexpr uint64_t kSsTsEvery = 10;
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const StressCase& c, Plant plant);
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant);
 
 }  // namespace dermis::stress

@@ -30,6 +30,9 @@ public:
     // The first pass, in execution order, with a failure; empty for none.
     std::string firstFailingPass() const;
     bool planted() const { return mRenderer.sanitiseCounters().planted(); }
+    // The read-back of every target, which the constructor installs as the
+    // renderer's pass inspector; for a caller that wraps it (stress/StressHash.h).
+    gl::PassInspector targetsInspector() { return mTargets.inspector(); }
     const gl::NonFiniteCounter& targets() const { return mTargets; }
     const std::vector<gl::PassSanitised>& sanitised() const { return mRenderer.sanitiseCounters().passes(); }
 
