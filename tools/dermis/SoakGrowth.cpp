@@ -1,0 +1,26 @@
+#include "SoakGrowth.h"
+
+#include <algorithm>
+
+namespace dermis::cli {
+
+SoakGrowth measureSoakGrowth(const std::vector<SoakSample>& samples, int warmupFrames, int periodFrames, int frames) {
+    SoakGrowth growth;
+    growth.firstWindowStart = warmupFrames;
+    growth.firstWindowEnd = warmupFrames + periodFrames;
+    growth.lastWindowStart = frames - periodFrames;
+    growth.lastWindowEnd = frames;
+    for (const SoakSample& s : samples) {
+        if (s.frame > growth.firstWindowStart && s.frame <= growth.firstWindowEnd) {
+            growth.firstResidentPeak = std::max(growth.firstResidentPeak, s.residentBytes);
+            growth.firstPoolPeak = std::max(growth.firstPoolPeak, s.poolBytes);
+        }
+        if (s.frame > growth.lastWindowStart && s.frame <= growth.lastWindowEnd) {
+            growth.lastResidentPeak = std::max(growth.lastResidentPeak, s.residentBytes);
+            growth.lastPoolPeak = std::max(growth.lastPoolPeak, s.poolBytes);
+        }
+    }
+    return growth;
+}
+
+}  // namespace dermis::cli
