@@ -39,10 +39,9 @@ const char* const kHelp =
     "the render graph's texture pool, and prints a line. It writes DIR/soak.json\n"
     "(the samples) and DIR/soak.png (a plot; needs python3 with matplotlib).\n"
     "\n"
-    "It fails when, after the warm-up, memory grows: the peak over the last\n"
-    "period's samples against the peak over the first period after the warm-up\n"
-    "(both windows hold the same frames of the cycle). Bounds: resident memory\n"
-    "%.0f MiB, texture pool 0 bytes.\n"
+    "It fails when, after the warm-up, memory grows from the first period to the\n"
+    "last (both hold the same frames of the cycle): the least resident figure of\n"
+    "each by more than %.0f MiB, or the texture pool's peak at all.\n"
     "\n"
     "options:\n"
     "  --frames N          frames per mode (default 1000)\n"
@@ -157,10 +156,10 @@ std::string growthFailure(const std::string& mode, const SoakGrowth& g) {
     char text[512];
     if (double(g.residentBytes()) > kMaxResidentGrowthMiB * kMiB) {
         std::snprintf(text, sizeof text,
-                      "resident memory grew by %.1f MiB (peak %.1f MiB over frames %d-%d, %.1f MiB over frames %d-%d); "
+                      "resident memory grew by %.1f MiB (floor %.1f MiB over frames %d-%d, %.1f MiB over frames %d-%d); "
                       "the bound is %.0f MiB",
-                      double(g.residentBytes()) / kMiB, double(g.firstResidentPeak) / kMiB, g.firstWindowStart + 1,
-                      g.firstWindowEnd, double(g.lastResidentPeak) / kMiB, g.lastWindowStart + 1, g.lastWindowEnd,
+                      double(g.residentBytes()) / kMiB, double(g.firstResidentFloor) / kMiB, g.firstWindowStart + 1,
+                      g.firstWindowEnd, double(g.lastResidentFloor) / kMiB, g.lastWindowStart + 1, g.lastWindowEnd,
                       kMaxResidentGrowthMiB);
         return "soak " + mode + ": " + text;
     }

@@ -10,13 +10,15 @@ SoakGrowth measureSoakGrowth(const std::vector<SoakSample>& samples, int warmupF
     growth.firstWindowEnd = warmupFrames + periodFrames;
     growth.lastWindowStart = frames - periodFrames;
     growth.lastWindowEnd = frames;
+    growth.firstResidentFloor = UINT64_MAX;
+    growth.lastResidentFloor = UINT64_MAX;
     for (const SoakSample& s : samples) {
         if (s.frame > growth.firstWindowStart && s.frame <= growth.firstWindowEnd) {
-            growth.firstResidentPeak = std::max(growth.firstResidentPeak, s.residentBytes);
+            growth.firstResidentFloor = std::min(growth.firstResidentFloor, s.residentBytes);
             growth.firstPoolPeak = std::max(growth.firstPoolPeak, s.poolBytes);
         }
         if (s.frame > growth.lastWindowStart && s.frame <= growth.lastWindowEnd) {
-            growth.lastResidentPeak = std::max(growth.lastResidentPeak, s.residentBytes);
+            growth.lastResidentFloor = std::min(growth.lastResidentFloor, s.residentBytes);
             growth.lastPoolPeak = std::max(growth.lastPoolPeak, s.poolBytes);
         }
     }
