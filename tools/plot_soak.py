@@ -21,7 +21,7 @@ MIB = 1024.0 * 1024.0
 def main(out_dir):
     with open(os.path.join(out_dir, "soak.json")) as f:
         report = json.load(f)
-    fig, (rss, pool) = plt.subplots(2, 1, figsize=(6.4, 4.2), sharex=True, dpi=100)
+    fig, (rss, pool) = plt.subplots(2, 1, figsize=(7.4, 4.2), sharex=True, dpi=100)
     for mode, data in report["modes"].items():
         colour, label = MODE_STYLE.get(mode, ("black", mode))
         frames = [s["frame"] for s in data["samples"]]
@@ -36,7 +36,7 @@ def main(out_dir):
     rss.set_ylabel("resident (MiB)")
     pool.set_ylabel("texture pool (MiB)")
     pool.set_xlabel("frame (each mode from 0; grey: warm-up; green: the compared periods)")
-    rss.legend(loc="lower right", fontsize=8)
+    rss.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     rss.set_title("dermis soak: %s at %s, %d frames per mode" % (os.path.basename(report["scene"]), report["size"],
                                                                    report["frames"]), fontsize=9)
     fig.tight_layout()
