@@ -72,6 +72,8 @@ public:
     const FrameTimings& timings() const { return mTimings; }
     void resetTimings() { mTimings = FrameTimings{}; }
     GpuScene& gpuScene() { return mGpuScene; }
+    // The render graph's pooled transient targets (gl/TexturePool.h), in bytes.
+    uint64_t texturePoolBytes() { return mBackend.pool().bytes(); }
 
 private:
     Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, std::shared_ptr<Programs> programs);

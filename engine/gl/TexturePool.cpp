@@ -23,6 +23,26 @@ GLenum internalFormat(graph::TextureFormat format) {
     return GL_RGBA8;
 }
 
+uint64_t textureBytes(const graph::TextureDesc& desc) {
+    using graph::TextureFormat;
+    uint64_t texelBytes = 4;
+    switch (desc.format) {
+        case TextureFormat::R8: texelBytes = 1; break;
+        case TextureFormat::R16F: texelBytes = 2; break;
+        case TextureFormat::Rgba8Srgb:
+        case TextureFormat::Rgba8:
+        case TextureFormat::Rg16F:
+        case TextureFormat::R32F:
+        case TextureFormat::R32UI:
+        case TextureFormat::Depth24Stencil8:
+        case TextureFormat::Depth32F: texelBytes = 4; break;
+        case TextureFormat::Rgba16F: texelBytes = 8; break;
+        case TextureFormat::Rgba32F:
+        case TextureFormat::Rgba32UI: texelBytes = 16; break;
+    }
+    return uint64_t(desc.width) * desc.height * texelBytes;
+}
+
 Texture createTexture2D(const graph::TextureDesc& desc, int levels) {
     Texture texture = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(texture.get(), levels, internalFormat(desc.format), static_cast<GLsizei>(desc.width),
@@ -61,6 +81,12 @@ void TexturePool::release(GLuint texture, const graph::TextureDesc& desc) {
             return;
         }
     }
+}
+
+uint64_t TexturePool::bytes() const {
+    uint64_t total = 0;
+    for (const Entry& entry : mEntries) total += textureBytes(entry.desc);
+    return total;
 }
 
 std::vector<GLuint> TexturePool::endFrame() {

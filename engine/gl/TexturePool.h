@@ -11,6 +11,8 @@
 namespace dermis::gl {
 
 GLenum internalFormat(graph::TextureFormat format);
+// The bytes of one level of `desc` in its internal format (a driver may pad).
+uint64_t textureBytes(const graph::TextureDesc& desc);
 
 // Immutable single-level 2-D storage, clamp-to-edge, linear filtering for
 // colour and nearest for depth and integer formats.
@@ -26,6 +28,7 @@ public:
     // so framebuffers that refer to them can be dropped.
     std::vector<GLuint> endFrame();
     size_t textureCount() const { return mEntries.size(); }
+    uint64_t bytes() const;  // textureBytes() of every texture held, in use or free
 
 private:
     struct Entry {

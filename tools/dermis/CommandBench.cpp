@@ -5,6 +5,7 @@
 #include "CauseMeter.h"
 #include "Commands.h"
 #include "MeasuredRender.h"
+#include "Python.h"
 #include "Session.h"
 
 #include "bench/BenchReport.h"
@@ -140,12 +141,6 @@ Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, con
         }
     }
     return planned;
-}
-
-std::string pythonInterpreter() {
-    // Debian's interpreter has Debian's matplotlib; a python3 earlier on PATH
-    // (pyenv, a virtualenv) may not.
-    return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
 }
 
 Status drawPlots(const std::filesystem::path& outDir) {

@@ -15,6 +15,7 @@ struct Command {
 
 int runRender(const std::vector<std::string>& args);
 int runStress(const std::vector<std::string>& args);
+int runSoak(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);

@@ -1,0 +1,13 @@
+#include "Python.h"
+
+#include <filesystem>
+
+namespace dermis::cli {
+
+std::string pythonInterpreter() {
+    // Debian's interpreter has Debian's matplotlib; a python3 earlier on PATH
+    // (pyenv, a virtualenv) may not.
+    return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+}  // namespace dermis::cli
