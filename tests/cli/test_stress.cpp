@@ -1,4 +1,5 @@
-// `dermis stress --cases 200` (issue: it runs in CI and finds no non-finite texel).
+// `dermis stress`: a hundred cases in CI fail none (docs/stress.md), the same
+// seeds give the same texels, and planted faults fail the run.
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -7,14 +8,16 @@
 using dermis::test::runProcess;
 using dermis::test::TempDir;
 
-TEST(Stress, TwoHundredCasesFindNoNonFiniteTexel) {
+// 100 cases, about 4 minutes on 2 cores (2.2 s a case: 1-4 frames, eight AOVs
+// for the detectors, every target read back).
+TEST(Stress, HundredCasesFailNone) {
     TempDir dir;
     const std::string summaryPath = dir.file("summary.json");
-    const auto r = runProcess(std::string(DERMIS_BINARY) + " stress --cases 200 --seed 1 --quiet --out " + summaryPath);
+    const auto r = runProcess(std::string(DERMIS_BINARY) + " stress --cases 100 --seed 1 --quiet --out " + summaryPath);
     const auto summary = nlohmann::json::parse(dermis::test::readTextFile(summaryPath));
     std::printf("%s\n", r.out.c_str());
     EXPECT_EQ(r.exitCode, 0) << r.err << summary["failures"].dump(2);
-    EXPECT_EQ(summary["cases"], 200);
+    EXPECT_EQ(summary["cases"], 100);
     EXPECT_EQ(summary["non_finite_texels"], 0);
     EXPECT_EQ(summary["failed_cases"], 0);
     EXPECT_TRUE(summary["failures"].empty());
@@ -24,7 +27,7 @@ TEST(Stress, TwoHundredCasesFindNoNonFiniteTexel) {
     // About 1 in 16 cases is hostile (docs/stress.md, "Cases"); each refused
     // as it must be counts here, one accepted or vaguely refused fails above.
     EXPECT_GT(summary["refused"].get<int>(), 0);
-    EXPECT_EQ(summary["hashes"].size(), 200u);
+    EXPECT_EQ(summary["hashes"].size(), 100u);
 }
 
 // Determinism, texel for texel: each case's hash covers every texel the pass

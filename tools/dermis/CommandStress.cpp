@@ -123,7 +123,7 @@ void renderCase(const stress::StressCase& c, Scene& scene, const CaseOptions& op
         result.passes = (*renderer)->framePasses();
         result.planted = counting.planted();
     }
-    auto invariants = stress::checkCaseInvariants(**renderer, scene, c, options.plant);
+    auto invariants = stress::checkCaseInvariants(**renderer, scene, c, options.plant, options.programs);
     if (!invariants.ok()) result.error = invariants.error().message();
     else result.invariants = *invariants;
 }

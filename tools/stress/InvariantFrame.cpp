@@ -163,13 +163,14 @@ Scene makeSmoothLightingScene(uint64_t seed, SssMode mode) {
     return scene;
 }
 
-Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant, float* relative) {
+Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant, float* relative,
+                                                std::shared_ptr<Programs> programs) {
     Image diffuse[2];
     Image object;
     const SssMode modes[2] = {SssMode::ScreenSpace, SssMode::TextureSpace};
     for (int m = 0; m < 2; ++m) {
         const Scene scene = makeSmoothLightingScene(seed, modes[m]);
-        auto renderer = Renderer::create(scene);
+        auto renderer = programs ? Renderer::create(scene, programs) : Renderer::create(scene);
         if (!renderer.ok()) return renderer.error();
         auto image = renderAov(**renderer, kSsTsFrame, kSsTsFrame, Aov::Diffuse);
         if (!image.ok()) return image.error();
@@ -187,10 +188,11 @@ Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant, floa
     return tally;
 }
 
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant) {
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant,
+                                            std::shared_ptr<Programs> programs) {
     auto report = checkFrameInvariants(renderer, scene, c.width, c.height, plant);
     if (!report.ok() || c.seed % kSsTsEvery != 0) return report;
-    auto ssTs = checkScreenVsTextureCase(c.seed, plant);
+    auto ssTs = checkScreenVsTextureCase(c.seed, plant, nullptr, std::move(programs));
     if (!ssTs.ok()) return ssTs.error();
     (*report)[Invariant::SsTs].add(*ssTs);
     return report;

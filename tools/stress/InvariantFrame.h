@@ -10,6 +10,7 @@
 #include "stress/StressCases.h"
 
 #include <cstdint>
+#include <memory>
 
 namespace dermis::stress {
 
@@ -24,15 +25,19 @@ Result<InvariantReport> checkFrameInvariants(Renderer& renderer, const Scene& sc
 // Invariant 4 on the smooth-lighting family: a skin sphere, one distant
 // unshadowed directional light and ambient, no SSAO or transmittance, drawn
 // from `seed`, rendered in both modes at kSsTsFrame x kSsTsFrame. A GL
-// context must be current. *relative gets the measured difference.
+// context must be current. *relative gets the measured difference. The
+// renderers use `programs` when given (compiled in that context) and compile
+// their own otherwise.
 constexpr int kSsTsFrame = 64;
-Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant = Plant::None, float* relative = nullptr);
+Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant = Plant::None, float* relative = nullptr,
+                                                std::shared_ptr<Programs> programs = nullptr);
 Scene makeSmoothLightingScene(uint64_t seed, SssMode mode);
 
 // What `dermis stress` runs per case: invariants 1-3 on `scene` (the case's
 // scene as loaded and moved to its last frame, which `renderer` renders), and
 // every kSsTsEvery-th seed invariant 4 on the smooth-lighting case of that seed.
 constexpr uint64_t kSsTsEvery = 10;
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant);
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant,
+                                            std::shared_ptr<Programs> programs = nullptr);
 
 }  // namespace dermis::stress
