@@ -50,8 +50,8 @@ TEST(Soak, FiveHundredFramesInBothModesKeepMemoryFlat) {
 
 TEST(Soak, PlantedLeakFailsNamingTheGrowth) {
     // The wedge of slab.json loads in a fraction of the head's time. The two
-    // compared periods (frames 51-100 and 151-200) are 100 frames apart, so a
-    // leak of 256 KiB a frame puts their floors about 25 MiB apart, three times
+    // compared halves (frames 51-100 and 101-200) start 50 frames apart, so a
+    // leak of 512 KiB a frame puts their floors about 25 MiB apart, three times
     // the bound; the same run without it grew by 0.6 MiB (docs/stress.md).
     const std::string command = std::string(DERMIS_BINARY) + " soak " + dermis::test::contentScene("slab.json") +
                                 " --frames 200 --mode ss --change-every 25 --warmup 50 --no-plot --quiet --out ";
@@ -61,7 +61,7 @@ TEST(Soak, PlantedLeakFailsNamingTheGrowth) {
     EXPECT_TRUE(readReport(clean)["modes"]["ss"]["flat"].get<bool>());
 
     TempDir leaking;
-    const auto r = runProcess(command + leaking.path().string() + " --plant-leak 256");
+    const auto r = runProcess(command + leaking.path().string() + " --plant-leak 512");
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("error: soak ss: resident memory grew by"), std::string::npos) << r.err;
     const auto report = readReport(leaking);

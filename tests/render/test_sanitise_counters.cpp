@@ -99,11 +99,12 @@ TEST_F(SanitiseCountersTest, TonemapCountsOneNanPerPixel) {
 }
 
 TEST_F(SanitiseCountersTest, LightPastFp16IsClampedAndCountedNotFailed) {
-    // A legal light of 1e30: lighting's irradiance is far above 65504 on every
-    // lit pixel, so the sanitisers must clamp (overflow > 0), and nothing in
-    // the frame may be NaN or Inf (1e30 x a BRDF below 1e8 stays finite in
-    // float32, whose maximum is 3.4e38).
-    load("default.json", {"lights.0.intensity=1e30"});
+    // The largest legal light (colour x intensity up to 1e20, core/Limits.h):
+    // lighting's irradiance is far above 65504 on every lit pixel, so the
+    // sanitisers must clamp (overflow > 0), and nothing in the frame may be
+    // NaN or Inf (1e20 x a Beckmann peak below 3e11 stays finite in float32,
+    // whose maximum is 3.4e38).
+    ASSERT_NO_FATAL_FAILURE(load("default.json", {"lights.0.intensity=1e20"}));
     const Frame frame = countedFrame("");
     const auto it = std::find_if(frame.sanitised.begin(), frame.sanitised.end(),
                                  [](const gl::PassSanitised& p) { return p.pass == "lighting"; });

@@ -81,6 +81,24 @@ struct CaseResult {
     std::vector<std::string> passes;
     bool planted = false;
     stress::InvariantReport invariants;
+    // Wall-clock seconds by stage: loading the scene and creating the
+    // renderer, the inspected frames, the detectors.
+    double setUpSeconds = 0.0, frameSeconds = 0.0, detectorSeconds = 0.0;
+    double seconds() const { return setUpSeconds + frameSeconds + detectorSeconds; }
+};
+
+// Seconds since the last call (or construction).
+class Lap {
+public:
+    double next() {
+        const auto now = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - mLast).count();
+        mLast = now;
+        return seconds;
+    }
+
+private:
+    std::chrono::steady_clock::time_point mLast = std::chrono::steady_clock::now();
 };
 
 // What a case is run with besides its own seed.
@@ -93,8 +111,9 @@ struct CaseOptions {
 // Renders the case's frames, each inspected and hashed (the scene moves
 // between them), then runs the wrong-image detectors on the last frame's scene.
 void renderCase(const stress::StressCase& c, Scene& scene, const CaseOptions& options, stress::CountingTotals& totals,
-                CaseResult& result) {
+                Lap& lap, CaseResult& result) {
     auto renderer = Renderer::create(scene, options.programs);
+    result.setUpSeconds += lap.next();
     if (!renderer.ok()) {
         result.error = renderer.error().message();
         return;
@@ -123,16 +142,20 @@ void renderCase(const stress::StressCase& c, Scene& scene, const CaseOptions& op
         result.passes = (*renderer)->framePasses();
         result.planted = counting.planted();
     }
+    result.frameSeconds = lap.next();
     auto invariants = stress::checkCaseInvariants(**renderer, scene, c, options.plant, options.programs);
     if (!invariants.ok()) result.error = invariants.error().message();
     else result.invariants = *invariants;
+    result.detectorSeconds = lap.next();
 }
 
 CaseResult runCase(const stress::StressCase& c, const CaseOptions& options, stress::CountingTotals& totals) {
     CaseResult result;
     result.seed = c.seed;
     result.description = c.description;
+    Lap lap;
     Result<Scene> loaded = stress::loadCaseScene(c);
+    result.setUpSeconds = lap.next();
     if (c.path == stress::CasePath::Hostile) {
         result.error = stress::refusalProblem(c, loaded);
         result.refused = result.error.empty();
@@ -146,7 +169,7 @@ CaseResult runCase(const stress::StressCase& c, const CaseOptions& options, stre
         return result;
     }
     Scene scene = std::move(*loaded);  // outlives the renderer, which holds a reference
-    renderCase(c, scene, options, totals, result);
+    renderCase(c, scene, options, totals, lap, result);
     return result;
 }
 
@@ -202,6 +225,8 @@ int runStress(const std::vector<std::string>& rawArgs) {
     int failed = 0;
     stress::InvariantReport invariants;
     int refused = 0;
+    double setUpSeconds = 0.0, frameSeconds = 0.0, detectorSeconds = 0.0;
+    std::vector<std::pair<double, uint64_t>> caseSeconds;  // (seconds, seed), for the slowest cases
     nlohmann::ordered_json hashes = nlohmann::ordered_json::array();
     {
         std::unique_ptr<log::Progress> progress;
@@ -218,6 +243,10 @@ int runStress(const std::vector<std::string>& rawArgs) {
             planted = planted || r.planted;
             refused += r.refused ? 1 : 0;
             hashes.push_back(hex(r.hash));
+            setUpSeconds += r.setUpSeconds;
+            frameSeconds += r.frameSeconds;
+            detectorSeconds += r.detectorSeconds;
+            caseSeconds.emplace_back(r.seconds(), r.seed);
             for (const std::string& pass : r.passes) {
                 if (std::find(passesSeen.begin(), passesSeen.end(), pass) == passesSeen.end()) passesSeen.push_back(pass);
             }
@@ -261,6 +290,13 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["plant_violation"] = stress::kPlants.name(*plant);
     summary["invariants"] = stress::countsJson(invariants);
     summary["seconds"] = seconds;
+    summary["seconds_by_stage"] = {{"set_up", setUpSeconds}, {"frames", frameSeconds}, {"detectors", detectorSeconds}};
+    constexpr size_t kSlowestListed = 5;
+    std::sort(caseSeconds.rbegin(), caseSeconds.rend());
+    nlohmann::ordered_json slowest = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < std::min(kSlowestListed, caseSeconds.size()); ++i)
+        slowest.push_back({{"seed", caseSeconds[i].second}, {"seconds", caseSeconds[i].first}});
+    summary["slowest_cases"] = slowest;
     summary["failures"] = failures;
     summary["hashes"] = hashes;  // per case, in seed order
 

@@ -6,9 +6,10 @@ namespace dermis::cli {
 
 SoakGrowth measureSoakGrowth(const std::vector<SoakSample>& samples, int warmupFrames, int periodFrames, int frames) {
     SoakGrowth growth;
+    const int periods = (frames - warmupFrames) / periodFrames;
     growth.firstWindowStart = warmupFrames;
-    growth.firstWindowEnd = warmupFrames + periodFrames;
-    growth.lastWindowStart = frames - periodFrames;
+    growth.firstWindowEnd = warmupFrames + (periods / 2) * periodFrames;
+    growth.lastWindowStart = growth.firstWindowEnd;
     growth.lastWindowEnd = frames;
     growth.firstResidentFloor = UINT64_MAX;
     growth.lastResidentFloor = UINT64_MAX;

@@ -12,7 +12,7 @@ namespace dermis::cli {
 const std::vector<Command>& commands() {
     static const std::vector<Command> kCommands = {
         {"render", "render a scene headlessly to PNG/EXR and report per-pass GPU timings", runRender},
-        {"stress", "fuzz scenes and settings; count non-finite texels in every pass's targets", runStress},
+        {"stress", "fuzz scenes and settings: count sanitised values per pass, read every target, check wrong-image detectors and refusals", runStress},
         {"soak", "memory over a long run with the scene changing: resident and texture-pool bytes stay flat", runSoak},
         {"compare", "render one frame in screen-space and texture-space SSS: images, heatmap, metrics", runCompare},
         {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},

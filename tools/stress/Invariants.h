@@ -133,10 +133,12 @@ void checkNotBlack(const Image& object, const Image& albedo, const Image& radian
 
 // 4: on pixels at least kSsTsInteriorPx from any other id (interior of the
 // character), max |ss - ts| over channels <= kSsTsBound x the largest interior
-// ts value. One check per case. Measured on seeds 10-120 (step 10) of the
-// smooth-lighting family: at most 0.0022; the bound is 4.5 times that.
+// ts value. One check per case. Measured on seeds 10-3000 (step 10) of the
+// smooth-lighting family: median 0.0014, 99th percentile 0.015, largest
+// 0.0171 (seed 1020, which failed a first bound of 0.01 set from twelve
+// seeds); the bound is 1.75 times the largest of 300.
 constexpr int kSsTsInteriorPx = 3;
-constexpr float kSsTsBound = 0.01f;
+constexpr float kSsTsBound = 0.03f;
 void checkScreenMatchesTexture(const Image& object, const Image& ssDiffuse, const Image& tsDiffuse,
                                InvariantTally& tally, float* relativeDifference = nullptr);
 
