@@ -24,11 +24,13 @@ void SanitiseCounters::beginPass(std::string_view pass) {
     bind();
     mCurrentPass = std::string(pass);
     mPlanting = !mPlantPass.empty() && mCurrentPass == mPlantPass;
-    // Without counting or planting the buffer is left alone: counts pile up
-    // (and wrap) unread, which costs nothing.
-    if (!mCounting && !mPlanting) return;
+    // Without counting or planting the buffer holds zeros (written once after
+    // counting stops), so the shaders neither count nor plant.
+    if (!mCounting && !mPlanting && !mBufferCounting) return;
     SanitiseBlock block{};
     block.plantNan = mPlanting ? 1u : 0u;
+    block.counting = mCounting ? 1u : 0u;
+    mBufferCounting = mCounting;
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // after the previous pass's atomics
     glNamedBufferSubData(mBuffer.get(), 0, sizeof(block), &block);
     mPlanted = mPlanted || mPlanting;
@@ -42,6 +44,7 @@ void SanitiseCounters::endPass() {
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         if (mCounting) readCounts();
         glNamedBufferSubData(mBuffer.get(), 0, sizeof(zero), &zero);
+        mBufferCounting = false;
         mPlanting = false;
         return;
     }

@@ -57,6 +57,7 @@ private:
     bool mCounting = false;
     bool mPlanted = false;
     bool mPlanting = false;  // the current pass is the plant pass
+    bool mBufferCounting = false;  // the buffer's counting flag is set
     std::string mPlantPass;
     std::string mCurrentPass;
     std::vector<PassSanitised> mPasses;

@@ -6,7 +6,10 @@
 // a NaN is reported by the pass that made it even though the pass erases it.
 // The graph backend zeroes the counters before each pass and reads them after
 // it when counting is on (engine/gl/SanitiseCounters.h). A value in range
-// costs only the compares. C++ includes this file through gpu/UniformBlocks.h.
+// costs only the compares; with counting off (every frame outside `dermis
+// stress`) a replaced one costs a uniform test, not an atomic: a saturated
+// light clamps every lit pixel, and one counter for all of them would
+// serialise the pass. C++ includes this file through gpu/UniformBlocks.h.
 #ifndef DERMIS_SANITISE_GLSL
 #define DERMIS_SANITISE_GLSL
 
@@ -22,7 +25,7 @@ layout(std430, binding = DERMIS_BINDING_SANITISE_COUNTERS) buffer SanitiseBlock 
     uint overflowCount;  // finite values above the range clamped (fp16 max for colours, 1 for AO)
     uint negativeCount;  // finite values below the range clamped (0 for colours and AO)
     uint plantNan;       // 1: debugPlant returns NaN in this pass
-    uint padding0;
+    uint counting;       // 1: the counters above are read after this pass
     uint padding1;
     uint padding2;
 }
@@ -38,6 +41,7 @@ const float kHalfMax = 65504.0;  // largest finite fp16
 // x with NaN replaced by nanValue and clamped to [low, high]; counts a replaced value.
 float sanitiseValue(float x, float low, float high, float nanValue) {
     if (x >= low && x <= high) return x;  // false for NaN
+    if (uSanitise.counting == 0u) return isnan(x) ? nanValue : clamp(x, low, high);
     if (isnan(x)) {
         atomicAdd(uSanitise.nanCount, 1u);
         return nanValue;
