@@ -104,23 +104,49 @@ mat3 leanFrame(vec3 V) {
 // Covariance (xx, yy, xy) from first and second moments.
 vec3 leanCovariance(vec2 B, vec3 M) { return vec3(M.x - B.x * B.x, M.y - B.y * B.y, M.z - B.x * B.y); }
 
-// Symmetric 2x2 (xx, yy, xy) with both eigenvalues clamped into
-// [kLeanMinVariance, kLeanMaxVariance]; non-finite or absurd entries give
-// the widest isotropic lobe.
-vec3 leanClampCovariance(vec3 S) {
-    // abs(NaN) <= x and abs(Inf) <= x are false: one test catches both.
-    if (!all(lessThanEqual(abs(S), vec3(1e6)))) return vec3(kLeanMaxVariance, kLeanMaxVariance, 0.0);
-    float mean = 0.5 * (S.x + S.y);
-    float halfDifference = 0.5 * (S.x - S.y);
-    float radius = sqrt(halfDifference * halfDifference + S.z * S.z);
-    // (cos 2t, sin 2t) of the major axis; any axis when isotropic.
-    vec2 axis = radius > 1e-12 ? vec2(halfDifference, S.z) / radius : vec2(1.0, 0.0);
-    float major = clamp(mean + radius, kLeanMinVariance, kLeanMaxVariance);
-    float minor = clamp(mean - radius, kLeanMinVariance, kLeanMaxVariance);
+// A symmetric 2x2 (xx, yy, xy) with both eigenvalues clamped into
+// [kLeanMinVariance, kLeanMaxVariance], with its inverse and determinant taken
+// from those eigenvalues. Non-finite or absurd entries give the widest
+// isotropic lobe. Why not det = xx yy - xy^2 of the result: with eigenvalues
+// 1e4 and 1e-4 that difference of two ~1e8 products has a rounding error of
+// several units in fp32, so it came out <= 0 and sqrt(det) NaN (stress seed
+// 1212: 38 NaN in the lean specular pass).
+struct LeanCovariance {
+    vec3 covariance;  // (xx, yy, xy)
+    vec3 inverse;     // (xx, yy, xy) of the inverse
+    float determinant;
+};
+
+// (xx, yy, xy) of the symmetric matrix with eigenvalues major, minor and the
+// major axis at angle t, axis = (cos 2t, sin 2t).
+vec3 leanSymmetric(float major, float minor, vec2 axis) {
     float centre = 0.5 * (major + minor);
     float spread = 0.5 * (major - minor);
     return vec3(centre + spread * axis.x, centre - spread * axis.x, spread * axis.y);
 }
+
+LeanCovariance leanClampCovarianceWithInverse(vec3 S) {
+    // abs(NaN) <= x and abs(Inf) <= x are false: one test catches both.
+    vec2 axis = vec2(1.0, 0.0);  // any axis when isotropic
+    float major = kLeanMaxVariance;
+    float minor = kLeanMaxVariance;
+    if (all(lessThanEqual(abs(S), vec3(1e6)))) {
+        float mean = 0.5 * (S.x + S.y);
+        float halfDifference = 0.5 * (S.x - S.y);
+        float radius = sqrt(halfDifference * halfDifference + S.z * S.z);
+        if (radius > 1e-12) axis = vec2(halfDifference, S.z) / radius;
+        major = clamp(mean + radius, kLeanMinVariance, kLeanMaxVariance);
+        minor = clamp(mean - radius, kLeanMinVariance, kLeanMaxVariance);
+    }
+    LeanCovariance result;
+    result.covariance = leanSymmetric(major, minor, axis);
+    // The inverse: the same axes, the reciprocal eigenvalues.
+    result.inverse = leanSymmetric(1.0 / major, 1.0 / minor, axis);
+    result.determinant = major * minor;
+    return result;
+}
+
+vec3 leanClampCovariance(vec3 S) { return leanClampCovarianceWithInverse(S).covariance; }
 
 // A slope with NaN replaced by 0 and the magnitude kept below kLeanMaxSlope.
 vec2 leanSafeSlope(vec2 B) {
@@ -162,7 +188,7 @@ struct LeanLobe {
 // The lobe of pixel-frame moments (B, M) seen along unit view-space V.
 LeanLobe leanLobe(vec2 B, vec3 M, vec3 V) {
     B = leanSafeSlope(B);
-    vec3 S = leanClampCovariance(leanCovariance(B, M));
+    LeanCovariance clamped = leanClampCovarianceWithInverse(leanCovariance(B, M));
     vec3 meanNormal = normalize(vec3(B, 1.0));  // in the pixel frame; z > 0 always
     // Back to the mean plane: its frame (rows T_m, B_m, N_m) is the smallest
     // rotation from the pixel frame's z onto N_m, and K = ds/du at u = 0 is
@@ -175,8 +201,9 @@ LeanLobe leanLobe(vec2 B, vec3 M, vec3 V) {
     // det S / det K^2 = det S N_m.z^6 (det K = 1 / N_m.z^3): no inverse of K.
     // S is clamped, so both are finite and positive.
     mat2 K = mat2((axes[0].xy - B * axes[0].z) / meanNormal.z, (axes[1].xy - B * axes[1].z) / meanNormal.z);
-    float determinant = S.x * S.y - S.z * S.z;
-    mat2 inverseS = mat2(S.y, -S.z, -S.z, S.x) / determinant;
+    float determinant = clamped.determinant;
+    vec3 Si = clamped.inverse;
+    mat2 inverseS = mat2(Si.x, Si.z, Si.z, Si.y);
     mat2 inverseMean = transpose(K) * inverseS * K;
     float cube = meanNormal.z * meanNormal.z * meanNormal.z;
 

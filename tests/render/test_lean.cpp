@@ -9,6 +9,7 @@
 #include "TestSupport.h"
 
 #include "gl/GlObjects.h"
+#include "gl/SanitiseCounters.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -203,17 +204,24 @@ gl::Texture hostileLeanTexture(bool first) {
     const float inf = INFINITY;
     // (B.x, B.y, M.xx, M.yy) / (M.xy, base variance): NaN, Inf, -Inf, huge,
     // negative variance, indefinite (|M.xy| > sqrt(M.xx M.yy)), a steep but
-    // valid slope, and ordinary values.
-    const glm::vec4 cells1[] = {{nan, 0.1f, 0.2f, nan},  {inf, -inf, inf, 1.0f}, {0.0f, 0.0f, -inf, -5.0f},
-                                {1e30f, -1e30f, 1e30f, 1e30f}, {0.5f, 0.5f, -2.0f, 0.1f}, {0.0f, 0.0f, 1.0f, 1.0f},
-                                {40.0f, -40.0f, 1600.0f, 1600.0f}, {0.1f, -0.2f, 0.02f, 0.05f}};
-    const glm::vec4 cells2[] = {{nan, nan, 0.0f, 1.0f}, {inf, -1.0f, 0.0f, 1.0f},  {-inf, 0.0f, 0.0f, 1.0f},
-                                {1e30f, 1e30f, 0.0f, 1.0f}, {0.0f, -3.0f, 0.0f, 1.0f}, {50.0f, 0.0f, 0.0f, 1.0f},
-                                {-1600.0f, 0.0f, 0.0f, 1.0f}, {-0.02f, 0.01f, 0.0f, 1.0f}};
+    // valid slope, ordinary values, and two indefinite covariances whose
+    // eigenvalues clamp to both limits (1e4 and 1e-4): their determinant as
+    // xx yy - xy^2 rounds to 0 or below in fp32 (stress seed 1212).
+    constexpr int kCells = 10;
+    const glm::vec4 cells1[kCells] = {
+        {nan, 0.1f, 0.2f, nan},      {inf, -inf, inf, 1.0f},  {0.0f, 0.0f, -inf, -5.0f},
+        {1e30f, -1e30f, 1e30f, 1e30f}, {0.5f, 0.5f, -2.0f, 0.1f}, {0.0f, 0.0f, 1.0f, 1.0f},
+        {40.0f, -40.0f, 1600.0f, 1600.0f}, {0.1f, -0.2f, 0.02f, 0.05f}, {0.0f, 0.0f, 5000.0f, 5000.0f},
+        {0.0f, 0.0f, 2000.0f, 8000.0f}};
+    const glm::vec4 cells2[kCells] = {
+        {nan, nan, 0.0f, 1.0f},     {inf, -1.0f, 0.0f, 1.0f}, {-inf, 0.0f, 0.0f, 1.0f},
+        {1e30f, 1e30f, 0.0f, 1.0f}, {0.0f, -3.0f, 0.0f, 1.0f}, {50.0f, 0.0f, 0.0f, 1.0f},
+        {-1600.0f, 0.0f, 0.0f, 1.0f}, {-0.02f, 0.01f, 0.0f, 1.0f}, {5100.0f, 0.0f, 0.0f, 1.0f},
+        {4100.0f, 0.0f, 0.0f, 1.0f}};
     std::vector<glm::vec4> texels(static_cast<size_t>(kSize * kSize));
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const size_t cell = static_cast<size_t>((x / 8 + y / 8) % 8);
+            const size_t cell = static_cast<size_t>((x / 8 + y / 8) % kCells);
             texels[static_cast<size_t>(y * kSize + x)] = first ? cells1[cell] : cells2[cell];
         }
     }
@@ -287,8 +295,18 @@ TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
         hostile.leanMap2 = hostileLeanTexture(false);
         TargetAudit audit;
         auditEveryTarget(*mRenderer, audit);
+        gl::SanitiseCounters& counters = mRenderer->sanitiseCounters();
+        counters.setCounting(true);
         for (Aov aov : {Aov::Final, Aov::Specular, Aov::Diffuse}) {
+            counters.reset();
             const Image image = render(aov, 160, 90);
+            // The G-buffer replaces the hostile texels (it counts them); the
+            // passes that evaluate the lobe from the stored moments get only
+            // finite values, so a NaN or Inf they replace is their own.
+            for (const gl::PassSanitised& pass : counters.passes()) {
+                if (pass.pass != "lean specular" && pass.pass != "composite") continue;
+                EXPECT_EQ(pass.counts.nonFinite(), 0u) << variant << " " << kAovs.name(aov) << ": " << pass.pass;
+            }
             EXPECT_EQ(test::countNonFinite(image), 0u) << variant << " " << kAovs.name(aov);
             float lowest = 0.0f, highest = 0.0f;
             for (const glm::vec4& t : image.texels) {
@@ -301,6 +319,7 @@ TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
                 EXPECT_GT(highest, 0.0f);  // the ordinary cells still shine
             }
         }
+        counters.setCounting(false);
         EXPECT_EQ(audit.nonFinite, 0u) << variant << ": first in " << audit.firstBad;
         EXPECT_GT(audit.leanTargetsWritten, 0u);
     }
