@@ -8,6 +8,7 @@
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "frame/Renderer.h"
+#include "scene/SceneLoader.h"
 #include "stress/InvariantFrame.h"
 #include "stress/InvariantJson.h"
 #include "stress/StressCases.h"
@@ -57,6 +58,9 @@ const char* const kHelp =
     "                case's frame runs is a usage error that lists the passes run\n"
     "  --plant-violation NAME  plant a wrong image for one detector (docs/stress.md):\n"
     "                  none|coverage|energy|black|ss-ts (default none)\n"
+    "  --failed-scenes DIR  write each failed case's scene, as its detectors saw\n"
+    "                it (after the last frame's move), to DIR/seed-N.json, to\n"
+    "                reproduce it with dermis render\n"
     "  --quiet         no progress\n"
     "  --help          this text\n"
     "\n"
@@ -81,6 +85,8 @@ struct CaseResult {
     std::vector<std::string> passes;
     bool planted = false;
     stress::InvariantReport invariants;
+    std::string sceneJson;  // the case's scene after its frames (scene/SceneLoader.h)
+    bool failed() const { return nonFinite > 0 || !error.empty() || invariants.anyViolated(); }
     // Wall-clock seconds by stage: loading the scene and creating the
     // renderer, the inspected frames, the detectors.
     double setUpSeconds = 0.0, frameSeconds = 0.0, detectorSeconds = 0.0;
@@ -170,6 +176,7 @@ CaseResult runCase(const stress::StressCase& c, const CaseOptions& options, stre
     }
     Scene scene = std::move(*loaded);  // outlives the renderer, which holds a reference
     renderCase(c, scene, options, totals, lap, result);
+    if (result.failed()) result.sceneJson = sceneToJson(scene);
     return result;
 }
 
@@ -182,7 +189,7 @@ std::string hex(uint64_t value) {
 }  // namespace
 
 int runStress(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan", "plant-violation"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan", "plant-violation", "failed-scenes"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -200,6 +207,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
     const std::string outPath = args->get("out", "out/stress.json");
     const bool quiet = args->flags.count("quiet") > 0;
     const std::string plantPass = args->get("plant-nan", "");
+    const std::string failedScenesDir = args->get("failed-scenes", "");
 
     auto context = gl::createHeadlessContext({*backend, false});
     if (!context.ok()) return failure(context.error());
@@ -250,7 +258,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
             for (const std::string& pass : r.passes) {
                 if (std::find(passesSeen.begin(), passesSeen.end(), pass) == passesSeen.end()) passesSeen.push_back(pass);
             }
-            if (r.nonFinite > 0 || !r.error.empty() || r.invariants.anyViolated()) {
+            if (r.failed()) {
                 ++failed;
                 nlohmann::ordered_json f;
                 f["seed"] = r.seed;
@@ -260,6 +268,15 @@ int runStress(const std::vector<std::string>& rawArgs) {
                 f["counts"] = r.counts;
                 f["error"] = r.error;
                 f["invariants"] = stress::violationsJson(r.invariants);
+                if (!failedScenesDir.empty() && !r.sceneJson.empty()) {
+                    const std::string path =
+                        (std::filesystem::path(failedScenesDir) / ("seed-" + std::to_string(r.seed) + ".json")).string();
+                    std::filesystem::create_directories(failedScenesDir, ec);
+                    if (const Status written = writeTextFileAtomically(path, r.sceneJson); written.ok())
+                        f["scene"] = path;
+                    else
+                        f["scene_error"] = written.error().message();
+                }
                 failures.push_back(f);
             }
             if (progress) {

@@ -37,20 +37,40 @@ float depthToleranceM(float z, float nearM, float farM) {
     return 8.0f * step + 1e-5f * z;
 }
 
-// Whether the triangle's smallest altitude on screen (pixels) is below
-// `minPx`; false when a corner is behind the camera (it is clipped, not snapped).
-bool thinnerOnScreenThan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::mat4& clipFromWorld,
-                         int width, int height, float minPx) {
-    glm::vec2 p[3];
+// The triangle's corners on screen in pixels from the image centre (y up);
+// false when a corner is behind the camera (it is clipped, not snapped).
+bool projectCorners(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::mat4& clipFromWorld,
+                    int width, int height, glm::vec2 p[3]) {
     const glm::vec3 corners[3] = {a, b, c};
     for (int i = 0; i < 3; ++i) {
         const glm::vec4 clip = clipFromWorld * glm::vec4(corners[i], 1.0f);
         if (!(clip.w > 0.0f)) return false;
         p[i] = glm::vec2(clip.x / clip.w * 0.5f * float(width), clip.y / clip.w * 0.5f * float(height));
     }
+    return true;
+}
+
+// Whether the projected triangle's smallest altitude (pixels) is below `minPx`.
+bool thinnerOnScreenThan(const glm::vec2 p[3], float minPx) {
     const float doubleArea = std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
     const float longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     return !(doubleArea >= minPx * longest);  // altitude = 2 area / longest edge
+}
+
+// Whether `sample` (same coordinates) lies within `minPx` of one of the
+// projected triangle's edge lines: the rasteriser's snapping of the corners
+// may move the edge across it (stress seed 5689: a character 1/5 pixel wide
+// whose edge passed 0.002 pixel inside a pixel centre, which the rasteriser
+// left uncovered).
+bool nearerToAnEdgeThan(const glm::vec2 p[3], const glm::vec2& sample, float minPx) {
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec2 edge = p[(i + 1) % 3] - p[i];
+        const float length = glm::length(edge);
+        if (!(length > 0.0f)) return true;
+        const glm::vec2 offset = sample - p[i];
+        if (std::abs(edge.x * offset.y - edge.y * offset.x) < minPx * length) return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -170,8 +190,12 @@ std::vector<RaySample> SceneRays::sample(int width, int height) const {
                 s.depthToleranceM = depthToleranceM(nearest.t, camera.nearM, camera.farM);
                 const CharacterMesh& m = mCharacters[size_t(s.character)];
                 const size_t t = nearest.triangle;
-                if (thinnerOnScreenThan(m.cornersM[3 * t], m.cornersM[3 * t + 1], m.cornersM[3 * t + 2], clipFromWorld,
-                                        width, height, kMinTrianglePx))
+                glm::vec2 corners[3];
+                const glm::vec2 samplePx(float(x) + 0.5f - 0.5f * float(width), 0.5f * float(height) - float(y) - 0.5f);
+                if (projectCorners(m.cornersM[3 * t], m.cornersM[3 * t + 1], m.cornersM[3 * t + 2], clipFromWorld, width,
+                                   height, corners) &&
+                    (thinnerOnScreenThan(corners, kMinTrianglePx) ||
+                     nearerToAnEdgeThan(corners, samplePx, kMinTrianglePx)))
                     s.ambiguous = true;
                 s.lit = ambientLights();
                 if (!s.lit && m.predictLights) {

@@ -80,7 +80,9 @@ struct RaySample {
     // The ray is not used: its hit lies within the depth buffer's precision
     // of the near or far plane (the engine may keep or clip it), or on a
     // triangle thinner on screen than kMinTrianglePx, which the rasteriser's
-    // snapping of vertices to its sub-pixel grid may collapse to nothing.
+    // snapping of vertices to its sub-pixel grid may collapse to nothing, or
+    // within kMinTrianglePx of the triangle's edge, which that snapping may
+    // move across the pixel centre.
     bool ambiguous = false;
     // Predicted lit: the hit receives light by an independent CPU computation
     // (ambient without SSAO, or an unshadowed light with N.L > 0 and radiance > 0).
