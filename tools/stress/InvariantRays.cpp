@@ -1,6 +1,7 @@
 #include "stress/InvariantRays.h"
 
 #include "include/SharedConstants.glsl"
+#include "brdf/EnergyTable.h"
 #include "reference/PixelSampling.h"
 #include "render/SceneGeometry.h"
 
@@ -23,6 +24,10 @@ constexpr float kMinNDotL = 0.5f;
 // point: with an albedo of 1/255 and an SSS blur, smaller light may round to
 // zero in fp16 targets.
 constexpr float kMinIrradiance = 1e-3f;
+// A hit whose diffuse share towards the eye is below this is not predicted
+// lit: the share multiplies the radiance, and 1e-3 of fp16-clamped light
+// is still far above zero, so this only drops hits the model makes black.
+constexpr float kMinDiffuseLeft = 1e-3f;
 // A spot must hold the point this far inside its inner cone (degrees).
 constexpr float kSpotMarginDeg = 1.0f;
 // Shadow rays start this far off the surface, relative to the point's distance from the origin.
@@ -87,6 +92,8 @@ Result<SceneRays> SceneRays::create(const Scene& scene) {
         const glm::mat3 normalFromObject = glm::inverseTranspose(glm::mat3(worldFromObject));
         CharacterMesh m;
         m.predictLights = character.material.normalMap.empty();
+        m.rhoS = character.material.rhoS;
+        m.roughness = character.material.roughness;
         for (uint32_t index : mesh.indices) {
             if (index >= mesh.vertices.size()) return makeError("character '" + character.name + "'", "mesh index out of range");
             const Vertex& v = mesh.vertices[index];
@@ -113,6 +120,19 @@ bool SceneRays::ambientLights() const {
     const RenderSettings& settings = mScene->settings;
     const float ambient = std::max(settings.ambient.r, std::max(settings.ambient.g, settings.ambient.b));
     return ambient >= kMinIrradiance && !settings.ssao.enabled;  // AO = 1 everywhere
+}
+
+// With energy conservation on, the diffuse leaving towards the eye is scaled
+// by 1 - rho_s rho_dt(N.V, m) (Kelemen & Szirmay-Kalos 2001; EnergyConservation.glsl),
+// which reaches 0 at grazing angles when rho_s is 1 and the lobe smooth
+// (stress seed 325: a quad seen 4 degrees from edge-on, rho_s 1, m 0.05, black
+// by the model, not by a fault). Where a normal map or a zero normal may turn
+// N anywhere, the most grazing angle is assumed.
+float SceneRays::diffuseLeftTowards(const CharacterMesh& m, const glm::vec3& shadingNormal,
+                                    const glm::vec3& toEye) const {
+    if (!mScene->settings.energyConservation) return 1.0f;
+    const float cosine = m.predictLights ? std::clamp(glm::dot(shadingNormal, toEye), 0.0f, 1.0f) : 0.0f;
+    return 1.0f - m.rhoS * rhoDt(cosine, m.roughness);
 }
 
 bool SceneRays::lightReaches(const glm::vec3& pointM, const glm::vec3& geometricNormal,
@@ -197,20 +217,19 @@ std::vector<RaySample> SceneRays::sample(int width, int height) const {
                     (thinnerOnScreenThan(corners, kMinTrianglePx) ||
                      nearerToAnEdgeThan(corners, samplePx, kMinTrianglePx)))
                     s.ambiguous = true;
-                s.lit = ambientLights();
-                if (!s.lit && m.predictLights) {
-                    const glm::vec3 p0 = m.cornersM[3 * t], p1 = m.cornersM[3 * t + 1], p2 = m.cornersM[3 * t + 2];
-                    glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-                    glm::vec3 ns = (1.0f - nearest.u - nearest.v) * m.cornerNormals[3 * t] +
-                                   nearest.u * m.cornerNormals[3 * t + 1] + nearest.v * m.cornerNormals[3 * t + 2];
-                    ns = glm::length(ns) > 1e-12f ? glm::normalize(ns) : ng;
-                    // The engine flips the normal on back faces (gl_FrontFacing).
-                    if (glm::dot(ng, ray.direction) > 0.0f) {
-                        ng = -ng;
-                        ns = -ns;
-                    }
-                    s.lit = lightReaches(ray.origin + ray.direction * nearest.t, ng, ns);
+                const glm::vec3 p0 = m.cornersM[3 * t], p1 = m.cornersM[3 * t + 1], p2 = m.cornersM[3 * t + 2];
+                glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+                glm::vec3 ns = (1.0f - nearest.u - nearest.v) * m.cornerNormals[3 * t] +
+                               nearest.u * m.cornerNormals[3 * t + 1] + nearest.v * m.cornerNormals[3 * t + 2];
+                ns = glm::length(ns) > 1e-12f ? glm::normalize(ns) : ng;
+                // The engine flips the normal on back faces (gl_FrontFacing).
+                if (glm::dot(ng, ray.direction) > 0.0f) {
+                    ng = -ng;
+                    ns = -ns;
                 }
+                s.lit = ambientLights();
+                if (!s.lit && m.predictLights) s.lit = lightReaches(ray.origin + ray.direction * nearest.t, ng, ns);
+                if (diffuseLeftTowards(m, ns, -glm::normalize(ray.direction)) < kMinDiffuseLeft) s.lit = false;
             }
             samples.push_back(std::move(s));
         }

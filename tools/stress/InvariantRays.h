@@ -29,7 +29,10 @@ private:
         std::vector<glm::vec3> cornersM;       // three per triangle
         std::vector<glm::vec3> cornerNormals;  // world space, three per triangle, not normalised
         bool predictLights = true;             // false when a normal map or a zero normal may turn N anywhere
+        float rhoS = 0.0f;                     // the material's specular intensity and Beckmann m
+        float roughness = 0.0f;
     };
+    float diffuseLeftTowards(const CharacterMesh& m, const glm::vec3& shadingNormal, const glm::vec3& toEye) const;
     bool ambientLights() const;
     bool lightReaches(const glm::vec3& pointM, const glm::vec3& geometricNormal, const glm::vec3& shadingNormal) const;
     bool occluded(const glm::vec3& fromM, const glm::vec3& toLight, float distanceM) const;
