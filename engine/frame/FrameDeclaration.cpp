@@ -32,7 +32,12 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
         graph::TextureHandle diffuse;
         LeanShading lean;
         if (plan.textureSpace) {
-            diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance, black);
+            // Characters texture space cannot run (render/TsPlan.h) get the
+            // screen-space chain, whose result the accumulation starts from.
+            graph::TextureHandle base = lighting.irradiance;
+            if (plan.ts.anyVisibleFallback()) base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets()).diffuse;
+            diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance, base,
+                                            black);
         } else {
             const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());
             diffuse = chain.diffuse;

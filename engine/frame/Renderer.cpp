@@ -39,10 +39,21 @@ Renderer::Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene
       mBackend(mProfiler),
       mResources(std::make_unique<FrameResources>(mGpuScene, *mPrograms, mBackend.framebuffers())) {}
 
+// Once per character, when texture-space mode first plans it.
+void Renderer::warnOfFallbacks(const FramePlan& plan) {
+    if (mScene.settings.mode != SssMode::TextureSpace) return;
+    for (const TsCharacterPlan& character : plan.ts.characters) {
+        if (character.fallback.empty() || !mWarnedFallbacks.insert(character.character).second) continue;
+        log::warn(mScene.path + ": character '" + character.label + "' falls back to screen-space SSS in texture-space mode: " +
+                  character.fallback);
+    }
+}
+
 Status Renderer::renderFrame(const FrameRequest& request) {
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     mPlan = std::move(*plan);
+    warnOfFallbacks(*mPlan);
     mBackend.sanitiseCounters().bind();  // the prepare step's shaders include Sanitise.glsl too
     if (const Status prepared = mResources->prepare(*mPlan, mGeometry); !prepared.ok()) return prepared;
     mOutputAov = request.aov;
@@ -80,7 +91,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     if (!plan.ok()) return plan.error();
     plan->aov = mLastRequest.aov;
     for (TsCharacterPlan& character : plan->ts.characters) {
-        character.visible = mScene.settings.sss.enabled;
+        character.visible = mScene.settings.sss.enabled && character.fallback.empty();
         character.size = sizeTexels;
     }
     mBackend.sanitiseCounters().bind();

@@ -25,6 +25,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace dermis {
 
@@ -77,6 +78,7 @@ public:
 
 private:
     Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, std::shared_ptr<Programs> programs);
+    void warnOfFallbacks(const FramePlan& plan);
 
     const Scene& mScene;
     SceneGeometry mGeometry;
@@ -91,6 +93,7 @@ private:
     Aov mOutputAov = Aov::Final;
     FrameRequest mLastRequest;
     uint64_t mFrame = 0;
+    std::set<int> mWarnedFallbacks;  // characters whose texture-space fall-back was logged
 };
 
 }  // namespace dermis

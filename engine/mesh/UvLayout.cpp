@@ -43,6 +43,7 @@ float percentile(std::vector<float> values, float fraction) {
 void accumulateDerivatives(const MeshData& mesh, UvLayout& out) {
     const size_t n = mesh.vertices.size();
     std::vector<float> weights(n, 0.0f);
+    double surfaceArea = 0.0, uvlessArea = 0.0;
     out.dPdu.assign(n, glm::vec3(0.0f));
     out.dPdv.assign(n, glm::vec3(0.0f));
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -55,8 +56,12 @@ void accumulateDerivatives(const MeshData& mesh, UvLayout& out) {
         const glm::vec2 d2 = mesh.vertices[i[2]].uv - a.uv;
         const float det = d1.x * d2.y - d2.x * d1.y;
         const float spatialArea = glm::length(glm::cross(e1, e2));
-        if (std::abs(det) < kDegenerateUvArea || !(spatialArea > kDegenerateArea * (glm::dot(e1, e1) + glm::dot(e2, e2))))
+        if (!(spatialArea > kDegenerateArea * (glm::dot(e1, e1) + glm::dot(e2, e2)))) continue;
+        surfaceArea += spatialArea;
+        if (!(std::abs(det) >= kDegenerateUvArea)) {
+            uvlessArea += spatialArea;
             continue;
+        }
         // P(uv) is linear over the triangle: [e1 e2] = [dP/du dP/dv] [d1 d2].
         const glm::vec3 dPdu = (e1 * d2.y - e2 * d1.y) / det;
         const glm::vec3 dPdv = (e2 * d1.x - e1 * d2.x) / det;
@@ -69,6 +74,7 @@ void accumulateDerivatives(const MeshData& mesh, UvLayout& out) {
             weights[v] += weight;
         }
     }
+    out.uvlessSurfaceFraction = surfaceArea > 0.0 ? float(uvlessArea / surfaceArea) : 1.0f;
     for (size_t v = 0; v < n; ++v) {
         if (weights[v] > 0.0f) {
             out.dPdu[v] /= weights[v];

@@ -40,6 +40,11 @@ struct UvLayout {
     // lower percentile, or min(|dP/du|, |dP/dv|), would be ruled by the
     // singular points of a layout such as a sphere's poles).
     float denseStretch = 0.0f;
+    // The share of the surface (spatial area; triangles degenerate in space
+    // left out) on triangles with no area in UV: a mesh without TEXCOORD_0
+    // (every UV 0) has 1, a usable layout 0. An irradiance texture cannot
+    // hold light for such triangles (render/TsPlan.h falls back).
+    float uvlessSurfaceFraction = 0.0f;
 };
 
 // A border vertex that no edge path reaches keeps this distance.

@@ -15,18 +15,20 @@ struct GatherData {
     graph::TextureHandle tsm, depthStencil, albedo, depthKey, irradiance, accumulatedIn, accumulatedOut;
 };
 
-graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle irradiance) {
-    const bool anyVisible = frame.plan.ts.anyVisible();
+// The accumulation starts as `base`: the lighting's irradiance, or the
+// screen-space chain's result when a character falls back to it.
+graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& frame, graph::TextureHandle base) {
+    const bool anyRuns = frame.plan.ts.anyRuns();
     return graph
         .addPass<InitData>(
             "ts init",
             [&](graph::PassBuilder& builder, InitData& d) {
-                d.irradiance = builder.read(irradiance);
-                // The same format as the irradiance, for the copy.
-                d.accumulated = builder.create("ts accumulated", builder.desc(irradiance));
-                builder.passThrough(d.accumulated, irradiance);
+                d.irradiance = builder.read(base);
+                // The same format as the base, for the copy.
+                d.accumulated = builder.create("ts accumulated", builder.desc(base));
+                builder.passThrough(d.accumulated, base);
                 builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
-                builder.skipIf(!anyVisible, "no texture-space character on screen");
+                builder.skipIf(!anyRuns, "no texture-space character on screen");
             },
             [frame](const graph::PassResources& resources, const InitData& d) {
                 glCopyImageSubData(resources.texture(d.irradiance), GL_TEXTURE_2D, 0, 0, 0, 0,
@@ -53,7 +55,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 d.irradiance = builder.read(irradiance);
                 d.accumulatedIn = builder.read(accumulated);
                 d.accumulatedOut = builder.write(accumulated);
-                builder.skipIf(!plan.visible, "character off screen");
+                builder.skipIf(!plan.runs(), plan.skipReason());
             },
             [frame, plan](const graph::PassResources& resources, const GatherData& d) {
                 gl::Attachments attachments;
@@ -98,8 +100,8 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
-                                           graph::TextureHandle black) {
-    graph::TextureHandle accumulated = addInitPass(graph, frame, irradiance);
+                                           graph::TextureHandle base, graph::TextureHandle black) {
+    graph::TextureHandle accumulated = addInitPass(graph, frame, base);
     for (const TsCharacterPlan& plan : frame.plan.ts.characters) {
         const graph::TextureHandle tsm = addTsmPass(graph, frame, plan, black);
         const graph::TextureHandle stretch = addTsStretchPass(graph, frame, plan);
@@ -116,7 +118,7 @@ graph::TextureHandle addTsAovPasses(graph::RenderGraph& graph, const FrameContex
                                     graph::TextureHandle ambientOcclusion, graph::TextureHandle none) {
     const auto& characters = frame.plan.ts.characters;
     const auto first =
-        std::find_if(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.visible; });
+        std::find_if(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.runs(); });
     if (first == characters.end()) return none;
     if (frame.plan.aov == Aov::Stretch) return addTsStretchPass(graph, frame, *first);
     const graph::TextureHandle tsm = addTsmPass(graph, frame, *first, none);

@@ -43,12 +43,14 @@ constexpr float kTsThicknessPerMm = 0.1f;
 constexpr int kTsmGaussians = 3;
 
 // Declares the passes of FramePlan::ts. `irradiance` is the lighting pass's
-// diffuse irradiance (before the screen-space transmittance); `black` an
+// diffuse irradiance (before the screen-space transmittance); `base` what the
+// accumulation starts from: the same irradiance, or the screen-space chain's
+// result when a character falls back to it (render/TsPlan.h); `black` an
 // imported 1x1 black texture (the TSM of a character without one).
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
-                                           graph::TextureHandle black);
+                                           graph::TextureHandle base, graph::TextureHandle black);
 
 // The UV-space AOVs (render/Aov.h), in either SSS mode: the stretch map, or
 // the irradiance texture before dilation and blurs, of the first SSS character

@@ -48,8 +48,6 @@ void beginUvRaster(const FrameContext& frame, GLuint texture, int size) {
     glDisable(GL_CULL_FACE);
 }
 
-const char* const kOffScreen = "character off screen";
-
 // The mean of f (1 - f) for f uniform in [0, 1].
 constexpr float kBilinearVarianceTexels2 = 1.0f / 6.0f;
 
@@ -100,7 +98,7 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& f
                 d.tsm = builder.create(name, {side, side, graph::TextureFormat::Rgba32F});
                 d.depth = builder.create(name + " depth", {side, side, graph::TextureFormat::Depth32F});
                 builder.passThrough(d.tsm, black);
-                builder.skipIf(!plan.visible, kOffScreen);
+                builder.skipIf(!plan.runs(), plan.skipReason());
                 builder.skipIf(!frame.plan.scene->settings.ts.tsm, "translucent shadow map off");
                 builder.skipIf(!frame.plan.scene->settings.transmittance.enabled, "transmittance disabled");
                 builder.skipIf(plan.tsmLight < 0, "no shadow-casting light behind the character");
@@ -135,7 +133,7 @@ graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, const FrameCont
             name,
             [&](graph::PassBuilder& builder, StretchData& d) {
                 d.stretch = builder.create(name, uvDesc(plan, graph::TextureFormat::Rg16F));
-                builder.skipIf(!plan.visible, kOffScreen);
+                builder.skipIf(!plan.runs(), plan.skipReason());
             },
             [frame, plan](const graph::PassResources& resources, const StretchData& d) {
                 beginUvRaster(frame, resources.texture(d.stretch), plan.size);
@@ -159,7 +157,7 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameCon
                 d.depthKey = builder.read(gbuffer.depthKey);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
-                builder.skipIf(!plan.visible, kOffScreen);
+                builder.skipIf(!plan.runs(), plan.skipReason());
             },
             [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
@@ -186,7 +184,7 @@ graph::TextureHandle addDilatePass(graph::RenderGraph& graph, const FrameContext
             [&](graph::PassBuilder& builder, FilterData& d) {
                 d.in = builder.read(irradiance);
                 d.out = builder.create(tsPassName(plan, "dilated"), uvDesc(plan, graph::TextureFormat::Rgba16F));
-                builder.skipIf(!plan.visible, kOffScreen);
+                builder.skipIf(!plan.runs(), plan.skipReason());
             },
             [frame, plan](const graph::PassResources& resources, const FilterData& d) {
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
@@ -213,7 +211,7 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
         char narrow[96];
         std::snprintf(narrow, sizeof narrow, "%.2f texels wide where the layout is densest (under %.2f)",
                       double(step.widthTexels), double(kMinStepTexels));
-        const std::string why = !plan.visible ? std::string(kOffScreen) : std::string(narrow);
+        const std::string why = !plan.runs() ? plan.skipReason() : std::string(narrow);
         const auto run = [frame, plan](const graph::PassResources& resources, const FilterData& d,
                                         const gpu::TextureSpaceBlock& b) {
             uploadTsBlocks(frame, plan, b);

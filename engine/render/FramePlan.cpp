@@ -73,6 +73,7 @@ std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeomet
             const float mmPerUnit = glm::length(glm::vec3(plan.characters[c].worldFromObject[0])) * 1000.0f;
             input.mmPerUv = layout.medianStretch * mmPerUnit;
             input.denseMmPerUv = layout.denseStretch * mmPerUnit;
+            input.uvlessSurfaceFraction = layout.uvlessSurfaceFraction;
         }
         inputs.push_back(input);
     }
@@ -129,10 +130,9 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     planShadows(scene, shadows, plan);
 
     const bool textureSpaceMode = scene.settings.mode == SssMode::TextureSpace;
-    if (!textureSpaceMode) {
-        if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
-            return kernel.error();
-        }
+    // Also in texture-space mode, for the characters that fall back (render/TsPlan.h).
+    if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
+        return kernel.error();
     }
     plan.textureSpace = aovIsUvLayout(request.aov) || (textureSpaceMode && aovReadsSss(request.aov, plan.lean));
     if (plan.textureSpace) {

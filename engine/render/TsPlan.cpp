@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace dermis {
@@ -92,15 +93,26 @@ void planGaussians(TsCharacterPlan& plan, const SssSettings& sss, float denseMmP
         const float previous = i == 0 ? 0.0f : plan.gaussians[static_cast<size_t>(i - 1)].a;
         step.stepVarianceMm2 = plan.gaussians[static_cast<size_t>(i)].a - previous;
         step.widthTexels = std::sqrt(plan.gaussians[static_cast<size_t>(i)].a) * texelsPerMm;
-        step.skipped = !plan.visible || step.stepVarianceMm2 <= 0.0f || step.widthTexels < kMinStepTexels;
+        step.skipped = !plan.runs() || step.stepVarianceMm2 <= 0.0f || step.widthTexels < kMinStepTexels;
         plan.steps.push_back(step);
     }
 }
 
 }  // namespace
 
-bool TsPlan::anyVisible() const {
-    return std::any_of(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.visible; });
+std::string TsCharacterPlan::skipReason() const {
+    if (!visible) return "character off screen";
+    if (!fallback.empty()) return "falls back to screen space: " + fallback;
+    return "";
+}
+
+bool TsPlan::anyRuns() const {
+    return std::any_of(characters.begin(), characters.end(), [](const TsCharacterPlan& c) { return c.runs(); });
+}
+
+bool TsPlan::anyVisibleFallback() const {
+    return std::any_of(characters.begin(), characters.end(),
+                       [](const TsCharacterPlan& c) { return c.visible && !c.fallback.empty(); });
 }
 
 int tsTextureSize(float texels, int minSize, int maxSize) {
@@ -134,6 +146,13 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
         const ScreenFootprint footprint = screenFootprint(input.worldBounds, view);
         p.visible = settings.sss.enabled && footprint.visible;
         p.nearestViewDepthM = footprint.nearestViewDepthM;
+        if (!(input.uvlessSurfaceFraction <= kMaxUvlessSurfaceFraction)) {
+            char why[128];
+            std::snprintf(why, sizeof why, "%.0f%% of its surface has no UV area (limit %.0f%%%s)",
+                          100.0 * input.uvlessSurfaceFraction, 100.0 * kMaxUvlessSurfaceFraction,
+                          input.uvlessSurfaceFraction >= 1.0f ? "; the mesh has no TEXCOORD_0, or all UVs equal" : "");
+            p.fallback = why;
+        }
         const float pixelsPerMm =
             p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;
         p.size = tsTextureSize(input.mmPerUv * pixelsPerMm, settings.ts.minSize, settings.ts.maxSize);

@@ -26,6 +26,13 @@
 //    texture's alpha holds one thickness). It needs ts.tsm and
 //    transmittance.enabled, which means "light through thin regions" in
 //    both modes.
+//  - fall-back: a character whose UV layout cannot hold its light (more than
+//    kMaxUvlessSurfaceFraction of its surface on triangles with no UV area,
+//    as a mesh without TEXCOORD_0 has everywhere) is not run in texture
+//    space: its passes are skipped with the reason, and the frame blurs it
+//    with the screen-space chain instead (frame/FrameDeclaration.cpp), which
+//    the texture-space accumulation then starts from. The renderer warns once
+//    per character (frame/Renderer.cpp).
 
 #include "core/Result.h"
 #include "render/LightSetup.h"
@@ -46,6 +53,7 @@ struct TsCharacterInput {
     Bounds worldBounds;
     float mmPerUv = 0.0f;       // typical world length of one UV unit, mm (UvLayout::medianStretch, scaled)
     float denseMmPerUv = 0.0f;  // the same where the layout is densest (UvLayout::denseStretch, scaled)
+    float uvlessSurfaceFraction = 0.0f;  // UvLayout::uvlessSurfaceFraction
 };
 
 struct TsStep {
@@ -60,6 +68,11 @@ struct TsCharacterPlan {
     std::string label;   // names its passes: "ts <label> ..."; the character's name, made unique
     const DiffusionProfile* profile = nullptr;
     bool visible = false;
+    // Why it falls back to screen space; empty when texture space can run it.
+    std::string fallback;
+    bool runs() const { return visible && fallback.empty(); }
+    // Why its passes are skipped ("" when they run).
+    std::string skipReason() const;
     float nearestViewDepthM = 0.0f;
     int size = 0;        // irradiance texture side, texels (a power of two)
     // One per Gaussian used: rgb the weight (after folding), a the variance
@@ -76,12 +89,20 @@ struct TsCharacterPlan {
 
 struct TsPlan {
     std::vector<TsCharacterPlan> characters;  // the SSS characters, in scene order
-    bool anyVisible() const;
+    bool anyRuns() const;              // a character is run in texture space
+    bool anyVisibleFallback() const;   // a visible character falls back to screen space
 };
 
 // Smallest TSM side; the largest is min(irradiance size, kMaxTsmSize).
 constexpr int kMinTsmSize = 256;
 constexpr int kMaxTsmSize = 1024;
+// A character with more of its surface than this on triangles without UV
+// area falls back to screen space: those triangles get no texels, so the
+// irradiance texture has no light for them (a sphere without TEXCOORD_0 in
+// texture space had 26,413 of its 28,828 pixels under a quarter of the
+// screen-space value). 1% leaves room for a few collapsed slivers in a real
+// layout, which cost a few pixels of local (unscattered) light.
+constexpr float kMaxUvlessSurfaceFraction = 0.01f;
 // A Gaussian step narrower than this (std dev, texels) is not blurred.
 constexpr float kMinStepTexels = 0.5f;
 

@@ -1,6 +1,7 @@
 // Texture-space mode from the command line: `dermis render --mode`, what the
 // timings JSON says runs for characters on and off screen, and `dermis compare`.
 #include "TestSupport.h"
+#include "stress/StressCases.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -114,4 +115,41 @@ TEST(TextureSpaceCli, CompareWritesImagesHeatmapAndMetrics) {
     const ProcessResult missing = runProcess(kDermis + " compare " + dermis::test::contentScene("default.json") + " --quiet");
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_NE(missing.err.find("--out DIR is required"), std::string::npos) << missing.err;
+}
+
+// render/TsPlan.h: a character without TEXCOORD_0 falls back to screen space
+// out loud: one warning naming the file, the character and the reason over
+// all frames, and the timings JSON gives the reason for each skipped pass.
+TEST(TextureSpaceCli, CharacterWithoutUvsFallsBackWithOneWarning) {
+    TempDir dir;
+    ASSERT_TRUE(dermis::stress::writeStressAssets(dir.path().string()).ok());
+    const std::string scene = dir.file("bare.json");
+    dermis::test::writeTextFile(scene, R"({
+      "camera": {"position_m": [0, 0.25, 0.35], "target_m": [0, 0, 0], "vertical_fov_deg": 40},
+      "lights": [{"type": "directional", "direction": [0, -0.6, -1], "intensity": 1}],
+      "characters": [{"name": "bare", "mesh": {"gltf": "no_uvs.gltf"}, "material": {"profile": "skin"}}],
+      "settings": {"mode": "ts"}
+    })");
+    const std::string timings = dir.file("t.json");
+    const ProcessResult r = runProcess(kDermis + " render " + scene + " --size 160x90 --frames 3 --out " +
+                                       dir.file("x.png") + " --timings " + timings);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string warning = "warning: " + scene +
+                                ": character 'bare' falls back to screen-space SSS in texture-space mode: 100% of its "
+                                "surface has no UV area (limit 1%; the mesh has no TEXCOORD_0, or all UVs equal)\n";
+    const std::string output = r.out + r.err;
+    const size_t first = output.find(warning);
+    EXPECT_NE(first, std::string::npos) << output;
+    EXPECT_EQ(output.find(warning, first + 1), std::string::npos) << "warned more than once:\n" << output;
+
+    const nlohmann::json t = nlohmann::json::parse(dermis::test::readTextFile(timings));
+    int skipped = 0;
+    for (const auto& pass : t["passes"]) {
+        if (pass["name"].get<std::string>().rfind("ts bare", 0) != 0) continue;
+        ++skipped;
+        EXPECT_FALSE(pass["executed"].get<bool>());
+        EXPECT_NE(pass["culled_because"].get<std::string>().find("falls back to screen space"), std::string::npos);
+    }
+    EXPECT_GE(skipped, 4);
+    EXPECT_GT(passes(t, "sss ").first, 0);
 }

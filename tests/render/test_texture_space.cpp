@@ -17,6 +17,7 @@
 #include "procedural/ProceduralShapes.h"
 #include "scene/SceneLoader.h"
 #include "sss/DiffusionProfile.h"
+#include "stress/StressCases.h"
 
 #include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
@@ -792,4 +793,87 @@ TEST_F(TextureSpace, HeadScanHasNoDarkPixels) {
         std::printf("head scan, %s: %d pixels shown dark\n", scale, dark);
         EXPECT_EQ(dark, 0) << scale;
     }
+}
+
+namespace {
+
+// A 10 cm skin bump without TEXCOORD_0 (the stress assets' no_uvs.gltf) beside
+// the UV sphere, both lit from the camera's side.
+std::string writeUvlessScene(const test::TempDir& dir) {
+    EXPECT_TRUE(stress::writeStressAssets(dir.path().string()).ok());
+    test::writeTextFile(dir.file("bare.json"), R"({
+      "camera": {"position_m": [0, 0.25, 0.35], "target_m": [0, 0, 0], "vertical_fov_deg": 40},
+      "lights": [{"type": "directional", "direction": [0, -0.6, -1], "intensity": 1, "shadow": true}],
+      "characters": [
+        {"name": "bare", "mesh": {"gltf": "no_uvs.gltf"}, "transform": {"translation_m": [-0.07, 0, 0]},
+         "material": {"profile": "skin"}},
+        {"name": "ball", "mesh": {"procedural": "sphere"}, "transform": {"translation_m": [0.08, 0.03, 0], "scale": 0.5},
+         "material": {"profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0.05, 0.05, 0.05], "ssao": {"enabled": false}}
+    })");
+    return dir.file("bare.json");
+}
+
+}  // namespace
+
+// render/TsPlan.h: texture space cannot hold light for triangles without UV
+// area, so a character without TEXCOORD_0 falls back to the screen-space
+// chain in texture-space mode (issue: 26,413 of a UV-less sphere's 28,828
+// pixels came out under a quarter of the screen-space value), while the other
+// characters stay in texture space.
+TEST_F(TextureSpace, CharacterWithoutUvsFallsBackToScreenSpace) {
+    test::TempDir dir;
+    const std::string scene = writeUvlessScene(dir);
+    constexpr int kW = 160, kH = 90;
+    // Variant c: LEAN runs in screen-space mode only, and its G-buffer's
+    // roughness moves the diffuse's energy conservation by 3.5e-4.
+    load(scene, {"sss.variant=c"});
+    const Image ids = render(Aov::Object, kW, kH);
+    const Image screen = render(Aov::Diffuse, kW, kH);
+    load(scene, {"mode=ts", "sss.variant=c"});
+    const Image texture = render(Aov::Diffuse, kW, kH);
+
+    size_t bare = 0, ball = 0, dark = 0, ballDiffers = 0;
+    double worst = 0.0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const int id = static_cast<int>(std::lround(ids.at(x, y).r));
+            const glm::vec4 s = screen.at(x, y), t = texture.at(x, y);
+            if (id == 2) {
+                ++ball;
+                if (std::abs(t.r - s.r) > 1e-3f * s.r) ++ballDiffers;
+            }
+            if (id != 1) continue;
+            ++bare;
+            if (t.r < 0.25f * s.r) ++dark;
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(t[c] - s[c])) / std::max(double(s[c]), 1e-6));
+        }
+    }
+    std::printf("[ measured ] %zu pixels of the UV-less bump: %zu under 1/4 of screen space, largest relative "
+                "difference %.3g; the sphere (in texture space) differs at %zu of %zu\n",
+                bare, dark, worst, ballDiffers, ball);
+    ASSERT_GT(bare, 300u);
+    ASSERT_GT(ball, 300u);
+    EXPECT_EQ(dark, 0u);
+    // Its pixels are the screen-space chain's, copied: the same passes on the
+    // same inputs (measured: equal to the bit).
+    EXPECT_LT(worst, 1e-6);
+    // The sphere is still blurred in texture space, which differs from screen
+    // space by more than 1e-3 over much of it.
+    EXPECT_GT(ballDiffers, ball / 4);
+
+    int bareSkipped = 0;
+    for (const PassSummary& s : summary()) {
+        if (s.name.rfind("ts bare", 0) == 0) {
+            ++bareSkipped;
+            EXPECT_FALSE(s.executed) << s.name;
+            EXPECT_NE(s.culledBecause.find("falls back to screen space: 100% of its surface has no UV area"),
+                      std::string::npos)
+                << s.name << ": " << s.culledBecause;
+        }
+    }
+    EXPECT_GE(bareSkipped, 4);
+    EXPECT_TRUE(pass("ts ball gather") && pass("ts ball gather")->executed);
+    EXPECT_GT(executedWithPrefix(summary(), "sss "), 0) << "the screen-space chain runs for the fall-back";
 }

@@ -18,8 +18,10 @@ Scene defaultScene(const std::vector<std::string>& overrides = {}) {
     return scene.ok() ? *scene : Scene{};
 }
 
-TsPlan plan(const Scene& scene, int width = 640, int height = 360, Bounds bounds = kHeadBounds) {
-    std::vector<TsCharacterInput> inputs(scene.characters.size(), {bounds, kHeadMmPerUv, 300.0f});
+TsPlan plan(const Scene& scene, int width = 640, int height = 360, Bounds bounds = kHeadBounds,
+            float uvlessSurfaceFraction = 0.0f) {
+    std::vector<TsCharacterInput> inputs(scene.characters.size(),
+                                         {bounds, kHeadMmPerUv, 300.0f, uvlessSurfaceFraction});
     const LightSetup lights = setupLights(scene.lights, bounds, scene.settings.shadow);
     auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, width, height), lights);
     EXPECT_TRUE(result.ok()) << result.error().message();
@@ -84,13 +86,13 @@ TEST(TsPlan, OffScreenCharacterIsInvisibleAndSkipsEveryStep) {
     const TsPlan p = plan(defaultScene(), 640, 360, behindCamera);
     ASSERT_EQ(p.characters.size(), 1u);
     EXPECT_FALSE(p.characters[0].visible);
-    EXPECT_FALSE(p.anyVisible());
+    EXPECT_FALSE(p.anyRuns());
     for (const TsStep& step : p.characters[0].steps) EXPECT_TRUE(step.skipped);
 }
 
 TEST(TsPlan, DisabledSssMakesEveryCharacterInvisible) {
     const TsPlan p = plan(defaultScene({"sss.enabled=false"}));
-    EXPECT_FALSE(p.anyVisible());
+    EXPECT_FALSE(p.anyRuns());
 }
 
 TEST(TsPlan, DroppedGaussiansFoldIntoTheWidestKept) {
@@ -170,4 +172,28 @@ TEST(TsPlan, UnknownProfileIsAnError) {
     auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, 64, 36), LightSetup{});
     ASSERT_FALSE(result.ok());
     EXPECT_NE(result.error().what.find("jade"), std::string::npos);
+}
+
+// render/TsPlan.h: more than kMaxUvlessSurfaceFraction of the surface without
+// UV area falls back to screen space, with every step skipped and the reason.
+TEST(TsPlan, CharacterWithoutUvAreaFallsBackToScreenSpace) {
+    const TsPlan bare = plan(defaultScene(), 640, 360, kHeadBounds, 1.0f);
+    ASSERT_EQ(bare.characters.size(), 1u);
+    const TsCharacterPlan& c = bare.characters[0];
+    EXPECT_TRUE(c.visible);
+    EXPECT_FALSE(c.runs());
+    EXPECT_FALSE(bare.anyRuns());
+    EXPECT_TRUE(bare.anyVisibleFallback());
+    EXPECT_EQ(c.skipReason(),
+              "falls back to screen space: 100% of its surface has no UV area (limit 1%; the mesh has no TEXCOORD_0, "
+              "or all UVs equal)");
+    for (const TsStep& step : c.steps) EXPECT_TRUE(step.skipped);
+
+    const TsPlan partly = plan(defaultScene(), 640, 360, kHeadBounds, 0.25f);
+    EXPECT_EQ(partly.characters[0].fallback, "25% of its surface has no UV area (limit 1%)");
+
+    const TsPlan fine = plan(defaultScene(), 640, 360, kHeadBounds, 0.5f * kMaxUvlessSurfaceFraction);
+    EXPECT_TRUE(fine.characters[0].runs());
+    EXPECT_FALSE(fine.anyVisibleFallback());
+    EXPECT_EQ(fine.characters[0].skipReason(), "");
 }

@@ -115,3 +115,29 @@ TEST(UvLayout, SphereSeamAndPolesAreChartBorders) {
     const float expected = kSphereRadiusM * (glm::half_pi<float>() - glm::pi<float>() / 32.0f);
     EXPECT_NEAR(equatorFarSide, expected, 0.02f * expected);
 }
+
+// The share of the surface on triangles without UV area, against areas
+// worked out by hand.
+TEST(UvLayout, UvlessSurfaceFractionIsTheAreaShareOfTrianglesWithoutUvArea) {
+    EXPECT_EQ(analyseUvLayout(proceduralMesh("sphere")).uvlessSurfaceFraction, 0.0f);
+
+    MeshData bare = proceduralMesh("sphere");
+    for (Vertex& v : bare.vertices) v.uv = glm::vec2(0.0f);  // as a glTF without TEXCOORD_0 loads
+    EXPECT_EQ(analyseUvLayout(bare).uvlessSurfaceFraction, 1.0f);
+
+    // Two triangles in space, areas 1/2 and 3/2 (units^2): the second is
+    // collapsed to a line in UV, so 3/4 of the surface has no UV area. A third
+    // triangle degenerate in space (a repeated corner) counts for neither.
+    MeshData mesh;
+    const auto vertex = [](glm::vec3 p, glm::vec2 uv) {
+        Vertex v;
+        v.position = p;
+        v.uv = uv;
+        return v;
+    };
+    mesh.vertices = {vertex({0, 0, 0}, {0, 0}), vertex({1, 0, 0}, {1, 0}), vertex({0, 1, 0}, {0, 1}),
+                     vertex({0, 0, 1}, {0.5f, 0.5f}), vertex({3, 0, 1}, {0.5f, 0.5f}), vertex({0, 1, 1}, {0.7f, 0.7f}),
+                     vertex({5, 5, 5}, {0.1f, 0.9f})};
+    mesh.indices = {0, 1, 2, 3, 4, 5, 6, 6, 0};
+    EXPECT_NEAR(analyseUvLayout(mesh).uvlessSurfaceFraction, 0.75f, 1e-6f);
+}
