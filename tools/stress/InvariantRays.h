@@ -33,6 +33,8 @@ private:
         float roughness = 0.0f;
     };
     float diffuseLeftTowards(const CharacterMesh& m, const glm::vec3& shadingNormal, const glm::vec3& toEye) const;
+    // The character whose nearest hit along the ray lies in [nearM, farM]; -1 for none.
+    int nearestCharacter(const reference::Ray& ray, float nearM, float farM) const;
     bool ambientLights() const;
     bool lightReaches(const glm::vec3& pointM, const glm::vec3& geometricNormal, const glm::vec3& shadingNormal) const;
     bool occluded(const glm::vec3& fromM, const glm::vec3& toLight, float distanceM) const;
