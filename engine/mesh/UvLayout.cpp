@@ -142,10 +142,54 @@ void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
     for (size_t v = 0; v < n; ++v) out.borderDistance[v] = std::min(distance[nodeOfVertex[v]], kFarFromBorder);
 }
 
+// Rasterises every triangle's UV footprint onto texel centres of the grid
+// (half-open edge test, so a centre on an edge two triangles share counts
+// once) and returns the share of covered texels covered more than once.
+float overlapFraction(const MeshData& mesh) {
+    constexpr int n = kUvOverlapGrid;
+    std::vector<uint8_t> count(size_t(n) * n, 0);
+    const size_t vertices = mesh.vertices.size();
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const uint32_t i[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+        if (i[0] >= vertices || i[1] >= vertices || i[2] >= vertices) continue;
+        glm::vec2 p[3];
+        for (int k = 0; k < 3; ++k) p[k] = mesh.vertices[i[k]].uv * float(n);
+        const float area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+        if (!(std::abs(area) > 0.0f)) continue;
+        if (area < 0.0f) std::swap(p[1], p[2]);  // counter-clockwise
+        const float minX = std::min({p[0].x, p[1].x, p[2].x}), maxX = std::max({p[0].x, p[1].x, p[2].x});
+        const float minY = std::min({p[0].y, p[1].y, p[2].y}), maxY = std::max({p[0].y, p[1].y, p[2].y});
+        const int x0 = std::max(0, int(std::ceil(minX - 0.5f))), x1 = std::min(n - 1, int(std::floor(maxX - 0.5f)));
+        const int y0 = std::max(0, int(std::ceil(minY - 0.5f))), y1 = std::min(n - 1, int(std::floor(maxY - 0.5f)));
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+                const glm::vec2 c(float(x) + 0.5f, float(y) + 0.5f);
+                bool inside = true;
+                for (int k = 0; k < 3 && inside; ++k) {
+                    const glm::vec2 a = p[k], b = p[(k + 1) % 3];
+                    const float side = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+                    // Half-open: on an edge, inside only for edges pointing
+                    // up, or left along a horizontal (a top-left rule).
+                    inside = side > 0.0f || (side == 0.0f && (b.y > a.y || (b.y == a.y && b.x < a.x)));
+                }
+                uint8_t& texel = count[size_t(y) * n + size_t(x)];
+                if (inside && texel < 2) ++texel;
+            }
+        }
+    }
+    size_t covered = 0, overlapped = 0;
+    for (uint8_t c : count) {
+        covered += c > 0;
+        overlapped += c > 1;
+    }
+    return covered > 0 ? float(double(overlapped) / double(covered)) : 0.0f;
+}
+
 }  // namespace
 
 UvLayout analyseUvLayout(const MeshData& mesh) {
     UvLayout out;
+    out.uvOverlapFraction = overlapFraction(mesh);
     accumulateDerivatives(mesh, out);
     computeBorderDistances(mesh, out);
     std::vector<float> typical;

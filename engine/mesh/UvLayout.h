@@ -45,7 +45,16 @@ struct UvLayout {
     // (every UV 0) has 1, a usable layout 0. An irradiance texture cannot
     // hold light for such triangles (render/TsPlan.h falls back).
     float uvlessSurfaceFraction = 0.0f;
+    // The share of the texels of the unit UV square that the layout covers
+    // which more than one triangle covers (texel centres of a
+    // kUvOverlapGrid^2 grid; UVs outside [0, 1] cover nothing, as the
+    // irradiance texture clips them): mirrored or stacked charts share texels,
+    // and an irradiance texture can hold only one light per texel.
+    float uvOverlapFraction = 0.0f;
 };
+
+// The grid uvOverlapFraction is counted on.
+constexpr int kUvOverlapGrid = 512;
 
 // A border vertex that no edge path reaches keeps this distance.
 constexpr float kFarFromBorder = 1e6f;

@@ -74,6 +74,7 @@ std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeomet
             input.mmPerUv = layout.medianStretch * mmPerUnit;
             input.denseMmPerUv = layout.denseStretch * mmPerUnit;
             input.uvlessSurfaceFraction = layout.uvlessSurfaceFraction;
+            input.uvOverlapFraction = layout.uvOverlapFraction;
         }
         inputs.push_back(input);
     }

@@ -152,6 +152,13 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
                           100.0 * input.uvlessSurfaceFraction, 100.0 * kMaxUvlessSurfaceFraction,
                           input.uvlessSurfaceFraction >= 1.0f ? "; the mesh has no TEXCOORD_0, or all UVs equal" : "");
             p.fallback = why;
+        } else if (!(input.uvOverlapFraction <= kMaxUvOverlapFraction)) {
+            char why[128];
+            std::snprintf(why, sizeof why,
+                          "%.1f%% of its UV texels are covered by more than one triangle (limit %.0f%%): overlapping or "
+                          "mirrored UVs",
+                          100.0 * input.uvOverlapFraction, 100.0 * kMaxUvOverlapFraction);
+            p.fallback = why;
         }
         const float pixelsPerMm =
             p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;

@@ -19,9 +19,9 @@ Scene defaultScene(const std::vector<std::string>& overrides = {}) {
 }
 
 TsPlan plan(const Scene& scene, int width = 640, int height = 360, Bounds bounds = kHeadBounds,
-            float uvlessSurfaceFraction = 0.0f) {
+            float uvlessSurfaceFraction = 0.0f, float uvOverlapFraction = 0.0f) {
     std::vector<TsCharacterInput> inputs(scene.characters.size(),
-                                         {bounds, kHeadMmPerUv, 300.0f, uvlessSurfaceFraction});
+                                         {bounds, kHeadMmPerUv, 300.0f, uvlessSurfaceFraction, uvOverlapFraction});
     const LightSetup lights = setupLights(scene.lights, bounds, scene.settings.shadow);
     auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, width, height), lights);
     EXPECT_TRUE(result.ok()) << result.error().message();
@@ -196,4 +196,14 @@ TEST(TsPlan, CharacterWithoutUvAreaFallsBackToScreenSpace) {
     EXPECT_TRUE(fine.characters[0].runs());
     EXPECT_FALSE(fine.anyVisibleFallback());
     EXPECT_EQ(fine.characters[0].skipReason(), "");
+}
+
+// More than kMaxUvOverlapFraction of the covered texels covered twice falls back too.
+TEST(TsPlan, CharacterWithOverlappingUvsFallsBackToScreenSpace) {
+    const TsPlan overlapped = plan(defaultScene(), 640, 360, kHeadBounds, 0.0f, 0.848f);
+    EXPECT_FALSE(overlapped.characters[0].runs());
+    EXPECT_EQ(overlapped.characters[0].fallback,
+              "84.8% of its UV texels are covered by more than one triangle (limit 2%): overlapping or mirrored UVs");
+    for (const TsStep& step : overlapped.characters[0].steps) EXPECT_TRUE(step.skipped);
+    EXPECT_TRUE(plan(defaultScene(), 640, 360, kHeadBounds, 0.0f, 0.5f * kMaxUvOverlapFraction).characters[0].runs());
 }
