@@ -292,6 +292,7 @@ public:
         if (Status status = checkExtensions(); !status) return status.error();
         if (Status status = addScene(); !status) return status.error();
         if (mModel.mesh.triangleCount() == 0) return fail("no triangles in the scene");
+        warnOfUnappliedAnimation();
         if (Status status = loadMaps(); !status) return status.error();
         if (mModel.mesh.name.empty()) mModel.mesh.name = fs::path(mPath).stem().string();
         return std::move(mModel);
@@ -299,6 +300,28 @@ public:
 
 private:
     Error fail(const std::string& what) const { return makeError(mPath, what); }
+
+    // Skins, clips and morph targets are not applied yet (engine/anim holds
+    // the sampling and skinning); until they are, say so instead of dropping
+    // them silently.
+    void warnOfUnappliedAnimation() const {
+        size_t targets = 0;
+        for (const tinygltf::Mesh& mesh : mGltf.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives) targets = std::max(targets, primitive.targets.size());
+        std::vector<std::string> parts;
+        if (!mGltf.skins.empty()) parts.push_back(std::to_string(mGltf.skins.size()) + " skin(s)");
+        if (!mGltf.animations.empty()) {
+            std::string clips;
+            for (const tinygltf::Animation& animation : mGltf.animations)
+                clips += (clips.empty() ? "" : ", ") + (animation.name.empty() ? std::string("unnamed") : animation.name);
+            parts.push_back(std::to_string(mGltf.animations.size()) + " animation(s) (" + clips + ")");
+        }
+        if (targets > 0) parts.push_back(std::to_string(targets) + " morph target(s)");
+        if (parts.empty()) return;
+        std::string list;
+        for (size_t i = 0; i < parts.size(); ++i) list += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+        log::warn(mPath + ": " + list + " not applied yet: the mesh renders in its bind pose");
+    }
 
     Status checkExtensions() {
         for (const std::string& extension : mGltf.extensionsRequired) {

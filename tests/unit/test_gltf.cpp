@@ -710,3 +710,34 @@ TEST(GltfSharedContent, LeePerrySmithHead) {
     for (const Vertex& v : textured->mesh.vertices) positive += v.tangent.w > 0.0f ? 1 : 0;
     EXPECT_GT(positive, textured->mesh.vertices.size() * 9 / 10);
 }
+
+// Skins, clips and morph targets are not applied yet: the loader says so,
+// naming the clips, instead of dropping them silently (the issue found a
+// soldier's 2 skins and 4 clips dropped without a word).
+TEST_F(GltfTest, UnappliedAnimationIsNamedInOneWarning) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    const int times = b.accessor(std::vector<float>{0.0f, 1.0f}, kFloat, "SCALAR", 2);
+    const int offsets = b.vec3({0, 0, 0, 1, 0, 0});
+    b.doc["animations"] = {
+        {{"name", "Walk"},
+         {"samplers", {{{"input", times}, {"output", offsets}, {"interpolation", "LINEAR"}}}},
+         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}},
+        {{"name", "Run"},
+         {"samplers", {{{"input", times}, {"output", offsets}}}},
+         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}};
+    b.doc["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", offsets}}};
+    b.writeGltf(path("walk.gltf"));
+    ::testing::internal::CaptureStderr();
+    Result<Model> model = loadGltf(path("walk.gltf").string());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_NE(err.find("walk.gltf: 2 animation(s) (Walk, Run) and 1 morph target(s) not applied yet: the mesh "
+                       "renders in its bind pose"),
+              std::string::npos)
+        << err;
+
+    ::testing::internal::CaptureStderr();
+    quadBuilder(kUnsignedShort).writeGltf(path("still.gltf"));
+    ASSERT_TRUE(loadGltf(path("still.gltf").string()));
+    EXPECT_EQ(::testing::internal::GetCapturedStderr().find("not applied"), std::string::npos);
+}
