@@ -131,16 +131,19 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     planShadows(scene, shadows, plan);
 
     const bool textureSpaceMode = scene.settings.mode == SssMode::TextureSpace;
-    // Also in texture-space mode, for the characters that fall back (render/TsPlan.h).
-    if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
-        return kernel.error();
-    }
     plan.textureSpace = aovIsUvLayout(request.aov) || (textureSpaceMode && aovReadsSss(request.aov, plan.lean));
     if (plan.textureSpace) {
         auto ts = planTextureSpace(scene, textureSpaceInputs(scene, geometry, plan), plan.view, plan.lights);
         if (!ts.ok()) return ts.error();
         plan.ts = std::move(*ts);
         if (const Status kernel = planKernel(scene.settings.ts.taps, "ts.taps", plan.tsKernel); !kernel.ok()) {
+            return kernel.error();
+        }
+    }
+    // The screen-space chain's: its own mode's, or for the characters that
+    // fall back to it in texture-space mode (render/TsPlan.h).
+    if (!textureSpaceMode || plan.ts.anyVisibleFallback()) {
+        if (const Status kernel = planKernel(scene.settings.sss.taps, "sss.taps", plan.sssKernel); !kernel.ok()) {
             return kernel.error();
         }
     }
