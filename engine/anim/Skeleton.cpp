@@ -5,6 +5,7 @@
 namespace dermis {
 
 glm::mat4 NodeTransform::matrix() const {
+    if (hasFixedMatrix) return fixedMatrix;
     return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), scale);
 }
 

@@ -23,7 +23,11 @@ struct NodeTransform {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::vec3 scale{1.0f};
     std::vector<float> weights;  // morph target weights of the node's mesh
-    // T x R x S (glTF 2.0 §3.5.3).
+    // A node given as a matrix (glTF 2.0 §3.5.3 allows either; such a node
+    // must not be animated, which the loader checks) keeps it here.
+    bool hasFixedMatrix = false;
+    glm::mat4 fixedMatrix{1.0f};
+    // T x R x S (glTF 2.0 §3.5.3), or the fixed matrix.
     glm::mat4 matrix() const;
 };
 

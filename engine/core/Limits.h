@@ -54,6 +54,10 @@ constexpr double kMaxLightRadiance = 1e20;
 // a product beyond float range rendered nothing.
 constexpr double kMinMetresPerMeshUnit = 1e-6;
 constexpr double kMaxMetresPerMeshUnit = 1e6;
+// A character's animation (Character::animation): play times past 1e6 s
+// (11 days) leave a float clip time too coarse for keyframes 1/30 s apart.
+constexpr double kMaxAnimationTimeS = 1e6;
+constexpr double kMaxAnimationSpeed = 1e3;
 
 // Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
 constexpr int kMinTsSize = 64;

@@ -6,6 +6,7 @@
 #include "passes/LeanSpecularPass.h"
 #include "passes/LightingPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SkinningPass.h"
 #include "passes/SsaoPass.h"
 #include "passes/SssPasses.h"
 #include "passes/TextureSpacePasses.h"
@@ -21,6 +22,7 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
     const graph::TextureHandle white = graph.importTexture("white", solidDesc, inputs.white);
     const graph::TextureHandle black = graph.importTexture("black", solidDesc, inputs.black);
 
+    addSkinningPasses(graph, frame);
     const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, frame, inputs.shadowMaps);
     const GBuffer gbuffer = addGBufferPass(graph, frame);
     const graph::TextureHandle ambientOcclusion = addSsaoPasses(graph, frame, gbuffer, white);

@@ -2,6 +2,7 @@
 
 #include "passes/GBufferPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SkinningPass.h"
 #include "passes/SsaoPass.h"
 #include "passes/TsPassSteps.h"
 
@@ -20,6 +21,7 @@ void declareIrradianceCapture(graph::RenderGraph& graph, const FramePlan& plan, 
     const graph::TextureDesc solidDesc{1, 1, graph::TextureFormat::Rgba8};
     const graph::TextureHandle white = graph.importTexture("white", solidDesc, inputs.white);
     const graph::TextureHandle black = graph.importTexture("black", solidDesc, inputs.black);
+    addSkinningPasses(graph, frame);
     const std::vector<graph::TextureHandle> shadowMaps = addShadowPasses(graph, frame, inputs.shadowMaps);
     const GBuffer gbuffer = addGBufferPass(graph, frame);
     const graph::TextureHandle ambientOcclusion = addSsaoPasses(graph, frame, gbuffer, white);

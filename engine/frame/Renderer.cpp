@@ -53,6 +53,7 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     mPlan = std::move(*plan);
+    mPoseCache.markCurrent(*mPlan);
     warnOfFallbacks(*mPlan);
     mBackend.sanitiseCounters().bind();  // the prepare step's shaders include Sanitise.glsl too
     if (const Status prepared = mResources->prepare(*mPlan, mGeometry); !prepared.ok()) return prepared;
@@ -68,6 +69,7 @@ Status Renderer::renderFrame(const FrameRequest& request) {
     mBackend.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     recordShadowMaps(*mPlan, graph, mShadowCache);
+    mPoseCache.record(*mPlan, graph);
 
     mTimings.addPassReports(graph.passReports());
     mTimings.addTimings(mProfiler.takeCompleted());
@@ -90,6 +92,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     plan->aov = mLastRequest.aov;
+    mPoseCache.markCurrent(*plan);
     for (TsCharacterPlan& character : plan->ts.characters) {
         character.visible = mScene.settings.sss.enabled && character.fallback.empty();
         character.size = sizeTexels;
@@ -106,6 +109,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     mBackend.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     recordShadowMaps(*plan, graph, mShadowCache);
+    mPoseCache.record(*plan, graph);
     // Its pass timers are not the frame's.
     mProfiler.drain();
     mProfiler.takeCompleted();

@@ -20,6 +20,7 @@
 #include "render/GpuScene.h"
 #include "render/Programs.h"
 #include "render/SceneGeometry.h"
+#include "render/PoseCache.h"
 #include "render/ShadowCache.h"
 #include "scene/Scene.h"
 
@@ -73,6 +74,8 @@ public:
     const FrameTimings& timings() const { return mTimings; }
     void resetTimings() { mTimings = FrameTimings{}; }
     GpuScene& gpuScene() { return mGpuScene; }
+    // The CPU side of the scene's meshes: bounds, UV layouts, rigs and their clips.
+    const SceneGeometry& geometry() const { return mGeometry; }
     // The render graph's pooled transient targets (gl/TexturePool.h), in bytes.
     uint64_t texturePoolBytes() { return mBackend.pool().bytes(); }
 
@@ -87,6 +90,7 @@ private:
     gl::GpuProfiler mProfiler;
     gl::GlGraphBackend mBackend;
     ShadowCache mShadowCache;
+    PoseCache mPoseCache;
     std::unique_ptr<FrameResources> mResources;
     std::optional<FramePlan> mPlan;  // the frame being run: its passes read it while they execute
     FrameTimings mTimings;

@@ -93,7 +93,8 @@ Result<Program> buildProgram(const ProgramSource& source) {
         for (GLuint s : stages) glDeleteShader(s);
     };
     const std::pair<GLenum, const std::string*> files[] = {{GL_VERTEX_SHADER, &source.vertexFile},
-                                                           {GL_FRAGMENT_SHADER, &source.fragmentFile}};
+                                                           {GL_FRAGMENT_SHADER, &source.fragmentFile},
+                                                           {GL_COMPUTE_SHADER, &source.computeFile}};
     for (const auto& [stage, file] : files) {
         if (file->empty()) continue;
         auto text = loadShaderSource(*file, source.defines);
@@ -119,7 +120,8 @@ Result<Program> buildProgram(const ProgramSource& source) {
         glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, &length);
         std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
         glGetProgramInfoLog(program.get(), length, nullptr, log.data());
-        return makeError(source.vertexFile + " + " + source.fragmentFile, "link error: " + log);
+        return makeError(source.computeFile.empty() ? source.vertexFile + " + " + source.fragmentFile : source.computeFile,
+                         "link error: " + log);
     }
     return program;
 }

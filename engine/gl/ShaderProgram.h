@@ -24,6 +24,7 @@ struct ProgramSource {
     std::string vertexFile;    // relative to the shader folder
     std::string fragmentFile;  // empty for a depth-only program
     std::vector<ShaderDefine> defines;
+    std::string computeFile;   // a compute program: set this and leave the two above empty
 };
 
 std::string shaderDirectory();

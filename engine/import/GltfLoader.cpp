@@ -12,6 +12,11 @@
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
+// tiny_gltf.h guards its declarations only: the headers below include it again.
+#undef TINYGLTF_IMPLEMENTATION
+
+#include "import/GltfAccessors.h"
+#include "import/GltfRig.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -209,72 +214,11 @@ std::string describeLoadError(const std::string& err, const std::string& json) {
     return line.empty() ? "tinygltf could not load the file" : line;
 }
 
-const char* typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return "SCALAR";
-        case TINYGLTF_TYPE_VEC2:
-            return "VEC2";
-        case TINYGLTF_TYPE_VEC3:
-            return "VEC3";
-        case TINYGLTF_TYPE_VEC4:
-            return "VEC4";
-        default:
-            return "a matrix or unknown type";
-    }
-}
-
-float decodeComponent(const unsigned char* p, int componentType, bool normalized) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float value;
-            std::memcpy(&value, p, sizeof value);
-            return value;
-        }
-        case TINYGLTF_COMPONENT_TYPE_DOUBLE: {
-            double value;
-            std::memcpy(&value, p, sizeof value);
-            return static_cast<float>(value);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return normalized ? float(p[0]) / 255.0f : float(p[0]);
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            float value = float(static_cast<int8_t>(p[0]));
-            return normalized ? std::max(value / 127.0f, -1.0f) : value;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t value;
-            std::memcpy(&value, p, sizeof value);
-            return normalized ? float(value) / 65535.0f : float(value);
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            int16_t value;
-            std::memcpy(&value, p, sizeof value);
-            return normalized ? std::max(float(value) / 32767.0f, -1.0f) : float(value);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            uint32_t value;
-            std::memcpy(&value, p, sizeof value);
-            return normalized ? float(double(value) / 4294967295.0) : float(value);
-        }
-        default:
-            return 0.0f;
-    }
-}
-
 glm::vec3 normalizeOr(const glm::vec3& v, const glm::vec3& fallback) {
     float lengthSq = glm::dot(v, v);
     if (!(lengthSq > 1e-30f) || !std::isfinite(lengthSq)) return fallback;
     return v / std::sqrt(lengthSq);
 }
-
-struct AccessorView {
-    const unsigned char* data = nullptr;
-    size_t count = 0;
-    size_t stride = 0;
-    size_t componentSize = 0;
-    int components = 0;
-};
 
 // A primitive's triangle list before it joins the merged mesh.
 struct Piece {
@@ -286,13 +230,20 @@ struct Piece {
 class GltfConverter {
 public:
     GltfConverter(const tinygltf::Model& gltf, std::string path)
-        : mGltf(gltf), mPath(std::move(path)), mBaseDir(fs::absolute(mPath).parent_path()) {}
+        : mGltf(gltf),
+          mPath(std::move(path)),
+          mBaseDir(fs::absolute(mPath).parent_path()),
+          mAccessors(gltf, mPath) {}
 
     Result<Model> convert() {
         if (Status status = checkExtensions(); !status) return status.error();
+        if (GltfRigBuilder::wanted(mGltf)) {
+            mRig.emplace(mGltf, mAccessors, mPath);
+            if (Status status = mRig->readHierarchy(); !status) return status.error();
+        }
         if (Status status = addScene(); !status) return status.error();
         if (mModel.mesh.triangleCount() == 0) return fail("no triangles in the scene");
-        warnOfUnappliedAnimation();
+        if (mRig) mModel.rig = mRig->finish(mModel.mesh);
         if (Status status = loadMaps(); !status) return status.error();
         if (mModel.mesh.name.empty()) mModel.mesh.name = fs::path(mPath).stem().string();
         return std::move(mModel);
@@ -301,35 +252,24 @@ public:
 private:
     Error fail(const std::string& what) const { return makeError(mPath, what); }
 
-    // Skins, clips and morph targets are not applied yet (engine/anim holds
-    // the sampling and skinning); until they are, say so instead of dropping
-    // them silently.
-    void warnOfUnappliedAnimation() const {
-        size_t targets = 0;
-        for (const tinygltf::Mesh& mesh : mGltf.meshes)
-            for (const tinygltf::Primitive& primitive : mesh.primitives) targets = std::max(targets, primitive.targets.size());
-        std::vector<std::string> parts;
-        if (!mGltf.skins.empty()) parts.push_back(std::to_string(mGltf.skins.size()) + " skin(s)");
-        if (!mGltf.animations.empty()) {
-            std::string clips;
-            for (const tinygltf::Animation& animation : mGltf.animations)
-                clips += (clips.empty() ? "" : ", ") + (animation.name.empty() ? std::string("unnamed") : animation.name);
-            parts.push_back(std::to_string(mGltf.animations.size()) + " animation(s) (" + clips + ")");
-        }
-        if (targets > 0) parts.push_back(std::to_string(targets) + " morph target(s)");
-        if (parts.empty()) return;
-        std::string list;
-        for (size_t i = 0; i < parts.size(); ++i) list += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
-        log::warn(mPath + ": " + list + " not applied yet: the mesh renders in its bind pose");
-    }
-
+    // Required extensions it cannot honour are refused or named; optional
+    // ones it ignores are named in one warning.
     Status checkExtensions() {
+        const std::vector<std::string> supported = {"KHR_mesh_quantization"};
+        auto isSupported = [&](const std::string& e) { return std::find(supported.begin(), supported.end(), e) != supported.end(); };
         for (const std::string& extension : mGltf.extensionsRequired) {
-            if (extension == "KHR_mesh_quantization") continue;
+            if (isSupported(extension)) continue;
             if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression")
                 return fail("requires " + extension + ", which is not supported");
             log::warn(mPath + ": requires " + extension + ", which is ignored");
         }
+        std::string ignored;
+        for (const std::string& extension : mGltf.extensionsUsed) {
+            const bool required = std::find(mGltf.extensionsRequired.begin(), mGltf.extensionsRequired.end(), extension) !=
+                                  mGltf.extensionsRequired.end();
+            if (!required && !isSupported(extension)) ignored += (ignored.empty() ? "" : ", ") + extension;
+        }
+        if (!ignored.empty()) log::warn(mPath + ": uses " + ignored + ", which this loader ignores");
         return success();
     }
 
@@ -349,39 +289,9 @@ private:
     }
 
     Result<glm::mat4> localTransform(int index, const tinygltf::Node& node) const {
-        const std::string where = "node " + std::to_string(index);
-        glm::mat4 local(1.0f);
-        if (!node.matrix.empty()) {
-            if (node.matrix.size() != 16)
-                return fail(where + ": matrix has " + std::to_string(node.matrix.size()) + " values, not 16");
-            for (int i = 0; i < 16; ++i) local[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<size_t>(i)]);
-        } else {
-            if (!node.translation.empty() && node.translation.size() != 3)
-                return fail(where + ": translation needs 3 values");
-            if (!node.rotation.empty() && node.rotation.size() != 4) return fail(where + ": rotation needs 4 values");
-            if (!node.scale.empty() && node.scale.size() != 3) return fail(where + ": scale needs 3 values");
-            glm::vec3 translation(0.0f), scale(1.0f);
-            glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
-            for (int i = 0; i < 3 && !node.translation.empty(); ++i)
-                translation[i] = static_cast<float>(node.translation[static_cast<size_t>(i)]);
-            for (int i = 0; i < 3 && !node.scale.empty(); ++i)
-                scale[i] = static_cast<float>(node.scale[static_cast<size_t>(i)]);
-            if (!node.rotation.empty()) {
-                // glTF stores x, y, z, w; glm::quat's constructor takes w first.
-                rotation = glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-                                     static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
-                float length = glm::length(rotation);
-                if (!(length > 0.0f) || !std::isfinite(length))
-                    return fail(where + ": rotation is not a valid quaternion");
-                rotation = rotation / length;
-            }
-            local = glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
-                    glm::scale(glm::mat4(1.0f), scale);
-        }
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                if (!std::isfinite(local[c][r])) return fail(where + ": transform is not finite");
-        return local;
+        Result<NodeTransform> transform = readNodeTransform(node, index, mPath);
+        if (!transform) return transform.error();
+        return transform->matrix();
     }
 
     Status addScene() {
@@ -406,7 +316,7 @@ private:
                 if (static_cast<size_t>(node.mesh) >= mGltf.meshes.size())
                     return fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
                                 " is out of range");
-                if (Status status = addMesh(node.mesh, world); !status) return status;
+                if (Status status = addMesh(index, node.mesh, world); !status) return status;
             }
             for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
                 stack.emplace_back(*child, world);
@@ -414,103 +324,14 @@ private:
         return success();
     }
 
-    Status addMesh(int meshIndex, const glm::mat4& world) {
+    Status addMesh(int nodeIndex, int meshIndex, const glm::mat4& world) {
         const tinygltf::Mesh& mesh = mGltf.meshes[static_cast<size_t>(meshIndex)];
         if (mModel.mesh.name.empty()) mModel.mesh.name = mesh.name;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string where = "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p);
-            if (Status status = addPrimitive(where, mesh.primitives[p], world); !status) return status;
+            if (Status status = addPrimitive(where, mesh.primitives[p], nodeIndex, world); !status) return status;
         }
         return success();
-    }
-
-    Result<AccessorView> viewAccessor(int index, const std::string& where) const {
-        const std::string name = where + ": accessor " + std::to_string(index);
-        if (index < 0 || static_cast<size_t>(index) >= mGltf.accessors.size())
-            return fail(name + " is out of range (" + std::to_string(mGltf.accessors.size()) + " accessors)");
-        const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
-        if (accessor.sparse.isSparse) return fail(name + " is sparse, which is not supported");
-        int componentSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType));
-        int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
-        if (componentSize <= 0 || components <= 0) return fail(name + " has an invalid type or component type");
-        AccessorView view;
-        view.count = accessor.count;
-        view.componentSize = static_cast<size_t>(componentSize);
-        view.components = components;
-        if (accessor.count == 0) return view;
-        if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= mGltf.bufferViews.size())
-            return fail(name + " has no valid bufferView");
-        const tinygltf::BufferView& bufferView = mGltf.bufferViews[static_cast<size_t>(accessor.bufferView)];
-        const std::string viewName = "bufferView " + std::to_string(accessor.bufferView);
-        if (bufferView.buffer < 0 || static_cast<size_t>(bufferView.buffer) >= mGltf.buffers.size())
-            return fail(viewName + ": buffer " + std::to_string(bufferView.buffer) + " is out of range");
-        const std::vector<unsigned char>& buffer = mGltf.buffers[static_cast<size_t>(bufferView.buffer)].data;
-        if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
-            return fail(viewName + " (" + std::to_string(bufferView.byteLength) + " bytes at " +
-                        std::to_string(bufferView.byteOffset) + ") is outside its buffer of " +
-                        std::to_string(buffer.size()) + " bytes");
-        const size_t elementSize = view.componentSize * static_cast<size_t>(components);
-        view.stride = bufferView.byteStride == 0 ? elementSize : bufferView.byteStride;
-        if (view.stride < elementSize)
-            return fail(viewName + ": byteStride " + std::to_string(view.stride) + " is smaller than the " +
-                        std::to_string(elementSize) + "-byte elements of accessor " + std::to_string(index));
-        // Checked before anything is allocated: count is bounded by the view.
-        if (bufferView.byteLength < elementSize || accessor.byteOffset > bufferView.byteLength - elementSize ||
-            accessor.count - 1 > (bufferView.byteLength - elementSize - accessor.byteOffset) / view.stride)
-            return fail(name + " (" + std::to_string(accessor.count) + " elements) runs past the end of " + viewName);
-        view.data = buffer.data() + bufferView.byteOffset + accessor.byteOffset;
-        return view;
-    }
-
-    Result<std::vector<float>> readFloats(int index, int type, const std::string& where) const {
-        Result<AccessorView> view = viewAccessor(index, where);
-        if (!view) return view.error();
-        const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
-        const std::string name = where + ": accessor " + std::to_string(index);
-        if (accessor.type != type)
-            return fail(name + " is " + typeName(accessor.type) + ", expected " + typeName(type));
-        std::vector<float> values(view->count * static_cast<size_t>(view->components));
-        for (size_t i = 0; i < view->count; ++i) {
-            for (int c = 0; c < view->components; ++c) {
-                float value =
-                    decodeComponent(view->data + i * view->stride + static_cast<size_t>(c) * view->componentSize,
-                                    accessor.componentType, accessor.normalized);
-                if (!std::isfinite(value)) return fail(name + " holds a value that is not finite");
-                values[i * static_cast<size_t>(view->components) + static_cast<size_t>(c)] = value;
-            }
-        }
-        return values;
-    }
-
-    Result<std::vector<uint32_t>> readIndices(int index, size_t vertexCount, const std::string& where) const {
-        Result<AccessorView> view = viewAccessor(index, where);
-        if (!view) return view.error();
-        const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
-        const std::string name = where + ": index accessor " + std::to_string(index);
-        if (accessor.type != TINYGLTF_TYPE_SCALAR) return fail(name + " is not SCALAR");
-        if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            return fail(name + " must hold unsigned 8-, 16- or 32-bit integers");
-        std::vector<uint32_t> indices(view->count);
-        for (size_t i = 0; i < view->count; ++i) {
-            const unsigned char* p = view->data + i * view->stride;
-            uint32_t value = 0;
-            if (view->componentSize == 1) {
-                value = p[0];
-            } else if (view->componentSize == 2) {
-                uint16_t short16;
-                std::memcpy(&short16, p, sizeof short16);
-                value = short16;
-            } else {
-                std::memcpy(&value, p, sizeof value);
-            }
-            if (value >= vertexCount)
-                return fail(name + ": index " + std::to_string(value) + " at " + std::to_string(i) +
-                            " is out of range for " + std::to_string(vertexCount) + " vertices");
-            indices[i] = value;
-        }
-        return indices;
     }
 
     // Triangle lists from lists, strips and fans (glTF 2.0 §3.7.2.1).
@@ -536,7 +357,10 @@ private:
         return list;
     }
 
-    Status addPrimitive(const std::string& where, const tinygltf::Primitive& primitive, const glm::mat4& world) {
+    // With a rig, the vertices stay as the file gives them (the rig poses them);
+    // without, the node's world transform is applied here.
+    Status addPrimitive(const std::string& where, const tinygltf::Primitive& primitive, int node, const glm::mat4& nodeWorld) {
+        const glm::mat4 world = mRig ? glm::mat4(1.0f) : nodeWorld;
         if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             log::warn(mPath + ": " + where + " is not made of triangles (mode " + std::to_string(primitive.mode) +
@@ -550,14 +374,14 @@ private:
         const int positionAccessor = attribute("POSITION");
         if (positionAccessor < 0) return fail(where + " has no POSITION attribute");
 
-        Result<AccessorView> positionView = viewAccessor(positionAccessor, where);
+        Result<AccessorView> positionView = mAccessors.view(positionAccessor, where);
         if (!positionView) return positionView.error();
         const size_t vertexCount = positionView->count;
         if (vertexCount == 0) return success();
         if (vertexCount > kMaxVertices - mModel.mesh.vertices.size())
             return fail("the scene has more than " + std::to_string(kMaxVertices) + " vertices");
 
-        Result<std::vector<float>> positions = readFloats(positionAccessor, TINYGLTF_TYPE_VEC3, where);
+        Result<std::vector<float>> positions = mAccessors.readFloats(positionAccessor, TINYGLTF_TYPE_VEC3, where);
         if (!positions) return positions.error();
         std::optional<std::vector<float>> normals, uvs, tangents;
         struct Optional {
@@ -570,7 +394,7 @@ private:
               Optional{"TANGENT", TINYGLTF_TYPE_VEC4, &tangents}}) {
             int accessor = attribute(optional.name);
             if (accessor < 0) continue;
-            Result<std::vector<float>> values = readFloats(accessor, optional.type, where + " " + optional.name);
+            Result<std::vector<float>> values = mAccessors.readFloats(accessor, optional.type, where + " " + optional.name);
             if (!values) return values.error();
             if (mGltf.accessors[static_cast<size_t>(accessor)].count != vertexCount)
                 return fail(where + ": " + optional.name + " has " +
@@ -581,7 +405,7 @@ private:
 
         std::vector<uint32_t> indices;
         if (primitive.indices >= 0) {
-            Result<std::vector<uint32_t>> read = readIndices(primitive.indices, vertexCount, where);
+            Result<std::vector<uint32_t>> read = mAccessors.readIndices(primitive.indices, vertexCount, where);
             if (!read) return read.error();
             indices = std::move(read.value());
         } else {
@@ -596,7 +420,7 @@ private:
         Piece piece = buildPiece(*positions, normals, uvs, tangents, world);
         piece.mesh.indices = std::move(triangles.value());
         // A mirroring transform turns counter-clockwise triangles clockwise.
-        if (glm::determinant(glm::mat3(world)) < 0.0f)
+        if (mRig ? mRig->mirroredAtRest(node) : glm::determinant(glm::mat3(world)) < 0.0f)
             for (size_t i = 0; i + 2 < piece.mesh.indices.size(); i += 3)
                 std::swap(piece.mesh.indices[i + 1], piece.mesh.indices[i + 2]);
         repairFrames(piece);
@@ -607,7 +431,9 @@ private:
             if (std::find(mUsedMaterials.begin(), mUsedMaterials.end(), primitive.material) == mUsedMaterials.end())
                 mUsedMaterials.push_back(primitive.material);
         }
+        const size_t firstVertex = mModel.mesh.vertices.size();
         append(piece.mesh);
+        if (mRig) return mRig->addPrimitive(node, primitive, firstVertex, vertexCount, where);
         return success();
     }
 
@@ -779,8 +605,10 @@ private:
     const tinygltf::Model& mGltf;
     std::string mPath;
     fs::path mBaseDir;
+    GltfAccessors mAccessors;
     Model mModel;
     std::vector<int> mUsedMaterials;
+    std::optional<GltfRigBuilder> mRig;  // when the file moves vertices
 };
 
 Result<Model> loadGltfUnguarded(const std::string& path) {

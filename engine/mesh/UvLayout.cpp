@@ -187,6 +187,12 @@ float overlapFraction(const MeshData& mesh) {
 
 }  // namespace
 
+UvLayout analyseUvDerivatives(const MeshData& mesh) {
+    UvLayout out;
+    accumulateDerivatives(mesh, out);
+    return out;
+}
+
 UvLayout analyseUvLayout(const MeshData& mesh) {
     UvLayout out;
     out.uvOverlapFraction = overlapFraction(mesh);

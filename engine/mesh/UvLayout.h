@@ -61,4 +61,9 @@ constexpr float kFarFromBorder = 1e6f;
 
 UvLayout analyseUvLayout(const MeshData& mesh);
 
+// Only the per-vertex derivatives (and uvlessSurfaceFraction): what GPU
+// skinning transforms each frame for an animated character's stretch map
+// (shaders/skinning.comp), from its bind pose.
+UvLayout analyseUvDerivatives(const MeshData& mesh);
+
 }  // namespace dermis

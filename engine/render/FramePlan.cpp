@@ -4,6 +4,7 @@
 #include "render/SssVariant.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dermis {
 namespace {
@@ -42,10 +43,48 @@ std::string shadowPassName(const Scene& scene, int lightIndex) {
            (type == LightType::Directional ? "(dir)" : type == LightType::Spot ? "(spot)" : "(point)");
 }
 
+// What the casters' shadows depend on: each one's transform and, when
+// animated, its pose (its morph weights packed 16 to a matrix).
+std::vector<glm::mat4> casterKey(const std::vector<CharacterPlacement>& characters) {
+    std::vector<glm::mat4> key;
+    for (const CharacterPlacement& c : characters) {
+        key.push_back(c.worldFromObject);
+        if (!c.animated) continue;
+        key.insert(key.end(), c.pose.palette.begin(), c.pose.palette.end());
+        for (size_t w = 0; w < c.pose.morphWeights.size(); w += 16) {
+            glm::mat4 packed(0.0f);
+            for (size_t i = 0; i < 16 && w + i < c.pose.morphWeights.size(); ++i) packed[int(i / 4)][int(i % 4)] = c.pose.morphWeights[w + i];
+            key.push_back(packed);
+        }
+    }
+    return key;
+}
+
+// The character's pose at this frame's time, and its bounds in that pose.
+// The clip is looked up by name every frame, so an edited scene (the viewer's
+// clip list) plays the new one.
+Status poseCharacter(const Scene& scene, const SceneGeometry& geometry, size_t index, float timeS,
+                     CharacterPlacement& placement, Bounds& objectBounds) {
+    const Rig& rig = geometry.rig(index);
+    if (rig.empty()) return success();
+    auto resolved = resolveAnimationClip(scene, index, rig);
+    if (!resolved.ok()) return resolved.error();
+    const int clip = *resolved;
+    const Character& character = scene.characters[index];
+    const CharacterAnimation& animation = character.animation;
+    placement.animated = true;
+    placement.clipTimeS =
+        clip < 0 ? 0.0f
+                 : clipTime(animation.timeS + animation.speed * timeS, rig.clips[static_cast<size_t>(clip)].durationS(), animation.loop);
+    placement.pose = poseRig(rig, clip, placement.clipTimeS);
+    placement.skinPassName = "skin:" + character.name + "#" + std::to_string(index);
+    rigPoseBounds(rig, placement.pose, objectBounds.min, objectBounds.max);
+    return success();
+}
+
 void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) {
     const auto mapSize = static_cast<uint32_t>(scene.settings.shadow.mapSize);
-    std::vector<glm::mat4> casters;
-    for (const CharacterPlacement& c : plan.characters) casters.push_back(c.worldFromObject);
+    const std::vector<glm::mat4> casters = casterKey(plan.characters);
     for (size_t slot = 0; slot < plan.lights.shadowedLights.size(); ++slot) {
         ShadowSlotPlan s;
         s.light = plan.lights.shadowedLights[slot];
@@ -102,6 +141,10 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
                                            " is outside 1x1 .. " + std::to_string(kMaxFrameDimension) + "x" +
                                            std::to_string(kMaxFrameDimension));
     }
+    if (!std::isfinite(request.timeS) || std::abs(request.timeS) > kMaxAnimationTimeS) {
+        return makeError("frame time", std::to_string(request.timeS) + " s is outside +-" +
+                                           std::to_string(static_cast<long long>(kMaxAnimationTimeS)) + " s");
+    }
     FramePlan plan;
     plan.scene = &scene;
     plan.width = request.width;
@@ -117,7 +160,11 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
         const Character& character = scene.characters[c];
         CharacterPlacement placement;
         placement.worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
-        placement.worldBounds = transformBounds(geometry.objectBounds(c), placement.worldFromObject);
+        Bounds objectBounds = geometry.objectBounds(c);
+        if (const Status posed = poseCharacter(scene, geometry, c, request.timeS, placement, objectBounds); !posed.ok()) {
+            return posed.error();
+        }
+        placement.worldBounds = transformBounds(objectBounds, placement.worldFromObject);
         plan.characters.push_back(placement);
         bounds.push_back(placement.worldBounds);
     }
@@ -155,6 +202,13 @@ void recordShadowMaps(const FramePlan& plan, const graph::RenderGraph& graph, Sh
         const ShadowSlotPlan& s = plan.shadows[slot];
         if (graph.wasExecuted(s.passName)) shadows.record(static_cast<int>(slot), s.desc, s.key);
     }
+}
+
+bool textureSpaceDraws(const FramePlan& plan, size_t character) {
+    if (!plan.textureSpace) return false;
+    for (const TsCharacterPlan& ts : plan.ts.characters)
+        if (static_cast<size_t>(ts.character) == character) return ts.runs();
+    return false;
 }
 
 graph::TextureDesc frameOutputDesc(const FramePlan& plan) {

@@ -27,6 +27,7 @@
 #include "render/ShadowCache.h"
 #include "render/SssPlan.h"
 #include "render/TsPlan.h"
+#include "anim/Rig.h"
 #include "mesh/Mesh.h"
 #include "scene/Scene.h"
 #include "sss/BlurKernel.h"
@@ -45,6 +46,9 @@ struct FrameRequest {
     // Added to the mip level of material maps (albedo, normal, LEAN); tests
     // force level 0 with a large negative bias for supersampled references.
     float materialMipBias = 0.0f;
+    // The frame's time, seconds: each animated character's clip time is
+    // animation.time_s + animation.speed x timeS (scene/Scene.h).
+    float timeS = 0.0f;
 };
 
 // Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).
@@ -54,6 +58,14 @@ constexpr int kMaxFrameDimension = 16384;
 struct CharacterPlacement {
     glm::mat4 worldFromObject{1.0f};
     Bounds worldBounds;
+    // An animated character (anim/Rig.h): this frame's pose, the pass that
+    // skins it into its vertex buffer, and whether that buffer already holds
+    // this pose (render/PoseCache.h; then the pass is skipped).
+    bool animated = false;
+    float clipTimeS = 0.0f;
+    RigPose pose;
+    std::string skinPassName;
+    bool poseCurrent = false;
 };
 
 // One shadow-casting light's map this frame.
@@ -100,6 +112,10 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
 // After the frame's graph ran: the shadow slots whose pass executed now hold
 // their plan's map.
 void recordShadowMaps(const FramePlan& plan, const graph::RenderGraph& graph, ShadowCache& shadows);
+
+// Whether the frame's texture-space passes draw character `character` (its
+// plan runs: visible, and not fallen back to screen space).
+bool textureSpaceDraws(const FramePlan& plan, size_t character);
 
 // The output texture's description for a plan: RGBA8 for Aov::Final, RGBA32F otherwise.
 graph::TextureDesc frameOutputDesc(const FramePlan& plan);

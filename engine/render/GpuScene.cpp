@@ -2,6 +2,7 @@
 
 #include "lean/LeanBake.h"
 #include "render/SceneGeometry.h"
+#include "gpu/UniformBlocks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,70 @@ GpuMesh uploadMesh(const MeshData& mesh) {
     }
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
     gpu.objectBounds = mesh.bounds();
+    return gpu;
+}
+
+static_assert(sizeof(Vertex) == DERMIS_VERTEX_FLOATS * sizeof(float), "shaders/skinning.comp writes Vertex as floats");
+
+template <typename T>
+gl::Buffer uploadBuffer(const std::vector<T>& data, GLbitfield flags = 0) {
+    gl::Buffer buffer = gl::createBuffer();
+    const std::vector<T> one(1);  // GL buffers cannot be empty
+    const std::vector<T>& contents = data.empty() ? one : data;
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(contents.size() * sizeof(T)), contents.data(), flags);
+    return buffer;
+}
+
+struct SkinSourceVertex {
+    Vertex vertex;
+    glm::vec3 dPdu;
+    glm::vec3 dPdv;
+};
+static_assert(sizeof(SkinSourceVertex) == DERMIS_SKIN_SOURCE_FLOATS * sizeof(float), "shaders/skinning.comp's source layout");
+
+struct SkinInfluenceGpu {
+    glm::uvec4 joints;  // xy: two 16-bit palette indices each
+    glm::vec4 weights;
+};
+
+GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
+    GpuRig gpu;
+    if (rig.empty()) return gpu;
+    const size_t count = mesh.vertices.size();
+    MeshData bind = mesh;
+    for (size_t v = 0; v < count; ++v) {
+        bind.vertices[v].position = rig.bind.positions[v];
+        bind.vertices[v].normal = rig.bind.normals[v];
+        bind.vertices[v].tangent = rig.bind.tangents[v];
+    }
+    const UvLayout derivatives = analyseUvDerivatives(bind);
+    std::vector<SkinSourceVertex> source(count);
+    std::vector<SkinInfluenceGpu> influences(count);
+    for (size_t v = 0; v < count; ++v) {
+        source[v] = {bind.vertices[v], derivatives.dPdu[v], derivatives.dPdv[v]};
+        const glm::u16vec4 j = rig.influences[v].joints;
+        influences[v] = {glm::uvec4(uint32_t(j.x) | uint32_t(j.y) << 16, uint32_t(j.z) | uint32_t(j.w) << 16, 0u, 0u),
+                         rig.influences[v].weights};
+    }
+    std::vector<float> deltas(rig.morphTargets.size() * count * DERMIS_MORPH_DELTA_FLOATS, 0.0f);
+    for (size_t s = 0; s < rig.morphTargets.size(); ++s) {
+        const MorphTarget& target = rig.morphTargets[s];
+        const std::vector<glm::vec3>* attributes[3] = {&target.positions, &target.normals, &target.tangents};
+        for (size_t a = 0; a < 3; ++a) {
+            for (size_t v = 0; v < attributes[a]->size() && v < count; ++v)
+                for (int c = 0; c < 3; ++c)
+                    deltas[(s * count + v) * DERMIS_MORPH_DELTA_FLOATS + a * 3 + static_cast<size_t>(c)] = (*attributes[a])[v][c];
+        }
+    }
+    gpu.source = uploadBuffer(source);
+    gpu.influences = uploadBuffer(influences);
+    gpu.morphDeltas = uploadBuffer(deltas);
+    gpu.palette = uploadBuffer(std::vector<glm::mat4>(rig.palette.size(), glm::mat4(1.0f)), GL_DYNAMIC_STORAGE_BIT);
+    gpu.morphWeights = uploadBuffer(std::vector<float>(rig.morphSlots.size(), 0.0f), GL_DYNAMIC_STORAGE_BIT);
+    gpu.derivatives = uploadBuffer(std::vector<float>(count * DERMIS_SKIN_DERIVATIVE_FLOATS, 0.0f));
+    gpu.vertexCount = static_cast<GLsizei>(count);
+    gpu.paletteEntries = static_cast<GLsizei>(rig.palette.size());
+    gpu.morphSlots = static_cast<GLsizei>(rig.morphSlots.size());
     return gpu;
 }
 
@@ -90,6 +155,7 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         GpuCharacter gpu;
         gpu.name = character.name;
         gpu.mesh = uploadMesh(model.mesh);
+        gpu.rig = uploadRig(model.rig, model.mesh);
         if (!model.albedoMap.empty()) gpu.albedoMap = uploadImage(model.albedoMap);
         if (!model.normalMap.empty()) {
             gpu.normalMap = uploadImage(model.normalMap);

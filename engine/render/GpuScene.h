@@ -24,9 +24,29 @@ struct GpuMesh {
     Bounds objectBounds;
 };
 
+// What the skinning pass (passes/SkinningPass.cpp) reads to write an animated
+// character's GpuMesh vertex buffer: the rig's bind vertices (with their UV
+// derivatives) and influences, its morph deltas, and the palette and morph
+// weights it rewrites per pose; and where it writes the deformed UV
+// derivatives the texture-space stretch map reads (render/TsMeshes.h).
+// Buffer layouts: shaders/skinning.comp.
+struct GpuRig {
+    gl::Buffer source;
+    gl::Buffer influences;
+    gl::Buffer morphDeltas;   // a 1-float buffer when the rig has no morph targets
+    gl::Buffer palette;       // dynamic
+    gl::Buffer morphWeights;  // dynamic; 1 float when there are none
+    gl::Buffer derivatives;   // dP/du, dP/dv per vertex (object units), written by the skinning pass
+    GLsizei vertexCount = 0;
+    GLsizei paletteEntries = 0;
+    GLsizei morphSlots = 0;
+    bool empty() const { return vertexCount == 0; }
+};
+
 struct GpuCharacter {
     std::string name;
     GpuMesh mesh;
+    GpuRig rig;  // empty for a static character
     gl::Texture albedoMap;  // empty when the material has none
     gl::Texture normalMap;
     // LEAN maps baked from the normal map (lean/LeanBake.h), empty without

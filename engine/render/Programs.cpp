@@ -35,10 +35,13 @@ Result<Programs> Programs::build() {
     };
     Programs programs;
     for (const Entry& e : entries) {
-        auto program = gl::buildProgram({e.vertex, e.fragment, defines});
+        auto program = gl::buildProgram({e.vertex, e.fragment, defines, {}});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }
+    auto skinning = gl::buildProgram({"", "", defines, "skinning.comp"});
+    if (!skinning.ok()) return skinning.error();
+    programs.skinning = std::move(*skinning);
     // The LEAN variants (render/SssVariant.h): the same shaders with their
     // LEAN outputs, and the LEAN specular pass.
     struct LeanEntry {
@@ -59,7 +62,7 @@ Result<Programs> Programs::build() {
     for (const LeanEntry& e : leanEntries) {
         std::vector<gl::ShaderDefine> leanDefines = defines;
         if (!e.define.name.empty()) leanDefines.push_back(e.define);
-        auto program = gl::buildProgram({e.vertex, e.fragment, leanDefines});
+        auto program = gl::buildProgram({e.vertex, e.fragment, leanDefines, {}});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }

@@ -25,6 +25,7 @@ struct Programs {
     gl::Program tsDilate;
     gl::Program tsBlur;
     gl::Program tsGather;
+    gl::Program skinning;      // passes/SkinningPass.cpp (compute)
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
     gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha

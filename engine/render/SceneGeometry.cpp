@@ -14,13 +14,30 @@ Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
         auto model = loadCharacterModel(character);
         if (!model.ok()) return model.error();
         if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+        auto clip = resolveAnimationClip(scene, models.size(), model->rig);
+        if (!clip.ok()) return clip.error();
         models.push_back(std::move(*model));
     }
     return models;
 }
 
+Result<int> resolveAnimationClip(const Scene& scene, size_t index, const Rig& rig) {
+    const Character& character = scene.characters[index];
+    const std::string& name = character.animation.clip;
+    if (name == kRestPoseClip || (name.empty() && rig.clips.empty())) return -1;
+    if (name.empty()) return 0;
+    const int clip = rig.findClip(name);
+    if (clip < 0) {
+        const std::string source = character.mesh.gltfPath.empty() ? "its mesh" : character.mesh.gltfPath;
+        return makeError(scene.path, "/characters/" + std::to_string(index) + "/animation/clip: '" + name +
+                                         "' is not a clip of " + source + " (its clips: " + rig.clipList() + ")");
+    }
+    return clip;
+}
+
 SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
-    for (const Model& model : models) mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr});
+    for (const Model& model : models)
+        mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig)});
 }
 
 const UvLayout& SceneGeometry::uvLayout(size_t character) {

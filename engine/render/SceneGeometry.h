@@ -23,8 +23,13 @@
 namespace dermis {
 
 // Loads every character's model (import/ModelLoader.h), in scene order. Errors
-// name the character; a mesh without triangles is one.
+// name the character; a mesh without triangles is one, and so is an
+// animation clip the model does not have (the message lists those it has).
 Result<std::vector<Model>> loadSceneModels(const Scene& scene);
+
+// The clip a character's animation plays: an index into its rig's clips, or
+// -1 for the rest pose (no clips, or clip "none").
+Result<int> resolveAnimationClip(const Scene& scene, size_t character, const Rig& rig);
 
 class SceneGeometry {
 public:
@@ -34,6 +39,8 @@ public:
     size_t size() const { return mCharacters.size(); }
     const MeshData& mesh(size_t character) const { return mCharacters[character].mesh; }
     const Bounds& objectBounds(size_t character) const { return mCharacters[character].objectBounds; }
+    // What moves the character's vertices (empty for a static one).
+    const Rig& rig(size_t character) const { return *mCharacters[character].rig; }
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
@@ -43,6 +50,7 @@ private:
         MeshData mesh;
         Bounds objectBounds;
         std::shared_ptr<const UvLayout> uvLayout;
+        std::shared_ptr<const Rig> rig;
     };
     std::vector<Character> mCharacters;
 };

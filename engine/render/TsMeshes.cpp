@@ -1,5 +1,7 @@
 #include "render/TsMeshes.h"
 
+#include "gpu/UniformBlocks.h"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -29,6 +31,9 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
     const GLuint vao = out.vertexArray.get();
     glVertexArrayVertexBuffer(vao, 0, character.mesh.vertexBuffer.get(), 0, sizeof(Vertex));
     glVertexArrayVertexBuffer(vao, 1, out.layoutBuffer.get(), 0, sizeof(LayoutVertex));
+    // An animated character's derivatives are the skinning pass's, deformed with the mesh.
+    const bool animated = !character.rig.empty();
+    if (animated) glVertexArrayVertexBuffer(vao, 2, character.rig.derivatives.get(), 0, DERMIS_SKIN_DERIVATIVE_FLOATS * sizeof(float));
     glVertexArrayElementBuffer(vao, character.mesh.indexBuffer.get());
     struct Attribute {
         GLuint location;
@@ -40,8 +45,8 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
                                     {1, 0, 3, offsetof(Vertex, normal)},
                                     {2, 0, 4, offsetof(Vertex, tangent)},
                                     {3, 0, 2, offsetof(Vertex, uv)},
-                                    {kTsLocationDPdu, 1, 3, offsetof(LayoutVertex, dPdu)},
-                                    {kTsLocationDPdv, 1, 3, offsetof(LayoutVertex, dPdv)},
+                                    {kTsLocationDPdu, animated ? 2u : 1u, 3, animated ? 0 : offsetof(LayoutVertex, dPdu)},
+                                    {kTsLocationDPdv, animated ? 2u : 1u, 3, animated ? 3 * sizeof(float) : offsetof(LayoutVertex, dPdv)},
                                     {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)}};
     for (const Attribute& a : attributes) {
         glEnableVertexArrayAttrib(vao, a.location);

@@ -74,6 +74,19 @@ struct CharacterSsao {
     int samples = 0;       // kMinSsaoSamples..kMaxSsaoSamples; 0 = use settings.ssao.samples
 };
 
+// Character::animation::clip naming no clip: the rest pose.
+inline constexpr std::string_view kRestPoseClip = "none";
+
+// Which clip of the character's glTF plays, and where in it (anim/Rig.h).
+// The clip time of a frame rendered at time t (FrameRequest::timeS) is
+// timeS + speed x t, wrapped into the clip when looping, clamped otherwise.
+struct CharacterAnimation {
+    std::string clip;  // a clip name; empty = the file's first clip; "none" = the rest pose
+    float timeS = 0.0f;
+    float speed = 1.0f;
+    bool loop = true;
+};
+
 struct Character {
     std::string name;
     Transform transform;
@@ -81,6 +94,7 @@ struct Character {
     float metresPerUnit = 1.0f;
     Material material;
     CharacterSsao ssao;
+    CharacterAnimation animation;
 };
 
 struct Background {

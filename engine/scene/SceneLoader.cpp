@@ -223,9 +223,22 @@ void readCharacterSsao(JsonObject& parent, CharacterSsao& ssao) {
             std::to_string(kMaxSsaoSamples) + "]");
 }
 
+void readCharacterAnimation(JsonObject& parent, CharacterAnimation& animation) {
+    const json* value = parent.member("animation");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("animation"), {"clip", "time_s", "speed", "loop"});
+    object.string("clip", animation.clip);
+    object.number("time_s", animation.timeS, Range::closed(-kMaxAnimationTimeS, kMaxAnimationTimeS));
+    object.number("speed", animation.speed, Range::closed(-kMaxAnimationSpeed, kMaxAnimationSpeed));
+    object.boolean("loop", animation.loop);
+}
+
 void readCharacter(JsonContext& context, const json& value, const std::string& pointer, const std::string& sceneFile,
                    Character& character) {
-    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material", "ssao"});
+    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material", "ssao",
+                                                 "animation"});
     object.string("name", character.name);
     readTransform(object, character.transform);
     readMesh(object, sceneFile, character.mesh);
@@ -241,6 +254,7 @@ void readCharacter(JsonContext& context, const json& value, const std::string& p
     }
     readMaterial(object, sceneFile, character.material);
     readCharacterSsao(object, character.ssao);
+    readCharacterAnimation(object, character.animation);
 }
 
 void readBackground(JsonObject& root, Background& background) {

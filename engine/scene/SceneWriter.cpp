@@ -96,6 +96,8 @@ Json characterJson(const Character& character, const std::string& sceneFile) {
     j["metres_per_unit"] = number(character.metresPerUnit);
     j["material"] = std::move(material);
     j["ssao"] = Json{{"radius_m", number(character.ssao.radiusM)}, {"samples", character.ssao.samples}};
+    const CharacterAnimation& a = character.animation;
+    j["animation"] = Json{{"clip", a.clip}, {"time_s", number(a.timeS)}, {"speed", number(a.speed)}, {"loop", a.loop}};
     return j;
 }
 

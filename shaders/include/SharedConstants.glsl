@@ -67,6 +67,25 @@
 // The shader storage binding of the sanitise counters (include/Sanitise.glsl).
 #define DERMIS_BINDING_SANITISE_COUNTERS 0
 
+// GPU skinning (shaders/skinning.comp): its storage buffers (seven: GL 4.5
+// guarantees eight per compute shader), the floats of one source vertex
+// (engine/mesh/Mesh.h's Vertex: position 3, normal 3, tangent 4, uv 2; then
+// the bind pose's dP/du and dP/dv, 3 each, for the texture-space stretch),
+// of one output vertex (a Vertex), of one morph delta (position, normal,
+// tangent: 3 each) and of one output derivative pair, and the work-group size.
+#define DERMIS_BINDING_SKIN_SOURCE 1
+#define DERMIS_BINDING_SKIN_INFLUENCES 2
+#define DERMIS_BINDING_SKIN_MORPHS 3
+#define DERMIS_BINDING_SKIN_PALETTE 4
+#define DERMIS_BINDING_SKIN_MORPH_WEIGHTS 5
+#define DERMIS_BINDING_SKIN_OUTPUT 6
+#define DERMIS_BINDING_SKIN_DERIVATIVES 7
+#define DERMIS_SKIN_SOURCE_FLOATS 18
+#define DERMIS_VERTEX_FLOATS 12
+#define DERMIS_MORPH_DELTA_FLOATS 9
+#define DERMIS_SKIN_DERIVATIVE_FLOATS 6
+#define DERMIS_SKINNING_GROUP_SIZE 64
+
 // Texture units of the tables every shading pass may read, bound once per frame.
 #define DERMIS_UNIT_BECKMANN 14
 #define DERMIS_UNIT_ENERGY 15

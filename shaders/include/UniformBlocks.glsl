@@ -119,6 +119,13 @@ DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
 } DERMIS_BLOCK_END(uSsao)
 #endif
 
+// GPU skinning of one character (passes/SkinningPass.cpp, shaders/skinning.comp).
+#if defined(__cplusplus) || defined(DERMIS_USE_SKINNING_BLOCK)
+DERMIS_BLOCK(SkinningBlock, DERMIS_BINDING_PASS) {
+    ivec4 counts;  // x: vertices, y: morph slots, z: 1 = write the derivatives too, w: 0
+} DERMIS_BLOCK_END(uSkinning)
+#endif
+
 // Texture-space SSS, every pass of one character (passes/TextureSpacePasses.cpp;
 // the manual is include/TextureSpace.glsl).
 #if defined(__cplusplus) || defined(DERMIS_USE_TS_BLOCK)

@@ -68,7 +68,7 @@ protected:
              {std::tuple{&Programs::gbuffer, "gbuffer.vert", "gbuffer.frag"},
               std::tuple{&Programs::ssao, "fullscreen.vert", "ssao.frag"},
               std::tuple{&Programs::ssaoBlur, "fullscreen.vert", "ssao_blur.frag"}}) {
-            auto program = gl::buildProgram({vertex, fragment, {}});
+            auto program = gl::buildProgram({vertex, fragment, {}, {}});
             ASSERT_TRUE(program.ok()) << program.error().message();
             mPrograms.*member = std::move(*program);
         }

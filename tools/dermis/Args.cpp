@@ -1,5 +1,7 @@
 #include "Args.h"
 
+#include "core/Limits.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -82,6 +84,37 @@ Result<float> parsePositiveFloat(const std::string& option, const std::string& t
         return makeError(option, "expected a number in (0, 10000], got '" + text + "'");
     }
     return value;
+}
+
+Result<float> parseFloatIn(const std::string& option, const std::string& text, double low, double high) {
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(value) || value < low || value > high) {
+        return makeError(option, "expected a number in [" + formatNumberForMessage(low) + ", " + formatNumberForMessage(high) +
+                                     "], got '" + text + "'");
+    }
+    return static_cast<float>(value);
+}
+
+Result<std::vector<float>> parseSequence(const std::string& option, const std::string& text, size_t maxFrames) {
+    const size_t first = text.find(':'), second = first == std::string::npos ? first : text.find(':', first + 1);
+    if (second == std::string::npos || text.find(':', second + 1) != std::string::npos)
+        return makeError(option, "expected START:END:FPS (seconds, seconds, frames per second), got '" + text + "'");
+    auto start = parseFloatIn(option + " START", text.substr(0, first), -kMaxAnimationTimeS, kMaxAnimationTimeS);
+    if (!start.ok()) return start.error();
+    auto end = parseFloatIn(option + " END", text.substr(first + 1, second - first - 1), -kMaxAnimationTimeS, kMaxAnimationTimeS);
+    if (!end.ok()) return end.error();
+    auto fps = parsePositiveFloat(option + " FPS", text.substr(second + 1));
+    if (!fps.ok()) return fps.error();
+    if (*end < *start) return makeError(option, "END " + text.substr(first + 1, second - first - 1) + " is before START");
+    // Half a frame of slack so that 0:1:30 ends on 1 s despite rounding.
+    const double count = std::floor((double(*end) - double(*start)) * double(*fps) + 0.5) + 1.0;
+    if (count > double(maxFrames))
+        return makeError(option, "gives " + formatNumberForMessage(count) + " frames; at most " + std::to_string(maxFrames));
+    std::vector<float> times;
+    for (size_t i = 0; i < static_cast<size_t>(count); ++i) times.push_back(static_cast<float>(double(*start) + double(i) / double(*fps)));
+    return times;
 }
 
 }  // namespace dermis::cli

@@ -38,6 +38,11 @@ std::string expectedNames(const EnumTable<E, N>& table) {
 Result<int> parsePositiveInt(const std::string& option, const std::string& text);
 // A finite number in (0, 10000].
 Result<float> parsePositiveFloat(const std::string& option, const std::string& text);
+// A finite number in [low, high].
+Result<float> parseFloatIn(const std::string& option, const std::string& text, double low, double high);
+// "START:END:FPS": frame times START, START + 1/FPS, ... up to END (inclusive);
+// END >= START, FPS in (0, 10000], at most maxFrames frames.
+Result<std::vector<float>> parseSequence(const std::string& option, const std::string& text, size_t maxFrames);
 // "WxH" -> {W, H}; both in 1..maxDimension.
 Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension);
 

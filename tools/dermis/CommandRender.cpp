@@ -4,6 +4,7 @@
 #include "Session.h"
 
 #include "core/Image.h"
+#include "core/Limits.h"
 #include "core/Log.h"
 #include "render/Aov.h"
 #include "frame/Renderer.h"
@@ -36,6 +37,12 @@ const char* const kHelp =
     "                      either mode: in ss mode only their own texture-space passes run;\n"
     "                      black when SSS is off or no SSS character is on screen\n"
     "  --timings FILE      also write the timings as JSON\n"
+    "  --time T            render at time T seconds: each animated character plays its\n"
+    "                      clip at animation.time_s + animation.speed x T (default 0)\n"
+    "  --sequence S:E:FPS  render an image sequence: one frame at each time S, S + 1/FPS,\n"
+    "                      ... up to E, written as --out with a 4-digit frame number\n"
+    "                      before the extension (out/walk_0000.png, ...); not with --time\n"
+    "                      or --frames (at most %d frames)\n"
     "  --mode MODE         the subsurface-scattering technique, the same as --set mode=MODE:\n"
     "%s"
     "  --variant V         Vila Verde 2015's variants of the screen-space frame, the same as\n"
@@ -54,15 +61,25 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene, its content or the GL context fails,\n"
     "2 for bad command-line usage. On failure no output file is written.\n";
 
+constexpr int kMaxSequenceFrames = 100000;
+
+// out/walk.png, 7 -> out/walk_0007.png
+std::string sequenceFramePath(const std::string& outPath, size_t frame) {
+    const std::filesystem::path path(outPath);
+    char number[16];
+    std::snprintf(number, sizeof number, "_%04zu", frame);
+    return (path.parent_path() / (path.stem().string() + number + path.extension().string())).string();
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode", "variant"},
+    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode", "variant", "time", "sequence"},
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         const char* indent = "                        ";
-        std::printf(kHelp, kAovs.helpLines(indent).c_str(), kSssModes.helpLines(indent).c_str(),
+        std::printf(kHelp, kAovs.helpLines(indent).c_str(), kMaxSequenceFrames, kSssModes.helpLines(indent).c_str(),
                     kSssVariants.helpLines(indent).c_str());
         return 0;
     }
@@ -84,6 +101,16 @@ int runRender(const std::vector<std::string>& rawArgs) {
     }
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
+    auto time = parseFloatIn("--time", args->get("time", "0"), -kMaxAnimationTimeS, kMaxAnimationTimeS);
+    if (!time.ok()) return usageError(time.error());
+    std::vector<float> sequence;
+    if (args->has("sequence")) {
+        if (args->has("time") || args->has("frames"))
+            return usageError(makeError("--sequence", "renders each time once: give it without --time and --frames"));
+        auto parsed = parseSequence("--sequence", args->get("sequence", ""), kMaxSequenceFrames);
+        if (!parsed.ok()) return usageError(parsed.error());
+        sequence = std::move(*parsed);
+    }
 
     std::vector<std::string> overrides = args->all("set");
     if (args->has("mode")) {
@@ -106,24 +133,36 @@ int runRender(const std::vector<std::string>& rawArgs) {
 
     // An EXR of the final image is linear: the frame before exposure and tone mapping.
     const Aov frameAov = (*aov == Aov::Final && extension == ".exr") ? Aov::Radiance : *aov;
-    const FrameRequest request{size->first, size->second, frameAov};
+    FrameRequest request{size->first, size->second, frameAov};
+    request.timeS = *time;
+    const int frameCount = sequence.empty() ? *frames : static_cast<int>(sequence.size());
     log::info("rendering " + scenePath + " at " + std::to_string(request.width) + "x" + std::to_string(request.height) +
-              ", " + std::to_string(*frames) + " frames on " + session->context->renderer());
+              ", " + std::to_string(frameCount) + " frames on " + session->context->renderer());
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < *frames; ++i) {
+    for (int i = 0; i < frameCount; ++i) {
+        if (!sequence.empty()) request.timeS = sequence[static_cast<size_t>(i)];
         const Status status = renderer.renderFrame(request);
         if (!status.ok()) return failure(status.error());
+        if (sequence.empty()) continue;
+        auto image = renderer.readOutput();
+        if (!image.ok()) return failure(image.error());
+        const std::string framePath = sequenceFramePath(outPath, static_cast<size_t>(i));
+        if (const Status saved = saveImage(framePath, *image); !saved.ok()) return failure(saved.error());
+        log::info("frame " + std::to_string(i + 1) + "/" + std::to_string(frameCount) + " at " +
+                  formatNumberForMessage(request.timeS) + " s: " + framePath);
     }
     glFinish();
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     renderer.finishTimings();
     if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
 
-    auto image = renderer.readOutput();
-    if (!image.ok()) return failure(image.error());
-    if (const Status saved = saveImage(outPath, *image); !saved.ok()) return failure(saved.error());
+    if (sequence.empty()) {
+        auto image = renderer.readOutput();
+        if (!image.ok()) return failure(image.error());
+        if (const Status saved = saveImage(outPath, *image); !saved.ok()) return failure(saved.error());
+    }
 
-    RunInfo info = session->runInfo(scenePath, request.width, request.height, *frames);
+    RunInfo info = session->runInfo(scenePath, request.width, request.height, frameCount);
     info.wallMsPerFrame = wallMs / *frames;
     if (args->has("timings")) {
         if (const Status written = renderer.timings().writeJson(args->get("timings", ""), info); !written.ok()) {
@@ -131,7 +170,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
         }
     }
     if (!log::quiet()) std::printf("%s", renderer.timings().toTable(info).c_str());
-    log::info("wrote " + outPath);
+    if (sequence.empty()) log::info("wrote " + outPath);
     return 0;
 }
 

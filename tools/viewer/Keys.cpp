@@ -55,6 +55,7 @@ const std::vector<KeyHelp>& keyHelp() {
         {"q", "SSAO on/off"},
         {"h / j", "turn the first character about the vertical / horizontal axis"},
         {"v", "view: single, A/B split, difference"},
+        {"Space", "play / pause the animation (panel Animation)"},
         {"n / m", "previous / next AOV"},
         {"r", "reset the camera to the scene file's"},
         {"p", "screenshot (to the path in Save)"},
@@ -110,6 +111,7 @@ void handleKeys(const std::vector<KeyPress>& presses, ViewerState& state, const 
         }
     }
 
+    if (toggled(GLFW_KEY_SPACE)) state.playing = !state.playing;
     for (int i = pressed(presses, GLFW_KEY_V); i > 0; --i) {
         state.mode = state.mode == ViewMode::Single  ? ViewMode::Split
                      : state.mode == ViewMode::Split ? ViewMode::Difference

@@ -4,6 +4,7 @@
 // it returns true when it changed something. Ranges follow the scene file
 // format (content/scenes/README.md).
 
+#include "render/SceneGeometry.h"
 #include "scene/Scene.h"
 #include "viewer/SceneJson.h"
 #include "viewer/ViewerState.h"
@@ -27,6 +28,12 @@ bool framePanel(Scene& scene);  // exposure, ambient, background, energy conserv
 // Settings keys without a typed panel (the SSS mode, texture-space settings ...), by their JSON type.
 bool otherSettingsPanel(Scene& scene, std::string& error);
 bool hasOtherSettings(const Scene& scene);
+
+// Play / pause, the frame time and each animated character's clip (AnimationPanel.cpp).
+// `geometry` is the rendered scene's (null before its first frame).
+bool animationPanel(ViewerState& state, Scene& scene, const SceneGeometry* geometry);
+// Moves the frame time on by elapsedS x the playback speed while playing.
+void advanceAnimationTime(ViewerState& state, float elapsedS);
 
 // The viewer's own groups (ViewerPanels.cpp).
 // `differences` between A and B are shown while comparing.

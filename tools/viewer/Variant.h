@@ -30,6 +30,8 @@ public:
     Status render(const FrameRequest& request, const EffectSwitches& switches);
     bool hasRenderer() const { return mRenderer != nullptr; }
     GLuint outputTexture() const { return mRenderer ? mRenderer->outputTexture() : 0; }
+    // The rendered scene's meshes and rigs; null before the renderer exists.
+    const SceneGeometry* geometry() const { return mRenderer ? &mRenderer->geometry() : nullptr; }
     // Recompiles the shaders; a renderer not created yet will read them when it is.
     Status reloadShaders();
 

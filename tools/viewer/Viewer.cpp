@@ -127,6 +127,10 @@ void Viewer::settingsWindow() {
     if (ImGui::CollapsingHeader("SSAO")) changed |= ssaoPanel(scene);
     if (ImGui::CollapsingHeader("Materials")) changed |= materialsPanel(scene);
     if (ImGui::CollapsingHeader("Characters")) changed |= charactersPanel(scene);
+    if (ImGui::CollapsingHeader("Animation")) {
+        const Variant& side = mState.comparing() && mState.editTarget == EditTarget::B ? mB : mA;
+        changed |= animationPanel(mState, scene, side.geometry());
+    }
     if (ImGui::CollapsingHeader("Frame")) changed |= framePanel(scene);
     if (!refused.empty()) mState.report("not applied: " + refused, true);
     if (mirror && changed) {
@@ -226,7 +230,8 @@ Status Viewer::renderScene(const UiRect& area) {
     const float scale = mWindow->uiScale();
     mFrameSize = glm::ivec2(static_cast<int>(area.width * scale), static_cast<int>(area.height * scale));
     if (mFrameSize.x <= 0 || mFrameSize.y <= 0) return success();
-    const FrameRequest request{mFrameSize.x, mFrameSize.y, mState.aov};
+    FrameRequest request{mFrameSize.x, mFrameSize.y, mState.aov};
+    request.timeS = mState.timeS;
     if (const Status a = mA.render(request, mState.switches); !a.ok()) return a;
     if (mState.comparing()) {
         if (const Status b = mB.render(request, mState.switches); !b.ok()) return makeError("B", b.error().message());
@@ -296,6 +301,7 @@ Status Viewer::run() {
         const double now = mWindow->time();
         const double frameMs = (now - mLastTime) * 1000.0;
         mWallMs = mWallMs == 0.0 ? frameMs : 0.9 * mWallMs + 0.1 * frameMs;
+        advanceAnimationTime(mState, static_cast<float>(now - mLastTime));
         mLastTime = now;
         if (last) break;
     }

@@ -37,6 +37,10 @@ struct ViewerState {
     bool showPanels = true;
     bool showProfiler = true;
     bool watchShaders = true;
+    // The frame time both sides render at (FrameRequest::timeS), and playback.
+    float timeS = 0.0f;
+    bool playing = false;
+    float playbackSpeed = 1.0f;
 
     std::string screenshotPath = "out/viewer.png";
     std::string sceneJsonPath = "out/viewer_scene.json";

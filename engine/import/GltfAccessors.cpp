@@ -1,0 +1,155 @@
+#include "import/GltfAccessors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace dermis {
+
+const char* gltfTypeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        default:
+            return "a matrix or unknown type";
+    }
+}
+
+namespace {
+
+float decodeComponent(const unsigned char* p, int componentType, bool normalized) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float value;
+            std::memcpy(&value, p, sizeof value);
+            return value;
+        }
+        case TINYGLTF_COMPONENT_TYPE_DOUBLE: {
+            double value;
+            std::memcpy(&value, p, sizeof value);
+            return static_cast<float>(value);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return normalized ? float(p[0]) / 255.0f : float(p[0]);
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            float value = float(static_cast<int8_t>(p[0]));
+            return normalized ? std::max(value / 127.0f, -1.0f) : value;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t value;
+            std::memcpy(&value, p, sizeof value);
+            return normalized ? float(value) / 65535.0f : float(value);
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            int16_t value;
+            std::memcpy(&value, p, sizeof value);
+            return normalized ? std::max(float(value) / 32767.0f, -1.0f) : float(value);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            uint32_t value;
+            std::memcpy(&value, p, sizeof value);
+            return normalized ? float(double(value) / 4294967295.0) : float(value);
+        }
+        default:
+            return 0.0f;
+    }
+}
+
+}  // namespace
+
+Result<AccessorView> GltfAccessors::view(int index, const std::string& where) const {
+    const std::string name = where + ": accessor " + std::to_string(index);
+    if (index < 0 || static_cast<size_t>(index) >= mGltf.accessors.size())
+        return fail(name + " is out of range (" + std::to_string(mGltf.accessors.size()) + " accessors)");
+    const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
+    if (accessor.sparse.isSparse) return fail(name + " is sparse, which is not supported");
+    int componentSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType));
+    int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
+    if (componentSize <= 0 || components <= 0) return fail(name + " has an invalid type or component type");
+    AccessorView view;
+    view.count = accessor.count;
+    view.componentSize = static_cast<size_t>(componentSize);
+    view.components = components;
+    if (accessor.count == 0) return view;
+    if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= mGltf.bufferViews.size())
+        return fail(name + " has no valid bufferView");
+    const tinygltf::BufferView& bufferView = mGltf.bufferViews[static_cast<size_t>(accessor.bufferView)];
+    const std::string viewName = "bufferView " + std::to_string(accessor.bufferView);
+    if (bufferView.buffer < 0 || static_cast<size_t>(bufferView.buffer) >= mGltf.buffers.size())
+        return fail(viewName + ": buffer " + std::to_string(bufferView.buffer) + " is out of range");
+    const std::vector<unsigned char>& buffer = mGltf.buffers[static_cast<size_t>(bufferView.buffer)].data;
+    if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
+        return fail(viewName + " (" + std::to_string(bufferView.byteLength) + " bytes at " +
+                    std::to_string(bufferView.byteOffset) + ") is outside its buffer of " +
+                    std::to_string(buffer.size()) + " bytes");
+    const size_t elementSize = view.componentSize * static_cast<size_t>(components);
+    view.stride = bufferView.byteStride == 0 ? elementSize : bufferView.byteStride;
+    if (view.stride < elementSize)
+        return fail(viewName + ": byteStride " + std::to_string(view.stride) + " is smaller than the " +
+                    std::to_string(elementSize) + "-byte elements of accessor " + std::to_string(index));
+    // Checked before anything is allocated: count is bounded by the view.
+    if (bufferView.byteLength < elementSize || accessor.byteOffset > bufferView.byteLength - elementSize ||
+        accessor.count - 1 > (bufferView.byteLength - elementSize - accessor.byteOffset) / view.stride)
+        return fail(name + " (" + std::to_string(accessor.count) + " elements) runs past the end of " + viewName);
+    view.data = buffer.data() + bufferView.byteOffset + accessor.byteOffset;
+    return view;
+}
+
+Result<std::vector<float>> GltfAccessors::readFloats(int index, int type, const std::string& where) const {
+    Result<AccessorView> view = this->view(index, where);
+    if (!view) return view.error();
+    const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
+    const std::string name = where + ": accessor " + std::to_string(index);
+    if (accessor.type != type)
+        return fail(name + " is " + gltfTypeName(accessor.type) + ", expected " + gltfTypeName(type));
+    std::vector<float> values(view->count * static_cast<size_t>(view->components));
+    for (size_t i = 0; i < view->count; ++i) {
+        for (int c = 0; c < view->components; ++c) {
+            float value =
+                decodeComponent(view->data + i * view->stride + static_cast<size_t>(c) * view->componentSize,
+                                accessor.componentType, accessor.normalized);
+            if (!std::isfinite(value)) return fail(name + " holds a value that is not finite");
+            values[i * static_cast<size_t>(view->components) + static_cast<size_t>(c)] = value;
+        }
+    }
+    return values;
+}
+
+Result<std::vector<uint32_t>> GltfAccessors::readIndices(int index, size_t vertexCount, const std::string& where) const {
+    Result<AccessorView> view = this->view(index, where);
+    if (!view) return view.error();
+    const tinygltf::Accessor& accessor = mGltf.accessors[static_cast<size_t>(index)];
+    const std::string name = where + ": index accessor " + std::to_string(index);
+    if (accessor.type != TINYGLTF_TYPE_SCALAR) return fail(name + " is not SCALAR");
+    if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        return fail(name + " must hold unsigned 8-, 16- or 32-bit integers");
+    std::vector<uint32_t> indices(view->count);
+    for (size_t i = 0; i < view->count; ++i) {
+        const unsigned char* p = view->data + i * view->stride;
+        uint32_t value = 0;
+        if (view->componentSize == 1) {
+            value = p[0];
+        } else if (view->componentSize == 2) {
+            uint16_t short16;
+            std::memcpy(&short16, p, sizeof short16);
+            value = short16;
+        } else {
+            std::memcpy(&value, p, sizeof value);
+        }
+        if (value >= vertexCount)
+            return fail(name + ": index " + std::to_string(value) + " at " + std::to_string(i) +
+                        " is out of range for " + std::to_string(vertexCount) + " vertices");
+        indices[i] = value;
+    }
+    return indices;
+}
+
+}  // namespace dermis

@@ -1,0 +1,46 @@
+#pragma once
+// Reading glTF accessors (glTF 2.0 §3.6.2) with every bound checked before a
+// byte is read: the accessor, its buffer view and its buffer, the stride, and
+// the component types each use allows. Errors name the file, the primitive
+// or animation (`where`) and the accessor.
+
+#include "core/Result.h"
+
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    size_t count = 0;
+    size_t stride = 0;
+    size_t componentSize = 0;
+    int components = 0;
+};
+
+
+class GltfAccessors {
+public:
+    GltfAccessors(const tinygltf::Model& gltf, std::string path) : mGltf(gltf), mPath(std::move(path)) {}
+
+    Error fail(const std::string& what) const { return makeError(mPath, what); }
+    Result<AccessorView> view(int index, const std::string& where) const;
+    // Every element as floats (normalised integers are scaled); `type` is a
+    // TINYGLTF_TYPE_*; values that are not finite are refused.
+    Result<std::vector<float>> readFloats(int index, int type, const std::string& where) const;
+    // Triangle indices, each checked against the vertex count.
+    Result<std::vector<uint32_t>> readIndices(int index, size_t vertexCount, const std::string& where) const;
+
+private:
+    const tinygltf::Model& mGltf;
+    std::string mPath;
+};
+
+const char* gltfTypeName(int type);
+
+}  // namespace dermis

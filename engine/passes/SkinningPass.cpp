@@ -1,0 +1,61 @@
+#include "passes/SkinningPass.h"
+
+namespace dermis {
+namespace {
+
+struct SkinningData {};
+
+void skin(const FrameContext& frame, size_t index) {
+    const CharacterPlacement& placement = frame.plan.characters[index];
+    const GpuCharacter& character = frame.gl->gpuScene->characters()[index];
+    const GpuRig& rig = character.rig;
+    glNamedBufferSubData(rig.palette.get(), 0, static_cast<GLsizeiptr>(placement.pose.palette.size() * sizeof(glm::mat4)),
+                         placement.pose.palette.data());
+    if (!placement.pose.morphWeights.empty())
+        glNamedBufferSubData(rig.morphWeights.get(), 0,
+                             static_cast<GLsizeiptr>(placement.pose.morphWeights.size() * sizeof(float)),
+                             placement.pose.morphWeights.data());
+    gpu::SkinningBlock block{};
+    // The derivatives only for a character texture space draws (render/TsMeshes.h reads them).
+    block.counts = glm::ivec4(rig.vertexCount, rig.morphSlots, textureSpaceDraws(frame.plan, index) ? 1 : 0, 0);
+    frame.gl->uploadPassBlock(&block, sizeof block);
+    const std::pair<GLuint, GLuint> buffers[] = {
+        {DERMIS_BINDING_SKIN_SOURCE, rig.source.get()},       {DERMIS_BINDING_SKIN_INFLUENCES, rig.influences.get()},
+        {DERMIS_BINDING_SKIN_MORPHS, rig.morphDeltas.get()},  {DERMIS_BINDING_SKIN_PALETTE, rig.palette.get()},
+        {DERMIS_BINDING_SKIN_MORPH_WEIGHTS, rig.morphWeights.get()},
+        {DERMIS_BINDING_SKIN_OUTPUT, character.mesh.vertexBuffer.get()},
+        {DERMIS_BINDING_SKIN_DERIVATIVES, rig.derivatives.get()}};
+    for (const auto& [binding, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+    glUseProgram(frame.gl->programs->skinning.get());
+    const auto groups = static_cast<GLuint>((rig.vertexCount + DERMIS_SKINNING_GROUP_SIZE - 1) / DERMIS_SKINNING_GROUP_SIZE);
+    glDispatchCompute(groups, 1, 1);
+    // The passes after it read the buffer as vertex attributes.
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    // llvmpipe leaves the GL_TIME_ELAPSED query after one that held only a
+    // dispatch without a start time (the next pass then reports the time
+    // since boot); a clear inside this pass's query gives it one. Clearing
+    // the 1x1 white input to white changes nothing.
+    gl::Attachments attachments;
+    attachments.colour[0] = frame.gl->whiteTexture;
+    frame.gl->framebuffers->bind(attachments);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, white);
+}
+
+}  // namespace
+
+void addSkinningPasses(graph::RenderGraph& graph, const FrameContext& frame) {
+    for (size_t index = 0; index < frame.plan.characters.size(); ++index) {
+        const CharacterPlacement& placement = frame.plan.characters[index];
+        if (!placement.animated) continue;
+        graph.addPass<SkinningData>(
+            placement.skinPassName,
+            [&](graph::PassBuilder& builder, SkinningData&) {
+                builder.sideEffect();
+                builder.skipIf(placement.poseCurrent, "the vertex buffer holds this pose already");
+            },
+            [frame, index](const graph::PassResources&, const SkinningData&) { skin(frame, index); });
+    }
+}
+
+}  // namespace dermis

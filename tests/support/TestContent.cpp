@@ -1,0 +1,173 @@
+#include "TestContent.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+// As engine/import/GltfLoader.cpp compiles tinygltf: no image codecs.
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace dermis::test {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Appends a tightly packed accessor over a new buffer view of buffer 0.
+template <typename T>
+int addAccessor(tinygltf::Model& model, const std::vector<T>& values, int componentType, int type, size_t count,
+                bool minMax = false) {
+    std::vector<unsigned char>& data = model.buffers[0].data;
+    while (data.size() % 4) data.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = data.size();
+    view.byteLength = values.size() * sizeof(T);
+    data.resize(data.size() + view.byteLength);
+    std::memcpy(data.data() + view.byteOffset, values.data(), view.byteLength);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = componentType;
+    accessor.type = type;
+    accessor.count = count;
+    if (minMax) {  // POSITION accessors must carry their bounds
+        const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(type));
+        accessor.minValues.assign(static_cast<size_t>(components), 1e30);
+        accessor.maxValues.assign(static_cast<size_t>(components), -1e30);
+        for (size_t i = 0; i < values.size(); ++i) {
+            const size_t c = i % static_cast<size_t>(components);
+            accessor.minValues[c] = std::min(accessor.minValues[c], double(values[i]));
+            accessor.maxValues[c] = std::max(accessor.maxValues[c], double(values[i]));
+        }
+    }
+    model.accessors.push_back(accessor);
+    return static_cast<int>(model.accessors.size() - 1);
+}
+
+float smoothstep(float a, float b, float x) {
+    const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+}  // namespace
+
+bool writeBendingCylinder(const std::string& path, std::string* error) {
+    using C = BendingCylinder;
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "Dermis tests (tests/support/TestContent.cpp)";
+    model.buffers.resize(1);
+
+    std::vector<float> positions, normals, uvs, weights, bulge;
+    std::vector<uint16_t> joints;
+    std::vector<uint32_t> indices;
+    const int columns = C::kSegments + 1;
+    for (int ring = 0; ring < C::kRings; ++ring) {
+        const float v = float(ring) / float(C::kRings - 1);
+        const float y = v * C::kLengthM;
+        const float bend = smoothstep(C::kJointYM - C::kBlendM, C::kJointYM + C::kBlendM, y);
+        const float bulgeM = C::kBulgeM * std::max(0.0f, 1.0f - std::abs(y - C::kJointYM) / C::kBulgeHalfWidthM);
+        for (int column = 0; column < columns; ++column) {
+            const float u = float(column) / float(C::kSegments);
+            const float angle = 2.0f * kPi * u;
+            const glm::vec3 radial(std::cos(angle), 0.0f, -std::sin(angle));
+            positions.insert(positions.end(), {C::kRadiusM * radial.x, y, C::kRadiusM * radial.z});
+            normals.insert(normals.end(), {radial.x, radial.y, radial.z});
+            uvs.insert(uvs.end(), {u, 1.0f - v});
+            joints.insert(joints.end(), {0, 1, 0, 0});
+            weights.insert(weights.end(), {1.0f - bend, bend, 0.0f, 0.0f});
+            bulge.insert(bulge.end(), {bulgeM * radial.x, 0.0f, bulgeM * radial.z});
+        }
+    }
+    for (int ring = 0; ring + 1 < C::kRings; ++ring) {
+        for (int column = 0; column < C::kSegments; ++column) {
+            const auto a = static_cast<uint32_t>(ring * columns + column), b = a + 1, c = a + columns, d = c + 1;
+            indices.insert(indices.end(), {a, b, d, a, d, c});
+        }
+    }
+    const size_t vertexCount = positions.size() / 3;
+
+    tinygltf::Primitive primitive;
+    primitive.mode = TINYGLTF_MODE_TRIANGLES;
+    primitive.attributes["POSITION"] =
+        addAccessor(model, positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertexCount, true);
+    primitive.attributes["NORMAL"] = addAccessor(model, normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertexCount);
+    primitive.attributes["TEXCOORD_0"] = addAccessor(model, uvs, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, vertexCount);
+    primitive.attributes["JOINTS_0"] =
+        addAccessor(model, joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, vertexCount);
+    primitive.attributes["WEIGHTS_0"] = addAccessor(model, weights, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, vertexCount);
+    primitive.indices = addAccessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+    primitive.targets.push_back(
+        {{"POSITION", addAccessor(model, bulge, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertexCount, true)}});
+    tinygltf::Mesh mesh;
+    mesh.name = "cylinder";
+    mesh.primitives.push_back(primitive);
+    mesh.weights = {0.0};
+    model.meshes.push_back(mesh);
+
+    // Nodes: 0 the skinned mesh, 1 "root", 2 "bend".
+    tinygltf::Node meshNode;
+    meshNode.name = "cylinder";
+    meshNode.mesh = 0;
+    meshNode.skin = 0;
+    meshNode.translation = {5.0, 5.0, 5.0};  // ignored: the mesh is skinned
+    tinygltf::Node root;
+    root.name = "root";
+    root.children = {2};
+    tinygltf::Node bend;
+    bend.name = "bend";
+    bend.translation = {0.0, double(C::kJointYM), 0.0};
+    model.nodes = {meshNode, root, bend};
+    tinygltf::Scene scene;
+    scene.nodes = {0, 1};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+
+    tinygltf::Skin skin;
+    skin.name = "two bones";
+    skin.joints = {1, 2};
+    skin.skeleton = 1;
+    const std::vector<float> inverseBind = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -C::kJointYM, 0, 1};
+    skin.inverseBindMatrices = addAccessor(model, inverseBind, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, 2);
+    model.skins.push_back(skin);
+
+    tinygltf::Animation animation;
+    animation.name = "bend";
+    const std::vector<float> times = {0.0f, 1.0f, 2.0f};
+    const int input = addAccessor(model, times, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, 3, true);
+    const glm::quat bent = glm::angleAxis(glm::radians(C::kBendDeg), glm::vec3(0.0f, 0.0f, 1.0f));
+    const std::vector<float> rotations = {0, 0, 0, 1, bent.x, bent.y, bent.z, bent.w, 0, 0, 0, 1};
+    const std::vector<float> morphWeights = {0.0f, 1.0f, 0.0f};
+    tinygltf::AnimationSampler rotationSampler;
+    rotationSampler.input = input;
+    rotationSampler.output = addAccessor(model, rotations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 3);
+    rotationSampler.interpolation = "LINEAR";
+    tinygltf::AnimationSampler weightSampler = rotationSampler;
+    weightSampler.output = addAccessor(model, morphWeights, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, 3);
+    animation.samplers = {rotationSampler, weightSampler};
+    tinygltf::AnimationChannel rotate;
+    rotate.sampler = 0;
+    rotate.target_node = 2;
+    rotate.target_path = "rotation";
+    tinygltf::AnimationChannel morph;
+    morph.sampler = 1;
+    morph.target_node = 0;
+    morph.target_path = "weights";
+    animation.channels = {rotate, morph};
+    model.animations.push_back(animation);
+
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
+        if (error) *error = "tinygltf could not write " + path;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace dermis::test
