@@ -1,4 +1,4 @@
-// Crowds cost only what is visible (issue 14, docs/crowds.md): one head on
+// Crowds cost only what is visible (docs/crowds.md): one head on
 // screen alone, with 7 heads behind the camera, and with 31 behind the camera
 // and beside the view (content/scenes/crowd.json's first 1, 8 and 32
 // characters), in both modes at 640x360. The six renderers take turns within
