@@ -89,6 +89,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     // output keeps the last frame's format so that readOutput() still reads it.
     FrameRequest request = mLastRequest;
     request.aov = Aov::IrradianceTexture;
+    request.everyCharacterVisible = true;
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     plan->aov = mLastRequest.aov;

@@ -52,6 +52,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             glUseProgram(g.hasLean() ? frame.gl->programs->gbufferLean.get() : frame.gl->programs->gbuffer.get());
             const auto& characters = frame.gl->gpuScene->characters();
             for (size_t index = 0; index < characters.size(); ++index) {
+                if (!frame.plan.characters[index].visible) continue;  // off screen (CharacterPlacement::culledBecause)
                 const GpuCharacter& character = characters[index];
                 frame.gl->uploadObject(frame.objectBlock(index));
                 glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOfCharacter[index], 0xFF);

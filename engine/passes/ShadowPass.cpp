@@ -28,8 +28,10 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 d.zBuffer = builder.create("shadow z " + std::to_string(slot),
                                            {desc.width, desc.height, graph::TextureFormat::Depth32F});
                 builder.skipIf(shadow.current, "light and casters unchanged since the cached map");
+                builder.skipIf(shadow.casters.kept.empty(), "no character on screen to receive its shadow");
             },
-            [frame, desc, lightIndex = shadow.light](const graph::PassResources& resources, const ShadowData& d) {
+            [frame, desc, lightIndex = shadow.light, casters = shadow.casters.kept](const graph::PassResources& resources,
+                                                                                   const ShadowData& d) {
                 // A point light's map is a 3x2 atlas of cube faces (render/LightSetup.h): each caster is drawn once per face.
                 const bool cube = frame.plan.lights.block.lights[lightIndex].area.y > 0.5f;
                 const int faces = cube ? 6 : 1;
@@ -50,7 +52,8 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 const auto& characters = frame.gl->gpuScene->characters();
                 for (int face = 0; face < faces; ++face) {
                     if (cube) glViewport(face % 3 * faceSize, face / 3 * faceSize, faceSize, faceSize);
-                    for (size_t index = 0; index < characters.size(); ++index) {
+                    for (int caster : casters) {
+                        const auto index = static_cast<size_t>(caster);
                         const GpuCharacter& character = characters[index];
                         gpu::ObjectBlock block = frame.objectBlock(index);
                         block.mapping.y = float(lightIndex);

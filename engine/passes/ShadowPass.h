@@ -1,8 +1,10 @@
 #pragma once
 // The shadow maps: one pass per shadow-casting light (FramePlan::shadows).
-// Renders every character into the light's map as linear depth along the
-// light's axis (metres). Skipped by its predicate when the plan found the
-// cached map current (render/ShadowCache.h).
+// Renders the characters the plan keeps for the light (ShadowSlotPlan::casters,
+// render/ShadowCasters.h) into its map as linear depth along the light's axis
+// (metres). Skipped by its predicate when the plan found the cached map
+// current (render/ShadowCache.h), or when no character is on screen to
+// receive the shadow.
 
 #include "graph/RenderGraph.h"
 #include "render/FrameContext.h"

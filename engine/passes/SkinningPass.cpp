@@ -1,5 +1,7 @@
 #include "passes/SkinningPass.h"
 
+#include <algorithm>
+
 namespace dermis {
 namespace {
 
@@ -42,6 +44,18 @@ void skin(const FrameContext& frame, size_t index) {
     glClearBufferfv(GL_COLOR, 0, white);
 }
 
+// Some pass draws the character this frame: the G-buffer (it is on screen) or
+// a shadow map that is redrawn and keeps it as a caster.
+bool drawnThisFrame(const FramePlan& plan, size_t index) {
+    if (plan.characters[index].visible) return true;
+    for (const ShadowSlotPlan& shadow : plan.shadows) {
+        if (shadow.current) continue;
+        if (std::find(shadow.casters.kept.begin(), shadow.casters.kept.end(), static_cast<int>(index)) != shadow.casters.kept.end())
+            return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void addSkinningPasses(graph::RenderGraph& graph, const FrameContext& frame) {
@@ -53,6 +67,7 @@ void addSkinningPasses(graph::RenderGraph& graph, const FrameContext& frame) {
             [&](graph::PassBuilder& builder, SkinningData&) {
                 builder.sideEffect();
                 builder.skipIf(placement.poseCurrent, "the vertex buffer holds this pose already");
+                builder.skipIf(!drawnThisFrame(frame.plan, index), "off screen, and no shadow map redrawn this frame holds it");
             },
             [frame, index](const graph::PassResources&, const SkinningData&) { skin(frame, index); });
     }

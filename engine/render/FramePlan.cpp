@@ -9,18 +9,52 @@
 namespace dermis {
 namespace {
 
-Bounds unionBounds(const std::vector<CharacterPlacement>& characters) {
-    if (characters.empty()) return Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
-    Bounds out = characters.front().worldBounds;
+// Of all characters, or of the visible ones; a unit box at the origin when there are none.
+Bounds unionBounds(const std::vector<CharacterPlacement>& characters, bool visibleOnly) {
+    Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
     for (const CharacterPlacement& c : characters) {
+        if (visibleOnly && !c.visible) continue;
         out.min = glm::min(out.min, c.worldBounds.min);
         out.max = glm::max(out.max, c.worldBounds.max);
     }
+    if (out.min.x > out.max.x) return Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
     return out;
 }
 
+void markVisibleCharacters(const FrameRequest& request, FramePlan& plan) {
+    for (CharacterPlacement& c : plan.characters) {
+        const ScreenFootprint footprint = screenFootprint(c.worldBounds, plan.view);
+        c.visible = request.everyCharacterVisible || footprint.visible;
+        c.culledBecause = c.visible ? "" : std::string("off screen: ") + footprint.outside;
+    }
+}
+
+// Each shadowed light's map is fitted to the visible characters (its
+// receivers) and holds the casters that can shade them: chosen with the map
+// fitted to the receivers alone, which sets its axes and texel size, then
+// the map's depth range is stretched to reach them.
+std::vector<ShadowCasters> fitShadows(const Scene& scene, FramePlan& plan) {
+    const Bounds receivers = unionBounds(plan.characters, true);
+    const LightSetup aroundReceivers = setupLights(scene.lights, receivers, scene.settings.shadow);
+    std::vector<Bounds> bounds;
+    std::vector<bool> visible;
+    for (const CharacterPlacement& c : plan.characters) {
+        bounds.push_back(c.worldBounds);
+        visible.push_back(c.visible);
+    }
+    std::vector<ShadowCasters> casters;
+    std::vector<Bounds> reach(scene.lights.size(), receivers);
+    for (int light : aroundReceivers.shadowedLights) {
+        casters.push_back(chooseShadowCasters(aroundReceivers.block.lights[light], bounds, visible));
+        if (!casters.back().kept.empty()) reach[static_cast<size_t>(light)] = casters.back().reach;
+    }
+    plan.lights = setupLights(scene.lights, receivers, scene.settings.shadow, reach);
+    return casters;
+}
+
 // A shadowed light is a back light when it is behind some visible SSS
-// character as the camera sees it (Jimenez et al. 2010).
+// character as the camera sees it (Jimenez et al. 2010); a character off
+// screen has no pixel to transmit it.
 void markBackLights(const Scene& scene, FramePlan& plan) {
     for (int index : plan.lights.shadowedLights) {
         const Light& light = scene.lights[static_cast<size_t>(index)];
@@ -29,7 +63,7 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
         bool behind = false;
         for (size_t c = 0; c < plan.characters.size() && !behind; ++c) {
             const int slot = plan.sss.slotOfCharacter[c];
-            behind = slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible &&
+            behind = slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible && plan.characters[c].visible &&
                      isBackLight(light, plan.characters[c].worldBounds, scene.camera.positionM);
         }
         plan.lights.block.lights[index].shadowDepth.w = behind ? 1.0f : 0.0f;
@@ -43,21 +77,12 @@ std::string shadowPassName(const Scene& scene, int lightIndex) {
            (type == LightType::Directional ? "(dir)" : type == LightType::Spot ? "(spot)" : "(point)");
 }
 
-// What the casters' shadows depend on: each one's transform and, when
-// animated, its pose (its morph weights packed 16 to a matrix).
-std::vector<glm::mat4> casterKey(const std::vector<CharacterPlacement>& characters) {
-    std::vector<glm::mat4> key;
-    for (const CharacterPlacement& c : characters) {
-        key.push_back(c.worldFromObject);
-        if (!c.animated) continue;
-        key.insert(key.end(), c.pose.palette.begin(), c.pose.palette.end());
-        for (size_t w = 0; w < c.pose.morphWeights.size(); w += 16) {
-            glm::mat4 packed(0.0f);
-            for (size_t i = 0; i < 16 && w + i < c.pose.morphWeights.size(); ++i) packed[int(i / 4)][int(i % 4)] = c.pose.morphWeights[w + i];
-            key.push_back(packed);
-        }
-    }
-    return key;
+// An animated caster's shadow depends on its pose too: its palette and morph
+// weights join the cache key after the light and the kept casters' transforms.
+void appendPoseKey(const CharacterPlacement& caster, std::vector<float>& key) {
+    if (!caster.animated) return;
+    for (const glm::mat4& m : caster.pose.palette) key.insert(key.end(), &m[0][0], &m[0][0] + 16);
+    key.insert(key.end(), caster.pose.morphWeights.begin(), caster.pose.morphWeights.end());
 }
 
 // The character's pose at this frame's time, and its bounds in that pose.
@@ -82,9 +107,8 @@ Status poseCharacter(const Scene& scene, const SceneGeometry& geometry, size_t i
     return success();
 }
 
-void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) {
+void planShadows(const Scene& scene, const ShadowCache& cache, std::vector<ShadowCasters> casters, FramePlan& plan) {
     const auto mapSize = static_cast<uint32_t>(scene.settings.shadow.mapSize);
-    const std::vector<glm::mat4> casters = casterKey(plan.characters);
     for (size_t slot = 0; slot < plan.lights.shadowedLights.size(); ++slot) {
         ShadowSlotPlan s;
         s.light = plan.lights.shadowedLights[slot];
@@ -94,7 +118,11 @@ void planShadows(const Scene& scene, const ShadowCache& cache, FramePlan& plan) 
             const uint32_t face = cubeShadowFaceSize(scene.settings.shadow.mapSize);
             s.desc = {3 * face, 2 * face, graph::TextureFormat::R32F};  // the cube atlas (render/LightSetup.h)
         }
-        s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], casters);
+        s.casters = std::move(casters[slot]);
+        std::vector<glm::mat4> transforms;
+        for (int c : s.casters.kept) transforms.push_back(plan.characters[static_cast<size_t>(c)].worldFromObject);
+        s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], s.casters.kept, transforms);
+        for (int c : s.casters.kept) appendPoseKey(plan.characters[static_cast<size_t>(c)], s.key);
         s.current = cache.isCurrent(static_cast<int>(slot), s.desc, s.key);
         plan.shadows.push_back(std::move(s));
     }
@@ -168,14 +196,15 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
         plan.characters.push_back(placement);
         bounds.push_back(placement.worldBounds);
     }
-    plan.worldBounds = unionBounds(plan.characters);
+    plan.worldBounds = unionBounds(plan.characters, false);
+    markVisibleCharacters(request, plan);
 
     auto sss = planSss(scene, bounds, plan.view);
     if (!sss.ok()) return sss.error();
     plan.sss = std::move(*sss);
-    plan.lights = setupLights(scene.lights, plan.worldBounds, scene.settings.shadow);
+    std::vector<ShadowCasters> casters = fitShadows(scene, plan);
     markBackLights(scene, plan);
-    planShadows(scene, shadows, plan);
+    planShadows(scene, shadows, std::move(casters), plan);
 
     const bool textureSpaceMode = scene.settings.mode == SssMode::TextureSpace;
     plan.textureSpace = aovIsUvLayout(request.aov) || (textureSpaceMode && aovReadsSss(request.aov, plan.lean));

@@ -4,11 +4,15 @@
 // CPU and without GL:
 //
 //   - the view (one ViewParams for every planner),
-//   - where each character is (world transform and bounds),
+//   - where each character is (world transform and bounds) and whether it
+//     is visible: only visible characters are drawn in the G-buffer and
+//     texture space,
 //   - the lights' block and shadow layout: which light owns which shadow
-//     slot, which slots' cached maps are still current (their passes are
-//     skipped) and which lights are back lights (Jimenez et al. 2010: only
-//     those transmit light through thin regions),
+//     slot, each map fitted to the visible characters and holding only the
+//     casters that can shade them (render/ShadowCasters.h), which slots'
+//     cached maps are still current (their passes are skipped) and which
+//     lights are back lights (Jimenez et al. 2010: only those transmit light
+//     through thin regions),
 //   - the screen-space SSS plan (render/SssPlan.h) and, when the frame uses
 //     texture space, the texture-space plan per character (render/TsPlan.h),
 //   - the blur kernels, whether the frame carries LEAN moments, and so which
@@ -25,6 +29,7 @@
 #include "render/LightSetup.h"
 #include "render/SceneGeometry.h"
 #include "render/ShadowCache.h"
+#include "render/ShadowCasters.h"
 #include "render/SssPlan.h"
 #include "render/TsPlan.h"
 #include "anim/Rig.h"
@@ -49,6 +54,9 @@ struct FrameRequest {
     // The frame's time, seconds: each animated character's clip time is
     // animation.time_s + animation.speed x timeS (scene/Scene.h).
     float timeS = 0.0f;
+    // Every character counts as visible: the irradiance capture renders
+    // characters off screen too (Renderer::captureIrradianceTextures).
+    bool everyCharacterVisible = false;
 };
 
 // Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).
@@ -66,6 +74,9 @@ struct CharacterPlacement {
     RigPose pose;
     std::string skinPassName;
     bool poseCurrent = false;
+    // Its bounds may cover a pixel (render/ScreenFootprint.h); else why not.
+    bool visible = true;
+    std::string culledBecause;
 };
 
 // One shadow-casting light's map this frame.
@@ -73,6 +84,7 @@ struct ShadowSlotPlan {
     int light = 0;             // index into Scene::lights
     std::string passName;      // "shadow:light<i>(dir)", "(spot)" or "(point)"
     graph::TextureDesc desc;   // the map: R32F linear light depth, metres
+    ShadowCasters casters;     // the characters drawn into it, and why the others are not
     std::vector<float> key;    // what it is rendered from (ShadowCache::makeKey)
     bool current = false;      // the cached map was rendered from the same: its pass is skipped
 };

@@ -1,6 +1,7 @@
 #pragma once
 // Scene lights -> the LightsBlock, including each shadow-casting light's
-// projection fitted around the scene's bounds.
+// projection fitted around the receivers' bounds (the visible characters;
+// render/ShadowCasters.h), its depth range reaching the casters kept for it.
 //
 // Shadow maps store linear depth along the light's axis (metres), measured
 // from the light's position. Directional lights get an orthographic box whose
@@ -28,6 +29,12 @@ struct LightSetup {
 // 1.5 maps' texels.
 uint32_t cubeShadowFaceSize(int mapSize);
 
-LightSetup setupLights(const std::vector<Light>& lights, const Bounds& sceneBounds, const ShadowSettings& shadows);
+// `receivers` sets each map's extent: the orthographic box and the far plane
+// enclose its bounding sphere. `casterReach`, per light index (missing: the
+// receivers), is the box of the casters kept for that light: the near plane
+// (and a directional light's origin) moves towards the light until it holds
+// them; casters inside the receivers' sphere change nothing.
+LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers, const ShadowSettings& shadows,
+                       const std::vector<Bounds>& casterReach = {});
 
 }  // namespace dermis

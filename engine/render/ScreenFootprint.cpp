@@ -6,6 +6,16 @@
 #include <cmath>
 
 namespace dermis {
+namespace {
+
+// Clip planes in the order screenFootprint counts them: -x, +x, -y, +y, -z (near), +z (far).
+constexpr const char* kOutsidePlane[6] = {"left of the view",  "right of the view",          "below the view",
+                                          "above the view",    "behind the camera (near plane)", "beyond the far plane"};
+// The order a reason is looked for in: behind the camera first, since a box
+// there can be outside a side plane too.
+constexpr int kReasonOrder[6] = {4, 5, 0, 1, 2, 3};
+
+}  // namespace
 
 ScreenFootprint screenFootprint(const Bounds& bounds, const ViewParams& view) {
     ScreenFootprint out;
@@ -33,8 +43,11 @@ ScreenFootprint screenFootprint(const Bounds& bounds, const ViewParams& view) {
             ndcMax = glm::max(ndcMax, ndc);
         }
     }
-    for (int plane : outside) {
-        if (plane == 8) return out;
+    for (int plane : kReasonOrder) {
+        if (outside[plane] == 8) {
+            out.outside = kOutsidePlane[plane];
+            return out;
+        }
     }
     out.visible = true;
     out.nearestViewDepthM = std::max(nearest, view.nearM);

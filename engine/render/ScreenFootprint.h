@@ -15,6 +15,8 @@ namespace dermis {
 
 struct ScreenFootprint {
     bool visible = false;
+    // When not visible: which side of the view all eight corners are on.
+    const char* outside = "";
     float nearestViewDepthM = 0.0f;  // clamped to the near plane
     glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)
 };

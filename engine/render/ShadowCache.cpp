@@ -4,11 +4,15 @@
 
 namespace dermis {
 
-std::vector<float> ShadowCache::makeKey(const gpu::GpuLight& light, const std::vector<glm::mat4>& casters) {
-    std::vector<float> key(sizeof(gpu::GpuLight) / sizeof(float) + casters.size() * 16);
+std::vector<float> ShadowCache::makeKey(const gpu::GpuLight& light, const std::vector<int>& casters,
+                                        const std::vector<glm::mat4>& transforms) {
+    constexpr size_t kLightFloats = sizeof(gpu::GpuLight) / sizeof(float);
+    std::vector<float> key(kLightFloats + casters.size() * 17);
     std::memcpy(key.data(), &light, sizeof light);
-    for (size_t i = 0; i < casters.size(); ++i) {
-        std::memcpy(key.data() + sizeof(gpu::GpuLight) / sizeof(float) + i * 16, &casters[i], sizeof(glm::mat4));
+    for (size_t i = 0; i < casters.size() && i < transforms.size(); ++i) {
+        float* entry = key.data() + kLightFloats + i * 17;
+        entry[0] = float(casters[i]);
+        std::memcpy(entry + 1, &transforms[i], sizeof(glm::mat4));
     }
     return key;
 }

@@ -13,7 +13,12 @@ void RenderFixture::load(const std::string& sceneFile, const std::vector<std::st
     const std::string path = std::filesystem::exists(sceneFile) ? sceneFile : contentScene(sceneFile);
     auto scene = loadScene(path, overrides);
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    mScene = std::make_unique<Scene>(std::move(*scene));
+    use(std::move(*scene));
+}
+
+void RenderFixture::use(Scene scene) {
+    mRenderer.reset();
+    mScene = std::make_unique<Scene>(std::move(scene));
     auto renderer = Renderer::create(*mScene);
     ASSERT_TRUE(renderer.ok()) << renderer.error().message();
     mRenderer = std::move(*renderer);

@@ -18,6 +18,8 @@ class RenderFixture : public GlTest {
 protected:
     // sceneFile: a path, or a name in content/scenes/ ("default.json").
     void load(const std::string& sceneFile, const std::vector<std::string>& overrides = {});
+    // A scene made or edited in the test.
+    void use(Scene scene);
     Image render(Aov aov, int width, int height, int frames = 1);
     // The named pass's summary over the frames rendered so far, or nullptr.
     const PassSummary* pass(const std::string& name);

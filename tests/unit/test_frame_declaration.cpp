@@ -62,8 +62,12 @@ public:
         mScene = std::make_unique<Scene>(std::move(*scene));
         mGeometry = geometryOf(sceneFile, *mScene);
     }
+    DeclaredFrames(Scene scene, SceneGeometry geometry)
+        : mScene(std::make_unique<Scene>(std::move(scene))), mGeometry(std::move(geometry)) {}
 
     Scene& scene() { return *mScene; }
+    // The last frame's plan.
+    const FramePlan& plan() const { return mPlan; }
 
     // Plans, declares and compiles one frame; false (with a test failure) on an error.
     bool declare(Aov aov = Aov::Final) {
@@ -80,6 +84,7 @@ public:
         // As the renderer does after running the graph.
         recordShadowMaps(*plan, graph, mShadowCache);
         mReports = graph.passReports();
+        mPlan = std::move(*plan);
         return true;
     }
 
@@ -130,9 +135,28 @@ private:
 
     std::unique_ptr<Scene> mScene;
     SceneGeometry mGeometry;
+    FramePlan mPlan;
     ShadowCache mShadowCache;
     std::vector<graph::PassReport> mReports;
 };
+
+// content/scenes/crowd.json's first `count` characters: the default head on
+// screen, then heads behind the camera and beside the view. Every one is the
+// procedural head, so default.json's CPU mesh stands in for each.
+DeclaredFrames crowd(size_t count, const std::vector<std::string>& overrides = {}) {
+    auto scene = loadScene(test::contentScene("crowd.json"), overrides);
+    EXPECT_TRUE(scene.ok()) << scene.error().message();
+    if (!scene.ok()) return DeclaredFrames(Scene{}, SceneGeometry{});
+    scene->characters.resize(count);
+    static const std::vector<Model> head = [] {
+        auto models = loadSceneModels(*loadScene(test::contentScene("default.json")));
+        EXPECT_TRUE(models.ok());
+        return models.ok() ? std::move(*models) : std::vector<Model>{};
+    }();
+    std::vector<Model> models;
+    for (size_t c = 0; c < count && !head.empty(); ++c) models.push_back(head.front());
+    return DeclaredFrames(std::move(*scene), SceneGeometry(models));
+}
 
 }  // namespace
 
@@ -277,4 +301,83 @@ TEST(FrameDeclaration, AnAovCullsTheLightingChain) {
     // A shadow map that did not run is not cached: the final frame renders it.
     ASSERT_TRUE(frames.declare(Aov::Final));
     EXPECT_TRUE(frames.executed("shadow:light0(dir)")) << frames.listing();
+}
+
+TEST(FrameDeclaration, OffScreenCharactersAreCulledFromTheGBufferTextureSpaceAndShadowMaps) {
+    DeclaredFrames frames = crowd(32, {"mode=ts"});
+    ASSERT_TRUE(frames.declare());
+    const FramePlan& plan = frames.plan();
+    ASSERT_EQ(plan.characters.size(), 32u);
+    EXPECT_TRUE(plan.characters[0].visible);
+    EXPECT_EQ(plan.characters[0].culledBecause, "");
+    for (size_t c = 1; c < plan.characters.size(); ++c) {
+        const std::string& name = frames.scene().characters[c].name;
+        EXPECT_FALSE(plan.characters[c].visible) << name;
+        // The G-buffer draws only visible characters (passes/GBufferPass.cpp).
+        EXPECT_EQ(plan.characters[c].culledBecause, name.rfind("behind", 0) == 0 ? "off screen: behind the camera (near plane)"
+                                                                               : "off screen: left of the view")
+            << name;
+        EXPECT_EQ(frames.culledBecause("ts " + name + " irradiance"), "predicate: character off screen");
+    }
+    EXPECT_TRUE(frames.executed("ts head irradiance"));
+
+    // Both maps hold the head alone: no other character can shade it.
+    ASSERT_EQ(plan.shadows.size(), 2u);
+    for (const ShadowSlotPlan& shadow : plan.shadows) {
+        EXPECT_EQ(shadow.casters.kept, std::vector<int>{0}) << shadow.passName;
+        ASSERT_EQ(shadow.casters.culledBecause.size(), 32u);
+        EXPECT_EQ(shadow.casters.culledBecause[0], "");
+        const std::string why = shadow.passName == "shadow:light0(dir)"
+                                    ? "its light-space footprint meets no visible character's, or lies beyond them"
+                                    : "it is outside every visible character's shadow volume from the light";
+        for (size_t c = 1; c < 32; ++c) EXPECT_EQ(shadow.casters.culledBecause[c], why) << shadow.passName << " " << c;
+    }
+}
+
+TEST(FrameDeclaration, ShadowMapsAreFittedToTheVisibleCharactersAlone) {
+    // The head's lights are those of the head alone: its maps are the same maps.
+    DeclaredFrames alone = crowd(1);
+    DeclaredFrames withCrowd = crowd(32);
+    ASSERT_TRUE(alone.declare());
+    ASSERT_TRUE(withCrowd.declare());
+    ASSERT_EQ(alone.plan().shadows.size(), withCrowd.plan().shadows.size());
+    for (size_t slot = 0; slot < alone.plan().shadows.size(); ++slot) {
+        EXPECT_EQ(alone.plan().shadows[slot].key, withCrowd.plan().shadows[slot].key) << slot;
+    }
+
+    // A head behind the visible one, towards the sun, shades it: it is kept,
+    // and the directional map's depth range reaches back to it.
+    const glm::vec3 towardsSun = -glm::normalize(withCrowd.scene().lights[0].direction);
+    withCrowd.scene().characters[1].transform.translationM = 1.5f * towardsSun;
+    ASSERT_TRUE(withCrowd.declare());
+    EXPECT_EQ(withCrowd.plan().shadows[0].casters.kept, (std::vector<int>{0, 1}));
+    EXPECT_FALSE(withCrowd.plan().characters[1].visible) << withCrowd.plan().characters[1].culledBecause;
+    const gpu::GpuLight& sun = withCrowd.plan().lights.block.lights[0];
+    const gpu::GpuLight& sunAlone = alone.plan().lights.block.lights[0];
+    const Bounds& caster = withCrowd.plan().characters[1].worldBounds;
+    for (const glm::vec3 corner : {caster.min, caster.max}) {
+        EXPECT_GE(glm::dot(corner - glm::vec3(sun.positionType), glm::vec3(sun.directionShadow)), sun.shadowDepth.x);
+    }
+    EXPECT_EQ(sun.shadowParams.z, sunAlone.shadowParams.z);  // the same texels: the box is the head's
+    // With nothing on screen, no map is drawn.
+    DeclaredFrames away = crowd(1, kLookAway);
+    ASSERT_TRUE(away.declare());
+    EXPECT_EQ(away.culledBecause("shadow:light0(dir)"), "predicate: no character on screen to receive its shadow");
+}
+
+TEST(FrameDeclaration, AnOffScreenCharacterThatMovesKeepsTheCachedShadowMaps) {
+    DeclaredFrames frames = crowd(8);
+    const std::vector<std::string> shadows = {"shadow:light0(dir)", "shadow:light1(spot)"};
+    ASSERT_TRUE(frames.declare());
+    for (const std::string& pass : shadows) EXPECT_TRUE(frames.executed(pass)) << frames.listing();
+
+    frames.scene().characters[3].transform.translationM += glm::vec3(0.1f, 0.05f, 0.2f);
+    ASSERT_TRUE(frames.declare());
+    for (const std::string& pass : shadows) {
+        EXPECT_EQ(frames.culledBecause(pass), "predicate: light and casters unchanged since the cached map") << pass;
+    }
+    // The visible head moving makes both maps stale.
+    frames.scene().characters[0].transform.translationM += glm::vec3(0.01f, 0.0f, 0.0f);
+    ASSERT_TRUE(frames.declare());
+    for (const std::string& pass : shadows) EXPECT_TRUE(frames.executed(pass)) << pass;
 }

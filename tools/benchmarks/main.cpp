@@ -1,6 +1,7 @@
 // dermis_benchmarks: Google Benchmark runs, then the comparisons the issues
 // ask for, printed as ratios measured side by side in this one run.
 #include "BenchContext.h"
+#include "CrowdBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "TsBenchmarks.h"
 
@@ -53,5 +54,6 @@ int main(int argc, char** argv) {
     }
     dermis::bench::printTextureSpaceSummary();
     dermis::bench::printLeanSummary();
+    dermis::bench::printCrowdSummary();
     return 0;
 }
