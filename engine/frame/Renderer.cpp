@@ -117,6 +117,23 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     return images;
 }
 
+std::vector<CharacterReport> Renderer::characterReports() const {
+    std::vector<CharacterReport> reports;
+    if (!mPlan) return reports;
+    for (size_t c = 0; c < mPlan->characters.size() && c < mScene.characters.size(); ++c) {
+        const CharacterPlacement& placement = mPlan->characters[c];
+        CharacterReport report{mScene.characters[c].name, placement.visible, placement.culledBecause,
+                               placement.animated, placement.clipTimeS, 0, ""};
+        for (const TsCharacterPlan& ts : mPlan->ts.characters) {
+            if (static_cast<size_t>(ts.character) != c || !mPlan->textureSpace) continue;
+            report.textureSpaceSize = ts.runs() ? ts.size : 0;
+            report.textureSpaceFallback = ts.fallback;
+        }
+        reports.push_back(std::move(report));
+    }
+    return reports;
+}
+
 Status Renderer::reloadShaders() {
     auto programs = Programs::build();
     if (!programs.ok()) return programs.error();

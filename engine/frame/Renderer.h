@@ -72,6 +72,8 @@ public:
     Status reloadShaders();
 
     const FrameTimings& timings() const { return mTimings; }
+    // Each character as the last frame planned it (for the timings JSON); empty before the first frame.
+    std::vector<CharacterReport> characterReports() const;
     void resetTimings() { mTimings = FrameTimings{}; }
     GpuScene& gpuScene() { return mGpuScene; }
     // The CPU side of the scene's meshes: bounds, UV layouts, rigs and their clips.

@@ -25,6 +25,7 @@ static_assert(sizeof(SsaoBlock) == 2 * 16, "SsaoBlock must match std140");
 static_assert(sizeof(TextureSpaceBlock) == 64 + (6 + DERMIS_MAX_BLUR_TAPS + DERMIS_MAX_PROFILE_GAUSSIANS) * 16,
               "TextureSpaceBlock must match std140");
 static_assert(sizeof(SkinningBlock) == 16, "SkinningBlock must match std140");
+static_assert(sizeof(ScreenRegionsBlock) == DERMIS_MAX_SCREEN_REGIONS * 16, "ScreenRegionsBlock must match std140");
 static_assert(sizeof(SanitiseBlock) == 8 * 4, "SanitiseBlock must match std430");
 static_assert(sizeof(FrameBlock) % 16 == 0 && sizeof(ObjectBlock) % 16 == 0, "std140 blocks are vec4-aligned");
 

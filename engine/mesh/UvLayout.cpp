@@ -144,8 +144,9 @@ void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
 
 // Rasterises every triangle's UV footprint onto texel centres of the grid
 // (half-open edge test, so a centre on an edge two triangles share counts
-// once) and returns the share of covered texels covered more than once.
-float overlapFraction(const MeshData& mesh) {
+// once): the share of the grid's texels covered, and of those the share
+// covered more than once.
+void coverageAndOverlap(const MeshData& mesh, UvLayout& out) {
     constexpr int n = kUvOverlapGrid;
     std::vector<uint8_t> count(size_t(n) * n, 0);
     const size_t vertices = mesh.vertices.size();
@@ -182,7 +183,8 @@ float overlapFraction(const MeshData& mesh) {
         covered += c > 0;
         overlapped += c > 1;
     }
-    return covered > 0 ? float(double(overlapped) / double(covered)) : 0.0f;
+    out.uvCoverageFraction = float(double(covered) / double(count.size()));
+    out.uvOverlapFraction = covered > 0 ? float(double(overlapped) / double(covered)) : 0.0f;
 }
 
 }  // namespace
@@ -195,7 +197,7 @@ UvLayout analyseUvDerivatives(const MeshData& mesh) {
 
 UvLayout analyseUvLayout(const MeshData& mesh) {
     UvLayout out;
-    out.uvOverlapFraction = overlapFraction(mesh);
+    coverageAndOverlap(mesh, out);
     accumulateDerivatives(mesh, out);
     computeBorderDistances(mesh, out);
     std::vector<float> typical;

@@ -51,6 +51,10 @@ struct UvLayout {
     // irradiance texture clips them): mirrored or stacked charts share texels,
     // and an irradiance texture can hold only one light per texel.
     float uvOverlapFraction = 0.0f;
+    // The share of the unit UV square's texels (the same grid) that the
+    // layout covers: near 1 for a layout that fills the square, small for an
+    // atlas with much empty space, whose irradiance texture is mostly unused.
+    float uvCoverageFraction = 0.0f;
 };
 
 // The grid uvOverlapFraction is counted on.

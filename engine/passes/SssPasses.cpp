@@ -75,8 +75,8 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
                 d.extrasAccumulatedOut.push_back(builder.write(accumulated));
             }
         },
-        [frame, step = blur.step, slot = blur.slot->slot, scissor = blur.slot->scissor, horizontal = blur.horizontal,
-         packed = blur.packed](const graph::PassResources& resources, const BlurData& d) {
+        [frame, step = blur.step, slot = blur.slot->slot, scissor = blur.slot->scissor, regions = blur.slot->regions,
+         horizontal = blur.horizontal, packed = blur.packed](const graph::PassResources& resources, const BlurData& d) {
             std::vector<graph::TextureHandle> targets = {d.out, d.accumulatedOut};
             targets.insert(targets.end(), d.extrasAccumulatedOut.begin(), d.extrasAccumulatedOut.end());
             const Programs& programs = *frame.gl->programs;
@@ -86,7 +86,7 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
             frame.gl->uploadPassBlock(&block, sizeof block);
             const ScopedSssState state(frame, scissor, slot);
             if (horizontal) {
-                frame.gl->drawFullscreenTriangle();
+                frame.gl->drawRegions(regions);
                 return;
             }
             // Irradiance: += w_i (RGB) x value; its alpha and the moments: += mean(w_i) x value (SssVariant.h).
@@ -97,7 +97,7 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
                 glBlendFunci(static_cast<GLuint>(2 + k), GL_CONSTANT_ALPHA, GL_ONE);
             }
             glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
-            frame.gl->drawFullscreenTriangle();
+            frame.gl->drawRegions(regions);
             for (size_t k = 0; k <= d.extrasAccumulatedOut.size(); ++k) glDisablei(GL_BLEND, static_cast<GLuint>(1 + k));
         });
 }

@@ -1,5 +1,7 @@
 #include "render/FrameContext.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <cassert>
@@ -9,6 +11,19 @@ namespace dermis {
 void FrameServices::drawFullscreenTriangle() const {
     glBindVertexArray(emptyVertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void FrameServices::drawRegions(const std::vector<glm::ivec4>& regions) const {
+    if (regions.empty()) {
+        drawFullscreenTriangle();
+        return;
+    }
+    gpu::ScreenRegionsBlock block{};
+    const size_t count = std::min<size_t>(regions.size(), DERMIS_MAX_SCREEN_REGIONS);
+    std::copy_n(regions.begin(), count, block.regions);
+    glNamedBufferSubData(regionUniforms, 0, static_cast<GLsizeiptr>(count * sizeof(glm::ivec4)), block.regions);
+    glBindVertexArray(emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0 + 3, static_cast<GLsizei>(6 * count));
 }
 
 void FrameServices::uploadObject(const gpu::ObjectBlock& block) const {

@@ -30,12 +30,18 @@ struct FrameServices {
     const TsMeshes* tsMeshes = nullptr;  // the texture-space meshes of the characters in FramePlan::ts
     GLuint objectUniforms = 0;  // ObjectBlock, rewritten per draw
     GLuint passUniforms = 0;    // the per-pass block at DERMIS_BINDING_PASS, rewritten per pass
+    GLuint regionUniforms = 0;  // ScreenRegionsBlock, rewritten by drawRegions
     GLuint emptyVertexArray = 0;
     GLuint whiteTexture = 0;    // 1x1 RGBA8 white: a neutral input (AO = 1)
     GLuint blackTexture = 0;    // 1x1 RGBA8 black: nothing (no transmitted light)
 
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;
+    // One draw covering these disjoint pixel rectangles (at most
+    // DERMIS_MAX_SCREEN_REGIONS; render/ScreenRegions.h), or the fullscreen
+    // triangle when there are none. The program's vertex stage must be
+    // shaders/fullscreen.vert.
+    void drawRegions(const std::vector<glm::ivec4>& regions) const;
     void uploadObject(const gpu::ObjectBlock& block) const;
     // Copies `size` bytes to the per-pass block; it must be at most kMaxPassBlockBytes.
     void uploadPassBlock(const void* data, size_t size) const;

@@ -142,6 +142,7 @@ std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeomet
             input.denseMmPerUv = layout.denseStretch * mmPerUnit;
             input.uvlessSurfaceFraction = layout.uvlessSurfaceFraction;
             input.uvOverlapFraction = layout.uvOverlapFraction;
+            input.uvCoverageFraction = layout.uvCoverageFraction;
         }
         inputs.push_back(input);
     }

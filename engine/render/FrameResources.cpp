@@ -39,6 +39,7 @@ FrameResources::FrameResources(const GpuScene& gpuScene, const Programs& program
     mCharacterUniforms = makeUniformBuffer(sizeof(gpu::CharactersBlock));
     mProfileUniforms = makeUniformBuffer(sizeof(gpu::ProfilesBlock));
     mPassUniforms = makeUniformBuffer(kMaxPassBlockBytes);
+    mRegionUniforms = makeUniformBuffer(sizeof(gpu::ScreenRegionsBlock));
     mEmptyVertexArray = gl::createVertexArray();
     mBeckmann = makeTableTexture(makeBeckmannTable(kBeckmannTableSize), kBeckmannTableSize);
     mEnergy = makeTableTexture(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
@@ -51,6 +52,7 @@ FrameResources::FrameResources(const GpuScene& gpuScene, const Programs& program
     mServices.tsMeshes = &mTsMeshes;
     mServices.objectUniforms = mObjectUniforms.get();
     mServices.passUniforms = mPassUniforms.get();
+    mServices.regionUniforms = mRegionUniforms.get();
     mServices.emptyVertexArray = mEmptyVertexArray.get();
     mServices.whiteTexture = mWhite.get();
     mServices.blackTexture = mBlack.get();
@@ -99,6 +101,7 @@ void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_CHARACTERS, mCharacterUniforms.get());
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PROFILES, mProfileUniforms.get());
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_PASS, mPassUniforms.get());
+    glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_SCREEN_REGIONS, mRegionUniforms.get());
     glBindTextureUnit(kBeckmannUnit, mBeckmann.get());
     glBindTextureUnit(kEnergyUnit, mEnergy.get());
 }

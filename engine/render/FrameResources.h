@@ -53,6 +53,7 @@ private:
     gl::Buffer mCharacterUniforms;
     gl::Buffer mProfileUniforms;
     gl::Buffer mPassUniforms;
+    gl::Buffer mRegionUniforms;
     gl::VertexArray mEmptyVertexArray;
     gl::Texture mBeckmann;
     gl::Texture mEnergy;

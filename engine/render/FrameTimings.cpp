@@ -107,6 +107,18 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
         j["passes"].push_back(p);
     }
     j["frame"] = {{"gpu_ms", frameGpuMs()}, {"cpu_ms", frameCpuMs()}, {"wall_ms", info.wallMsPerFrame}};
+    if (!info.characters.empty()) {
+        j["characters"] = nlohmann::ordered_json::array();
+        for (const CharacterReport& c : info.characters) {
+            j["characters"].push_back({{"name", c.name},
+                                       {"visible", c.visible},
+                                       {"culled_because", c.culledBecause},
+                                       {"animated", c.animated},
+                                       {"clip_time_s", c.clipTimeS},
+                                       {"texture_space_size", c.textureSpaceSize},
+                                       {"texture_space_fallback", c.textureSpaceFallback}});
+        }
+    }
     return j.dump(2) + "\n";
 }
 

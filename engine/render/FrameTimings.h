@@ -36,6 +36,18 @@ struct PassSummary {
     size_t samples = 0;
 };
 
+// One character as the last frame planned it (render/FramePlan.h), for the
+// timings JSON: what it cost depends on these choices.
+struct CharacterReport {
+    std::string name;
+    bool visible = true;
+    std::string culledBecause;  // why not visible
+    bool animated = false;
+    float clipTimeS = 0.0f;
+    int textureSpaceSize = 0;      // irradiance texture side; 0 when texture space does not draw it
+    std::string textureSpaceFallback;
+};
+
 struct RunInfo {
     std::string renderer;
     std::string backend;
@@ -45,6 +57,7 @@ struct RunInfo {
     int height = 0;
     int frames = 0;
     double wallMsPerFrame = 0.0;
+    std::vector<CharacterReport> characters;  // empty: the JSON has no "characters" key
 };
 
 double median(std::vector<double> values);

@@ -53,8 +53,11 @@ ScreenFootprint screenFootprint(const Bounds& bounds, const ViewParams& view) {
     out.nearestViewDepthM = std::max(nearest, view.nearM);
     if (behindNear) {
         out.scissor = glm::ivec4(0, 0, view.widthPx, view.heightPx);
+        out.unclippedPixels = INFINITY;
         return out;
     }
+    const glm::vec2 extentPx = (ndcMax - ndcMin) * 0.5f * glm::vec2(float(view.widthPx), float(view.heightPx));
+    out.unclippedPixels = extentPx.x * extentPx.y;
     ndcMin = glm::clamp(ndcMin, glm::vec2(-1.0f), glm::vec2(1.0f));
     ndcMax = glm::clamp(ndcMax, glm::vec2(-1.0f), glm::vec2(1.0f));
     const int x0 = static_cast<int>(std::floor((ndcMin.x * 0.5f + 0.5f) * float(view.widthPx)));

@@ -19,6 +19,10 @@ struct ScreenFootprint {
     const char* outside = "";
     float nearestViewDepthM = 0.0f;  // clamped to the near plane
     glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)
+    // The area of the box's projected rectangle before clipping to the
+    // frame, pixels: what the whole character would cover (infinite when the
+    // box reaches behind the camera).
+    float unclippedPixels = 0.0f;
 };
 
 ScreenFootprint screenFootprint(const Bounds& bounds, const ViewParams& view);

@@ -1,5 +1,7 @@
 #include "render/SssPlan.h"
 
+#include "render/ScreenRegions.h"
+
 #include "render/ScreenFootprint.h"
 #include "gpu/UniformBlocks.h"
 
@@ -63,6 +65,7 @@ float ViewParams::pixelsPerMetreAtUnitDepth() const { return 0.5f * float(height
 Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view) {
     SssPlan plan;
     plan.slotOfCharacter.assign(scene.characters.size(), 0);
+    std::vector<std::vector<glm::ivec4>> characterRects;  // per slot
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
         if (character.material.profile == kOpaqueProfile) continue;
@@ -89,7 +92,10 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
             existing->visible ? std::min(existing->nearestViewDepthM, fp.nearestViewDepthM) : fp.nearestViewDepthM;
         existing->scissor = existing->visible ? unionRect(existing->scissor, fp.scissor) : fp.scissor;
         existing->visible = true;
+        characterRects.resize(plan.slots.size());
+        characterRects[static_cast<size_t>(existing->slot - 1)].push_back(fp.scissor);
     }
+    for (size_t s = 0; s < characterRects.size(); ++s) plan.slots[s].regions = disjointCover(characterRects[s]);
     for (SssSlotPlan& slot : plan.slots) planSteps(slot, scene.settings.sss, view.pixelsPerMetreAtUnitDepth());
     return plan;
 }

@@ -44,6 +44,9 @@ struct SssSlotPlan {
     bool visible = false;            // some character with this profile may cover a pixel
     float nearestViewDepthM = 0.0f;  // of its visible characters' bounds, clamped to the near plane
     glm::ivec4 scissor{0};           // x, y, width, height in pixels (GL convention: y up)
+    // Disjoint rectangles covering its visible characters' rectangles
+    // (render/ScreenRegions.h): the blurs draw one each.
+    std::vector<glm::ivec4> regions;
 };
 
 struct SssPlan {

@@ -162,7 +162,13 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
         }
         const float pixelsPerMm =
             p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;
-        p.size = tsTextureSize(input.mmPerUv * pixelsPerMm, settings.ts.minSize, settings.ts.maxSize);
+        const float densitySide = input.mmPerUv * pixelsPerMm;
+        // The whole character's rectangle, clipping left out: the texture holds
+        // all of it, and a close-up's density is the first criterion's.
+        const float coverageSide = std::sqrt(kTexelsPerCoveredPixel * footprint.unclippedPixels /
+                                             std::max(input.uvCoverageFraction, 1e-4f));
+        p.size = std::min(tsTextureSize(densitySide, settings.ts.minSize, settings.ts.maxSize),
+                          tsTextureSize(coverageSide, settings.ts.minSize, settings.ts.maxSize));
         planGaussians(p, settings.sss, input.denseMmPerUv);
 
         // transmittance.enabled means "light through thin regions" in both modes.

@@ -6,9 +6,17 @@
 // Per SSS character (Chappuis 2011 §2.2.2):
 //  - visible: its bounds may cover a pixel (render/ScreenFootprint.h). An
 //    invisible character's texture-space passes are all skipped.
-//  - size: the irradiance texture's side, the power of two nearest to one
-//    texel per screen pixel at the character's nearest point, within
-//    [ts.min_size, ts.max_size].
+//  - size: the irradiance texture's side, a power of two within
+//    [ts.min_size, ts.max_size]: the one nearest to one texel per screen
+//    pixel at the character's nearest point, but no larger than the one
+//    nearest to kTexelsPerCoveredPixel covered texels per pixel of its screen
+//    rectangle, unclipped (texels x UV coverage = the texels that hold
+//    surface; a character partly off screen is sized for all of it). The
+//    first alone follows the UV layout: an atlas whose charts fill a tenth of
+//    the square asks for ten times the texels its surface needs, and a
+//    character seen small but with a near point close to the camera asks
+//    for a texture far larger than its pixels. The second makes the cost
+//    follow the screen coverage (docs/texture-space.md, "Texture size").
 //  - Gaussians: step i blurs texture i-1 by v_i - v_(i-1) into texture i
 //    (texture -1 is the irradiance texture, v_(-1) = 0). A step whose
 //    Gaussian is narrower than half a texel where the layout is densest is
@@ -57,7 +65,16 @@ struct TsCharacterInput {
     float denseMmPerUv = 0.0f;  // the same where the layout is densest (UvLayout::denseStretch, scaled)
     float uvlessSurfaceFraction = 0.0f;  // UvLayout::uvlessSurfaceFraction
     float uvOverlapFraction = 0.0f;      // UvLayout::uvOverlapFraction
+    float uvCoverageFraction = 1.0f;     // UvLayout::uvCoverageFraction
 };
+
+// Texels holding surface per pixel of the character's screen rectangle. The
+// texture holds the whole surface and the screen about half of it (the side
+// facing the camera), so this is about two texels per visible pixel. 4 keeps
+// well-packed layouts at the size texel density gives: the procedural head
+// (84.7% UV coverage) at 640x360 asks for a side of 804 by density and 791 by
+// coverage, the scan (91.6%) 711 and 732: the same powers of two as before.
+constexpr float kTexelsPerCoveredPixel = 4.0f;
 
 struct TsStep {
     int gaussian = 0;              // index into the profile's Gaussians

@@ -20,6 +20,7 @@
 // Taps per direction of a separable blur kernel (odd counts from 3 up to this).
 #define DERMIS_MIN_BLUR_TAPS 3
 #define DERMIS_MAX_BLUR_TAPS 33
+#define DERMIS_MAX_SCREEN_REGIONS 64     // rectangles one fullscreen draw may cover (engine/render/ScreenRegions.h)
 
 // Light types (GpuLight::positionType.w); C++: LightType.
 #define DERMIS_LIGHT_DIRECTIONAL 0

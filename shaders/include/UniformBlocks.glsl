@@ -29,6 +29,7 @@
 #define DERMIS_BINDING_CHARACTERS 3
 #define DERMIS_BINDING_PROFILES 4
 #define DERMIS_BINDING_PASS 5
+#define DERMIS_BINDING_SCREEN_REGIONS 6
 
 // The depth-key target (R32UI) packs a pixel's profile slot in the top 4 bits
 // and its view depth in the low 28, in units of 2^-20 m (about 1 micrometre,
@@ -117,6 +118,14 @@ DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
     vec4 kernel;  // x: radius (m) and y: sample count where a character's params.y/z are 0; z: bias (fraction of the radius); w: range-check fade end (radii)
     vec4 blur;    // x: half width (pixels, 0..4); y: depth tolerance (fraction of view depth)
 } DERMIS_BLOCK_END(uSsao)
+#endif
+
+// The rectangles a fullscreen pass covers in one draw (shaders/fullscreen.vert,
+// engine/render/ScreenRegions.h): disjoint, in pixels.
+#if defined(__cplusplus) || defined(DERMIS_USE_SCREEN_REGIONS_BLOCK)
+DERMIS_BLOCK(ScreenRegionsBlock, DERMIS_BINDING_SCREEN_REGIONS) {
+    ivec4 regions[DERMIS_MAX_SCREEN_REGIONS];  // x, y, width, height (pixels, y up)
+} DERMIS_BLOCK_END(uScreenRegions)
 #endif
 
 // GPU skinning of one character (passes/SkinningPass.cpp, shaders/skinning.comp).

@@ -156,6 +156,22 @@ TEST_F(Skinning, TextureSpaceDerivativesFollowTheDeformation) {
     EXPECT_LT(worst, 1e-4f) << "over " << rigid << " rigidly moving vertices";
 }
 
+TEST_F(Skinning, CharacterNoPassDrawsIsNotSkinned) {
+    // The camera turned away: the cylinder is off screen, and with nothing
+    // visible to shade no shadow map keeps it as a caster.
+    load((mDir / "cylinder.json").string(), {"camera.target_m=[0,0.12,2]"});
+    renderAt(0.5f);
+    EXPECT_FALSE(ran(kSkinPass));
+    const PassSummary* skin = pass(kSkinPass);
+    ASSERT_NE(skin, nullptr);
+    EXPECT_NE(skin->culledBecause.find("off screen, and no shadow map redrawn this frame holds it"), std::string::npos)
+        << skin->culledBecause;
+    // Turned back, it is skinned at once.
+    load((mDir / "cylinder.json").string());
+    renderAt(0.5f);
+    EXPECT_TRUE(ran(kSkinPass));
+}
+
 // On llvmpipe a GL_TIME_ELAPSED query holding only a compute dispatch left
 // the next pass's query without a start: the shadow pass reported the time
 // since boot (hours). passes/SkinningPass.cpp works around it; without the

@@ -56,7 +56,7 @@ float smoothstep(float a, float b, float x) {
 
 }  // namespace
 
-bool writeBendingCylinder(const std::string& path, std::string* error) {
+bool writeBendingCylinder(const std::string& path, std::string* error, float uvScale) {
     using C = BendingCylinder;
     tinygltf::Model model;
     model.asset.version = "2.0";
@@ -78,7 +78,7 @@ bool writeBendingCylinder(const std::string& path, std::string* error) {
             const glm::vec3 radial(std::cos(angle), 0.0f, -std::sin(angle));
             positions.insert(positions.end(), {C::kRadiusM * radial.x, y, C::kRadiusM * radial.z});
             normals.insert(normals.end(), {radial.x, radial.y, radial.z});
-            uvs.insert(uvs.end(), {u, 1.0f - v});
+            uvs.insert(uvs.end(), {uvScale * u, uvScale * (1.0f - v)});
             joints.insert(joints.end(), {0, 1, 0, 0});
             weights.insert(weights.end(), {1.0f - bend, bend, 0.0f, 0.0f});
             bulge.insert(bulge.end(), {bulgeM * radial.x, 0.0f, bulgeM * radial.z});

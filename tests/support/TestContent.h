@@ -31,7 +31,8 @@ struct BendingCylinder {
 };
 
 // Writes the bending cylinder as a .gltf with its buffer embedded; false and
-// a message on failure.
-bool writeBendingCylinder(const std::string& path, std::string* error = nullptr);
+// a message on failure. uvScale < 1 packs its UVs into the corner square of
+// that side, as an atlas chart: uvScale^2 of the UV square is covered.
+bool writeBendingCylinder(const std::string& path, std::string* error = nullptr, float uvScale = 1.0f);
 
 }  // namespace dermis::test

@@ -19,9 +19,11 @@ Scene defaultScene(const std::vector<std::string>& overrides = {}) {
 }
 
 TsPlan plan(const Scene& scene, int width = 640, int height = 360, Bounds bounds = kHeadBounds,
-            float uvlessSurfaceFraction = 0.0f, float uvOverlapFraction = 0.0f) {
-    std::vector<TsCharacterInput> inputs(scene.characters.size(),
-                                         {bounds, kHeadMmPerUv, 300.0f, uvlessSurfaceFraction, uvOverlapFraction});
+            float uvlessSurfaceFraction = 0.0f, float uvOverlapFraction = 0.0f, float mmPerUv = kHeadMmPerUv,
+            float uvCoverageFraction = 1.0f) {
+    std::vector<TsCharacterInput> inputs(
+        scene.characters.size(),
+        {bounds, mmPerUv, 0.5f * mmPerUv, uvlessSurfaceFraction, uvOverlapFraction, uvCoverageFraction});
     const LightSetup lights = setupLights(scene.lights, bounds, scene.settings.shadow);
     auto result = planTextureSpace(scene, inputs, makeViewParams(scene.camera, width, height), lights);
     EXPECT_TRUE(result.ok()) << result.error().message();
@@ -79,6 +81,32 @@ TEST(TsPlan, SizeFollowsScreenCoverage) {
     EXPECT_EQ(capped.characters[0].size, 512);
     const TsPlan floored = plan(defaultScene({"ts.min_size=1024"}), 64, 36);
     EXPECT_EQ(floored.characters[0].size, 1024);
+}
+
+// An atlas whose charts cover 5% of the UV square, its median stretch (10 m
+// per UV unit) inflated by many small charts, on a head-sized surface: by
+// texel density alone it gets 2048 or more at every distance, 17 to 86 texels
+// per pixel of its screen rectangle. Sized by coverage, the texels that hold surface
+// (size^2 x coverage) stay within a factor of two (the power-of-two rounding
+// of the side) of kTexelsPerCoveredPixel per pixel of its screen rectangle,
+// from 0.4 m to 3.2 m away, so the cost follows the coverage.
+TEST(TsPlan, AtlasLayoutIsSizedByItsScreenCoverage) {
+    constexpr float kAtlasCoverage = 0.05f, kAtlasMmPerUv = 10000.0f;
+    for (float distanceM : {0.4f, 0.8f, 1.6f, 3.2f}) {
+        const std::string eye = "camera.position_m=[0," + std::to_string(0.0f) + "," + std::to_string(distanceM) + "]";
+        const Scene scene = defaultScene({eye, "camera.target_m=[0,0,0]", "ts.min_size=64", "ts.max_size=4096"});
+        const ViewParams view = makeViewParams(scene.camera, 640, 360);
+        const ScreenFootprint footprint = screenFootprint(kHeadBounds, view);
+        const float rectanglePixels = footprint.unclippedPixels;
+        const int size = plan(scene, 640, 360, kHeadBounds, 0.0f, 0.0f, kAtlasMmPerUv, kAtlasCoverage).characters[0].size;
+        const float texelsPerPixel = float(size) * float(size) * kAtlasCoverage / rectanglePixels;
+        EXPECT_GE(texelsPerPixel, 0.5f * kTexelsPerCoveredPixel) << distanceM << " m: size " << size;
+        EXPECT_LE(texelsPerPixel, 2.0f * kTexelsPerCoveredPixel) << distanceM << " m: size " << size;
+        // A layout that fills the square at the same density still gets the density's size when that is smaller.
+        const int filled = plan(scene, 640, 360, kHeadBounds, 0.0f, 0.0f, kHeadMmPerUv, 1.0f).characters[0].size;
+        EXPECT_LE(filled, tsTextureSize(kHeadMmPerUv * view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM,
+                                        64, 4096));
+    }
 }
 
 TEST(TsPlan, OffScreenCharacterIsInvisibleAndSkipsEveryStep) {

@@ -35,16 +35,24 @@ const Scene& contentScene(const std::string& name) {
 }
 
 double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix) {
+    return renderAndTimeAt(renderer, width, height, 0.0f, {prefix})[0];
+}
+
+std::vector<double> renderAndTimeAt(Renderer& renderer, int width, int height, float timeS,
+                                    const std::vector<std::string>& prefixes) {
     renderer.resetTimings();
-    const Status status = renderer.renderFrame({width, height, Aov::Final});
+    FrameRequest request{width, height, Aov::Final};
+    request.timeS = timeS;
+    const Status status = renderer.renderFrame(request);
     if (!status.ok()) {
         std::fprintf(stderr, "error: %s\n", status.error().message().c_str());
         std::exit(1);
     }
     renderer.finishTimings();
-    double ms = 0.0;
+    std::vector<double> ms(prefixes.size(), 0.0);
     for (const PassSummary& pass : renderer.timings().summary()) {
-        if (pass.executed && pass.name.rfind(prefix, 0) == 0) ms += pass.gpuMs;
+        for (size_t i = 0; i < prefixes.size(); ++i)
+            if (pass.executed && pass.name.rfind(prefixes[i], 0) == 0) ms[i] += pass.gpuMs;
     }
     return ms;
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dermis::bench {
 
@@ -21,6 +22,9 @@ const Scene& contentScene(const std::string& name);
 // start with `prefix` ("" = the whole frame). Stalls to read the timers,
 // which is fine in a benchmark.
 double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix);
+// The same at frame time timeS (animated characters), one sum per prefix.
+std::vector<double> renderAndTimeAt(Renderer& renderer, int width, int height, float timeS,
+                                    const std::vector<std::string>& prefixes);
 
 // Figures recorded by benchmarks (median GPU ms per named measurement) for
 // the comparisons printed after the run.

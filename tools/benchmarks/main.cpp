@@ -1,5 +1,6 @@
 // dermis_benchmarks: Google Benchmark runs, then the comparisons the issues
 // ask for, printed as ratios measured side by side in this one run.
+#include "AnimatedCrowdBenchmarks.h"
 #include "BenchContext.h"
 #include "CrowdBenchmarks.h"
 #include "LeanBenchmarks.h"
@@ -55,5 +56,6 @@ int main(int argc, char** argv) {
     dermis::bench::printTextureSpaceSummary();
     dermis::bench::printLeanSummary();
     dermis::bench::printCrowdSummary();
+    dermis::bench::printAnimatedCrowdSummary();
     return 0;
 }

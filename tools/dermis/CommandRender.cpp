@@ -163,7 +163,8 @@ int runRender(const std::vector<std::string>& rawArgs) {
     }
 
     RunInfo info = session->runInfo(scenePath, request.width, request.height, frameCount);
-    info.wallMsPerFrame = wallMs / *frames;
+    info.wallMsPerFrame = wallMs / frameCount;
+    info.characters = renderer.characterReports();
     if (args->has("timings")) {
         if (const Status written = renderer.timings().writeJson(args->get("timings", ""), info); !written.ok()) {
             return failure(written.error());
