@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(argc == 2 ? stdout : stderr, "usage: dermis_test_content DIR\n"
-                                                  "Writes bending_cylinder.gltf (tests/support/TestContent.h) into DIR.\n");
+                                                  "Writes bending_cylinder.gltf and multi_material.gltf\n"
+                                                  "(tests/support/TestContent.h) into DIR.\n");
         return argc == 2 ? 0 : 2;
     }
     const std::filesystem::path dir(argv[1]);
@@ -21,11 +23,16 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::string message;
-    const std::string path = (dir / "bending_cylinder.gltf").string();
-    if (!dermis::test::writeBendingCylinder(path, &message)) {
-        std::fprintf(stderr, "error: %s\n", message.c_str());
-        return 1;
+    using Writer = bool (*)(const std::string&, std::string*);
+    const std::pair<const char*, Writer> files[] = {{"bending_cylinder.gltf", dermis::test::writeBendingCylinder},
+                                                    {"multi_material.gltf", dermis::test::writeMultiMaterialStrip}};
+    for (const auto& [name, write] : files) {
+        const std::string path = (dir / name).string();
+        if (!write(path, &message)) {
+            std::fprintf(stderr, "error: %s\n", message.c_str());
+            return 1;
+        }
+        std::printf("wrote %s\n", path.c_str());
     }
-    std::printf("wrote %s\n", path.c_str());
     return 0;
 }

@@ -397,15 +397,26 @@ TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
     Result<Model> model = loadGltf(path("textured.gltf").string());
     ASSERT_TRUE(model) << model.error().message();
     EXPECT_EQ(model->mesh.triangleCount(), 4u);
-    for (const Image* map : {&model->materials[0].albedoMap, &model->materials[0].normalMap, &model->materials[0].metallicRoughnessMap}) {
+    // Each primitive keeps its material; the maps are the second one's.
+    ASSERT_EQ(model->materials.size(), 2u);
+    EXPECT_EQ(model->materials[0].name, "plain");
+    EXPECT_TRUE(model->materials[0].albedoMap.empty());
+    const ModelMaterial& skin = model->materials[1];
+    EXPECT_EQ(skin.name, "skin");
+    ASSERT_EQ(model->submeshes.size(), 2u);
+    EXPECT_EQ(model->submeshes[0].material, 0);
+    EXPECT_EQ(model->submeshes[1].material, 1);
+    EXPECT_EQ(model->submeshes[1].firstIndex, 6u);
+    EXPECT_EQ(model->submeshes[1].indexCount, 6u);
+    for (const Image* map : {&skin.albedoMap, &skin.normalMap, &skin.metallicRoughnessMap}) {
         EXPECT_EQ(map->width, 3);
         EXPECT_EQ(map->height, 2);
         ASSERT_FALSE(map->empty());
         EXPECT_NEAR(map->texels[0].y, 0.4f, 1.0f / 255.0f);
     }
-    EXPECT_EQ(model->materials[0].albedoMap.colourSpace, ColourSpace::Srgb);
-    EXPECT_EQ(model->materials[0].normalMap.colourSpace, ColourSpace::Linear);
-    EXPECT_EQ(model->materials[0].metallicRoughnessMap.colourSpace, ColourSpace::Linear);
+    EXPECT_EQ(skin.albedoMap.colourSpace, ColourSpace::Srgb);
+    EXPECT_EQ(skin.normalMap.colourSpace, ColourSpace::Linear);
+    EXPECT_EQ(skin.metallicRoughnessMap.colourSpace, ColourSpace::Linear);
 
     fs::remove(path("normal map.png"));
     expectError(path("textured.gltf"), "normal map.png");
