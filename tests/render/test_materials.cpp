@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 using namespace dermis;
 
@@ -299,4 +300,38 @@ TEST_F(Materials, SpecularAndRoughnessMapsScaleAndReplaceTheScalars) {
     // And the map is used at all: the default roughness 0.3 differs.
     const double fromDefault = specularMismatch(reference, fromMap, 2, 1.0f, pixels);
     EXPECT_GT(fromDefault, 0.05);
+}
+
+// The scan with its specular map (../shared/content/LeePerrySmith/Map-SPEC.jpg,
+// grey values in [0, 1]) as specular_map: the specular AOV may only drop, pixel
+// by pixel, and does over most of the face.
+TEST_F(Materials, HeadScanSpecularMapScalesItsSpecular) {
+    const std::string map = test::sharedContentDir() + "/LeePerrySmith/Map-SPEC.jpg";
+    if (!std::filesystem::exists(map)) GTEST_SKIP() << "../shared/content/LeePerrySmith is absent";
+    const std::vector<std::string> common = {"energy_conservation=false"};
+    load("lee_perry_smith.json", common);
+    const Image before = render(Aov::Specular, 320, 180);
+    std::vector<std::string> mapped = common;
+    mapped.push_back("characters.0.material.specular_map=\"" + map + "\"");
+    load("lee_perry_smith.json", mapped);
+    const Image after = render(Aov::Specular, 320, 180);
+    int lit = 0, dropped = 0, rose = 0;
+    double sumBefore = 0.0, sumAfter = 0.0;
+    for (int y = 0; y < 180; ++y) {
+        for (int x = 0; x < 320; ++x) {
+            const double b = before.at(x, y).g, a = after.at(x, y).g;
+            if (b < 1e-4) continue;
+            ++lit;
+            sumBefore += b;
+            sumAfter += a;
+            dropped += a < 0.9 * b ? 1 : 0;
+            rose += a > b * (1.0 + 2e-3) + 1e-4 ? 1 : 0;
+        }
+    }
+    std::printf("head scan specular map: %d lit pixels, %d dropped by more than 10%%, %d rose; "
+                "specular sum after / before %.3f\n",
+                lit, dropped, rose, sumAfter / sumBefore);
+    EXPECT_GT(lit, 2000);
+    EXPECT_EQ(rose, 0);
+    EXPECT_GT(dropped, lit / 2);
 }
