@@ -204,16 +204,24 @@ void readMaterial(JsonObject& parent, const std::string& sceneFile, const std::v
     readMaterialFields(object, sceneFile, profiles, material);
 }
 
+// The object at `key` whose members are named by the file (glTF material
+// names, profile names), or null when absent or not an object (an error).
+const json* namedObjects(JsonObject& parent, const char* key, const std::string& what) {
+    const json* value = parent.member(key);
+    if (value == nullptr || parent.context().failed()) {
+        return nullptr;
+    }
+    const bool isObject = parent.context().check(value->is_object(), parent.pointer(key),
+                                                 "must be an object of " + what + ", got " + jsonTypeForMessage(*value));
+    return isObject ? value : nullptr;
+}
+
 // Per glTF material name, a material that starts as the character's own.
 void readMaterialOverrides(JsonObject& parent, const std::string& sceneFile, const std::vector<std::string>& profiles,
                            Character& character) {
-    const json* value = parent.member("materials");
+    const json* value = namedObjects(parent, "materials", "materials by glTF material name");
     JsonContext& context = parent.context();
-    if (value == nullptr || context.failed()) {
-        return;
-    }
-    if (!context.check(value->is_object(), parent.pointer("materials"),
-                       "must be an object of materials by glTF material name, got " + jsonTypeForMessage(*value))) {
+    if (value == nullptr) {
         return;
     }
     for (const auto& [name, entry] : value->items()) {
@@ -270,13 +278,9 @@ void readProfile(JsonContext& context, const json& value, const std::string& poi
 }
 
 void readProfiles(JsonObject& root, std::vector<DiffusionProfile>& out) {
-    const json* value = root.member("profiles");
+    const json* value = namedObjects(root, "profiles", "profiles by name");
     JsonContext& context = root.context();
-    if (value == nullptr || context.failed()) {
-        return;
-    }
-    if (!context.check(value->is_object(), root.pointer("profiles"),
-                       "must be an object of profiles by name, got " + jsonTypeForMessage(*value))) {
+    if (value == nullptr) {
         return;
     }
     std::vector<std::string> builtins = profileNames();

@@ -54,14 +54,28 @@ float smoothstep(float a, float b, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
-}  // namespace
-
-bool writeBendingCylinder(const std::string& path, std::string* error) {
-    using C = BendingCylinder;
+tinygltf::Model newModel() {
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "Dermis tests (tests/support/TestContent.cpp)";
     model.buffers.resize(1);
+    return model;
+}
+
+bool writeModel(tinygltf::Model& model, const std::string& path, std::string* error) {
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
+        if (error) *error = "tinygltf could not write " + path;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool writeBendingCylinder(const std::string& path, std::string* error) {
+    using C = BendingCylinder;
+    tinygltf::Model model = newModel();
 
     std::vector<float> positions, normals, uvs, weights, bulge;
     std::vector<uint16_t> joints;
@@ -162,20 +176,12 @@ bool writeBendingCylinder(const std::string& path, std::string* error) {
     animation.channels = {rotate, morph};
     model.animations.push_back(animation);
 
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
-        if (error) *error = "tinygltf could not write " + path;
-        return false;
-    }
-    return true;
+    return writeModel(model, path, error);
 }
 
 bool writeMultiMaterialStrip(const std::string& path, std::string* error) {
     using S = MultiMaterialStrip;
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "Dermis tests (tests/support/TestContent.cpp)";
-    model.buffers.resize(1);
+    tinygltf::Model model = newModel();
     tinygltf::Mesh mesh;
     mesh.name = "strip";
     for (int p = 0; p < S::kPrimitives; ++p) {
@@ -252,13 +258,7 @@ bool writeMultiMaterialStrip(const std::string& path, std::string* error) {
     scene.nodes = {0};
     model.scenes.push_back(scene);
     model.defaultScene = 0;
-
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
-        if (error) *error = "tinygltf could not write " + path;
-        return false;
-    }
-    return true;
+    return writeModel(model, path, error);
 }
 
 }  // namespace dermis::test
