@@ -266,8 +266,10 @@ void readProfile(JsonContext& context, const json& value, const std::string& poi
     if (context.failed()) return;
     for (int c = 0; c < 3; ++c) {
         const char* channel[] = {"red", "green", "blue"};
+        char sum[32];  // 5 digits: enough to show a sum just outside the tolerance, none of the float noise
+        std::snprintf(sum, sizeof sum, "%.5g", sums[c]);
         if (!context.check(std::fabs(sums[c] - 1.0) <= kProfileWeightSumTolerance, object.pointer("gaussians"),
-                           std::string("the ") + channel[c] + " weights sum to " + formatNumberForMessage(sums[c]) +
+                           std::string("the ") + channel[c] + " weights sum to " + sum +
                                "; each channel must sum to 1 (within 1e-3)")) {
             return;
         }

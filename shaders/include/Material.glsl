@@ -4,8 +4,9 @@
 //   base colour  tint x baseColorFactor (albedoRoughness.rgb) x albedo map x COLOR_0
 //   roughness m  the roughness map's R; else glTF's metallic-roughness G x
 //                roughnessFactor = r, mapped to Beckmann m = r^2 (glTF 2.0
-//                Appendix B: alpha = r^2; Walter et al. 2007: Beckmann m and
-//                GGX alpha give lobes of about the same width); else the scalar
+//                Appendix B: GGX alpha = r^2; Walter et al. 2007 write Beckmann
+//                and GGX with one width alpha, Beckmann's being m, and their
+//                lobes nearly coincide at skin's small alpha); else the scalar
 //   rho_s        material.x x the specular map's R
 // The roughness map and the metallic-roughness map share a unit: a draw binds
 // the one its source names.

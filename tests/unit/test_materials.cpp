@@ -120,7 +120,7 @@ TEST_F(MaterialsTest, BadMaterialsAndProfilesAreRefusedWithTheirKey) {
         {"", R"("profiles": {"p": {"gaussians": [{"variance_mm2": 1, "weights": [1, -0.5, 1]}]}}, )",
          "/profiles/p/gaussians/0/weights/1", "must be in [0, 1]"},
         {"", R"("profiles": {"p": {"gaussians": [{"variance_mm2": 1, "weights": [1, 0.99, 1]}]}}, )",
-         "/profiles/p/gaussians", "the green weights sum to 0.99"},
+         "/profiles/p/gaussians", "the green weights sum to 0.99;"},
         {"", R"("profiles": {"p": {"gaussians": [{"variance_mm2": 1}]}}, )", "/profiles/p/gaussians/0",
          "needs \"variance_mm2\" and \"weights\""},
         {"", R"("profiles": {"p": {"gaussians": [)" + std::string(9, ' ') + gaussian +
