@@ -17,6 +17,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/packing.hpp>
+#include <nlohmann/json.hpp>
 
 using namespace dermis;
 
@@ -334,4 +338,46 @@ TEST_F(Materials, HeadScanSpecularMapScalesItsSpecular) {
     EXPECT_GT(lit, 2000);
     EXPECT_EQ(rose, 0);
     EXPECT_GT(dropped, lit / 2);
+}
+
+// glTF's metallic-roughness texture: r = G x roughnessFactor, Beckmann m = r^2
+// (include/Material.glsl). The strip's "Wax" gets a constant texture and a
+// factor; it must render as the scalar roughness r^2.
+TEST_F(Materials, GltfRoughnessTextureMapsToBeckmannMAsRSquared) {
+    test::TempDir dir;
+    const float g = writeGreyMap(dir, "mr.png", 0.8f);
+    const float factor = 0.75f;
+    const std::string scene = writeStripScene(dir, "{}");
+    {
+        std::ifstream in(dir.file("multi_material.gltf"));
+        nlohmann::json gltf = nlohmann::json::parse(in);
+        gltf["images"] = {{{"uri", "mr.png"}}};
+        gltf["textures"] = {{{"source", 0}}};
+        gltf["materials"][2]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 0}};
+        gltf["materials"][2]["pbrMetallicRoughness"]["roughnessFactor"] = factor;
+        test::writeTextFile(dir.file("multi_material.gltf"), gltf.dump());
+    }
+    const std::vector<std::string> shiny = {"characters.0.material.rho_s=0.3"};
+    load(scene, shiny);
+    const Image fromTexture = render(Aov::Specular, kWidth, kHeight);
+    // Linear maps are uploaded as RGBA16F (render/GpuScene.cpp uploadImage): G is g in half precision.
+    const float r = glm::unpackHalf1x16(glm::packHalf1x16(g)) * factor;
+    std::vector<std::string> scalar = shiny;
+    char m[32];
+    std::snprintf(m, sizeof m, "%.9g", r * r);
+    scalar.push_back(std::string("characters.0.material.roughness=") + m);
+    test::writeMultiMaterialStrip(dir.file("multi_material.gltf"));
+    load(scene, scalar);
+    const Image fromScalar = render(Aov::Specular, kWidth, kHeight);
+    int pixels = 0;
+    const double mismatch = specularMismatch(fromScalar, fromTexture, 2, 1.0f, pixels);
+    std::printf("metallic-roughness G %.4f x factor %.2f = r %.4f: against the scalar m = r^2 = %.4f, largest relative "
+                "difference %.2e (%d px)\n",
+                g, factor, r, r * r, mismatch, pixels);
+    EXPECT_GT(pixels, 10000);
+    EXPECT_LT(mismatch, 2e-3);
+    // m = r (no square) would be far off.
+    scalar.back() = "characters.0.material.roughness=" + std::to_string(r);
+    load(scene, scalar);
+    EXPECT_GT(specularMismatch(render(Aov::Specular, kWidth, kHeight), fromTexture, 2, 1.0f, pixels), 0.05);
 }
