@@ -1,7 +1,7 @@
 // G-buffer layout (docs/screen-space.md):
-//   depth/stencil  D24S8; stencil = SSS profile slot (0 = opaque), for the blurs
+//   depth/stencil  D24S8; stencil = SSS profile slot of the draw (0 = opaque), for the blurs
 //   target 0       RGBA16F: linear albedo, a = object id / 255
-//   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s
+//   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s (include/Material.glsl)
 //   target 2       R32UI: profile slot and view depth packed, the key that
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
 // With GBUFFER_LEAN defined (variants lcb and lbb, render/SssVariant.h):
@@ -12,6 +12,7 @@
 // Material maps are sampled with the mip bias uFrame.features.w (0 but in tests).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
+#include "Material.glsl"
 #ifdef GBUFFER_LEAN
 #include "Lean.glsl"
 #endif
@@ -26,6 +27,7 @@ layout(binding = 3) uniform sampler2D uLean2;  // (M.xy, base variance)
 in vec3 vViewNormal;
 in vec4 vViewTangent;
 in vec2 vUv;
+in vec3 vColour;
 
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
@@ -47,10 +49,9 @@ mat3 tangentFrame(vec3 N) {
 
 void main() {
     float mipBias = uFrame.features.w;
-    vec3 albedo = uObject.albedoRoughness.rgb;
-    if (uObject.material.z > 0.5) albedo *= texture(uAlbedoMap, vUv, mipBias).rgb;
+    vec3 albedo = materialAlbedo(uAlbedoMap, vUv, vColour, mipBias);
     bool hasMaps = uObject.material.w > 0.5;
-    float roughness = uObject.albedoRoughness.w;
+    float roughness = materialRoughness(vUv, mipBias);
 
     vec3 N = safeNormalize(vViewNormal, vec3(0.0, 0.0, 1.0));
     if (!gl_FrontFacing) N = -N;
@@ -81,9 +82,8 @@ void main() {
     }
 #endif
 
-    oAlbedo = debugPlant(vec4(clamp(albedo, 0.0, 1.0), uObject.material.y / 255.0));
-    oNormalMaterial = vec4(encodeNormal(N), roughness, uObject.material.x);
-    int objectId = int(uObject.material.y + 0.5);
-    int slot = int(uCharacters.characters[objectId].params.x + 0.5);
+    oAlbedo = debugPlant(vec4(albedo, uObject.material.y / 255.0));
+    oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(vUv, mipBias));
+    int slot = int(uObject.surface.x + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
 }

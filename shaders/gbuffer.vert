@@ -5,11 +5,13 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aTangent;
 layout(location = 3) in vec2 aUv;
+layout(location = 7) in vec4 aColour;  // COLOR_0, white without one (render/GpuScene.h kColourLocation)
 
 out vec3 vViewNormal;
 out vec4 vViewTangent;  // xyz tangent, w bitangent sign
 out vec2 vUv;
 out vec3 vViewPositionM;
+out vec3 vColour;
 
 void main() {
     vec4 worldPosition = uObject.worldFromObject * vec4(aPosition, 1.0);
@@ -18,5 +20,6 @@ void main() {
     vViewTangent = vec4(viewFromWorld3 * (mat3(uObject.worldFromObject) * aTangent.xyz), aTangent.w);
     vUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
     vViewPositionM = (uFrame.viewFromWorld * worldPosition).xyz;
+    vColour = aColour.rgb;
     gl_Position = uFrame.clipFromWorld * worldPosition;
 }

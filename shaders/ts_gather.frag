@@ -1,6 +1,6 @@
 // Texture-space step 5, the gather (Chappuis 2011 §2.8 listing 2.11; manual in
-// include/TextureSpace.glsl). For this character's pixels (depth equal to the
-// G-buffer's and the same object id) it writes, into the SSS accumulation the
+// include/TextureSpace.glsl). For this surface's pixels (depth equal to the
+// G-buffer's, the same object id and the same profile slot) it writes, into the SSS accumulation the
 // composite reads,
 //   sum_i w_i T_i(uv) / sum_i w_i  +  the TSM terms,
 // where T_i is blurred texture i (the lighting pass's irradiance at this pixel
@@ -53,7 +53,10 @@ void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
     if (objectId != int(uObject.material.y + 0.5)) discard;
     float viewDepthM = -(uFrame.viewFromWorld * vec4(vWorldPositionM, 1.0)).z;
-    float keptDepthM = viewDepthFromKey(texelFetch(uDepthKey, ivec2(gl_FragCoord.xy), 0).r);
+    uint key = texelFetch(uDepthKey, ivec2(gl_FragCoord.xy), 0).r;
+    // Another surface of this character (another profile, or opaque) kept the pixel.
+    if (slotFromKey(key) != int(uObject.surface.x + 0.5)) discard;
+    float keptDepthM = viewDepthFromKey(key);
     if (abs(viewDepthM - keptDepthM) > max(kSameSurfaceMm * 1e-3, kSameSurfacePerDepth * keptDepthM)) discard;
     // A triangle seen from behind (a sliver at a silhouette, a fold of the
     // mesh): its texels were lit with the normal facing away, while the

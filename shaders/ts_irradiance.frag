@@ -12,6 +12,7 @@
 #include "Lights.glsl"
 #include "EnergyConservation.glsl"
 #include "TextureSpace.glsl"
+#include "Material.glsl"
 
 layout(binding = 0) uniform sampler2D uAlbedoMap;
 layout(binding = 1) uniform sampler2D uNormalMap;
@@ -25,6 +26,7 @@ in vec3 vWorldPositionM;
 in vec3 vWorldNormal;
 in vec4 vWorldTangent;
 in vec2 vMapUv;
+in vec3 vColour;
 
 layout(location = 0) out vec4 oIrradiance;
 
@@ -54,11 +56,9 @@ void main() {
         vec3 tangentNormal = texture(uNormalMap, vMapUv).xyz * 2.0 - 1.0;
         N = safeNormalize(mat3(T, B, N) * tangentNormal, N);
     }
-    vec3 albedo = uObject.albedoRoughness.rgb;
-    if (uObject.material.z > 0.5) albedo *= texture(uAlbedoMap, vMapUv).rgb;
-    albedo = clamp(albedo, 0.0, 1.0);
-    float roughness = uObject.albedoRoughness.w;
-    float rhoS = uObject.material.x;
+    vec3 albedo = materialAlbedo(uAlbedoMap, vMapUv, vColour, 0.0);
+    float roughness = materialRoughness(vMapUv, 0.0);
+    float rhoS = materialRhoS(vMapUv, 0.0);
     bool conserveEnergy = uFrame.features.x > 0.5;
 
     vec3 irradiance = uFrame.ambient.rgb * ambientOcclusion(vWorldPositionM);

@@ -10,6 +10,7 @@ layout(location = 2) in vec4 aTangent;
 layout(location = 3) in vec2 aUv;
 layout(location = 4) in vec3 aDPdu;  // object units per UV unit (mesh/UvLayout.h)
 layout(location = 5) in vec3 aDPdv;
+layout(location = 7) in vec4 aColour;  // COLOR_0 (render/GpuScene.h kColourLocation)
 
 out vec3 vWorldPositionM;
 out vec3 vWorldNormal;
@@ -17,6 +18,7 @@ out vec4 vWorldTangent;  // xyz tangent, w bitangent sign
 out vec2 vMapUv;         // where the material's maps are sampled (flip_v applied)
 out vec3 vDPduM;         // metres per UV unit
 out vec3 vDPdvM;
+out vec3 vColour;
 
 void main() {
     vWorldPositionM = (uObject.worldFromObject * vec4(aPosition, 1.0)).xyz;
@@ -25,6 +27,7 @@ void main() {
     vMapUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
     vDPduM = mat3(uObject.worldFromObject) * aDPdu;
     vDPdvM = mat3(uObject.worldFromObject) * aDPdv;
+    vColour = aColour.rgb;
     // Texel (x, y) of an N x N target holds uv = ((x, y) + 0.5) / N, so that
     // texture(map, uv) reads back what was written here.
     gl_Position = vec4(aUv * 2.0 - 1.0, 0.0, 1.0);

@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 
 namespace dermis {
@@ -244,7 +245,7 @@ public:
         if (Status status = addScene(); !status) return status.error();
         if (mModel.mesh.triangleCount() == 0) return fail("no triangles in the scene");
         if (mRig) mModel.rig = mRig->finish(mModel.mesh);
-        if (Status status = loadMaps(); !status) return status.error();
+        if (Status status = loadMaterials(); !status) return status.error();
         if (mModel.mesh.name.empty()) mModel.mesh.name = fs::path(mPath).stem().string();
         return std::move(mModel);
     }
@@ -403,6 +404,9 @@ private:
             *optional.out = std::move(values.value());
         }
 
+        Result<std::vector<glm::vec4>> colours = readColours(attribute("COLOR_0"), vertexCount, where);
+        if (!colours) return colours.error();
+
         std::vector<uint32_t> indices;
         if (primitive.indices >= 0) {
             Result<std::vector<uint32_t>> read = mAccessors.readIndices(primitive.indices, vertexCount, where);
@@ -425,14 +429,12 @@ private:
                 std::swap(piece.mesh.indices[i + 1], piece.mesh.indices[i + 2]);
         repairFrames(piece);
 
-        if (primitive.material >= 0) {
-            if (static_cast<size_t>(primitive.material) >= mGltf.materials.size())
-                return fail(where + ": material " + std::to_string(primitive.material) + " is out of range");
-            if (std::find(mUsedMaterials.begin(), mUsedMaterials.end(), primitive.material) == mUsedMaterials.end())
-                mUsedMaterials.push_back(primitive.material);
-        }
+        if (primitive.material >= 0 && static_cast<size_t>(primitive.material) >= mGltf.materials.size())
+            return fail(where + ": material " + std::to_string(primitive.material) + " is out of range");
+        addSubmesh(primitive.material, piece.mesh.indices.size());
         const size_t firstVertex = mModel.mesh.vertices.size();
         append(piece.mesh);
+        addColours(*colours, firstVertex);
         if (mRig) return mRig->addPrimitive(node, primitive, firstVertex, vertexCount, where);
         return success();
     }
@@ -510,6 +512,50 @@ private:
         }
     }
 
+    // COLOR_0 (glTF 2.0 §3.7.2.1): VEC3 or VEC4, float or normalised
+    // integers; a primitive without it is white.
+    Result<std::vector<glm::vec4>> readColours(int accessor, size_t vertexCount, const std::string& where) const {
+        if (accessor < 0) return std::vector<glm::vec4>();
+        if (static_cast<size_t>(accessor) >= mGltf.accessors.size())
+            return fail(where + ": COLOR_0 accessor " + std::to_string(accessor) + " is out of range");
+        const tinygltf::Accessor& info = mGltf.accessors[static_cast<size_t>(accessor)];
+        if (info.type != TINYGLTF_TYPE_VEC3 && info.type != TINYGLTF_TYPE_VEC4)
+            return fail(where + ": COLOR_0 must be VEC3 or VEC4, accessor " + std::to_string(accessor) + " is not");
+        if (info.count != vertexCount)
+            return fail(where + ": COLOR_0 has " + std::to_string(info.count) + " elements, POSITION has " +
+                        std::to_string(vertexCount));
+        Result<std::vector<float>> values = mAccessors.readFloats(accessor, info.type, where + " COLOR_0");
+        if (!values) return values.error();
+        const size_t components = info.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+        std::vector<glm::vec4> colours(vertexCount, glm::vec4(1.0f));
+        for (size_t v = 0; v < vertexCount; ++v)
+            for (size_t c = 0; c < components; ++c) colours[v][static_cast<int>(c)] = (*values)[v * components + c];
+        return colours;
+    }
+
+    // Colours stay empty (all white) until a primitive brings some.
+    void addColours(const std::vector<glm::vec4>& colours, size_t firstVertex) {
+        std::vector<glm::vec4>& all = mModel.colours;
+        const size_t count = mModel.mesh.vertices.size();
+        if (colours.empty() && all.empty()) return;
+        all.resize(count, glm::vec4(1.0f));
+        std::copy(colours.begin(), colours.end(), all.begin() + static_cast<std::ptrdiff_t>(firstVertex));
+    }
+
+    // The primitive's triangles join the last submesh when it has the same
+    // material; glTF material -1 is the default material.
+    void addSubmesh(int gltfMaterial, size_t indexCount) {
+        auto used = std::find(mUsedMaterials.begin(), mUsedMaterials.end(), gltfMaterial);
+        if (used == mUsedMaterials.end()) used = mUsedMaterials.insert(mUsedMaterials.end(), gltfMaterial);
+        const int material = static_cast<int>(used - mUsedMaterials.begin());
+        std::vector<Submesh>& submeshes = mModel.submeshes;
+        if (!submeshes.empty() && submeshes.back().material == material) {
+            submeshes.back().indexCount += static_cast<uint32_t>(indexCount);
+            return;
+        }
+        submeshes.push_back({static_cast<uint32_t>(mModel.mesh.indices.size()), static_cast<uint32_t>(indexCount), material});
+    }
+
     void append(const MeshData& piece) {
         MeshData& merged = mModel.mesh;
         const uint32_t offset = static_cast<uint32_t>(merged.vertices.size());
@@ -518,30 +564,27 @@ private:
         for (uint32_t index : piece.indices) merged.indices.push_back(index + offset);
     }
 
-    // The maps come from the first material in use with a base colour
-    // texture, else the first in use with any texture.
-    Status loadMaps() {
-        const tinygltf::Material* chosen = nullptr;
-        int chosenIndex = -1;
-        for (int pass = 0; pass < 2 && !chosen; ++pass) {
-            for (int index : mUsedMaterials) {
-                const tinygltf::Material& material = mGltf.materials[static_cast<size_t>(index)];
-                bool hasBase = material.pbrMetallicRoughness.baseColorTexture.index >= 0;
-                bool hasAny = hasBase || material.normalTexture.index >= 0 ||
-                              material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0;
-                if (pass == 0 ? hasBase : hasAny) {
-                    chosen = &material;
-                    chosenIndex = index;
-                    break;
-                }
+    // Model::materials[i] is the glTF material mUsedMaterials[i] (-1: glTF's default material).
+    Status loadMaterials() {
+        mModel.materials.clear();
+        for (int index : mUsedMaterials) {
+            ModelMaterial material;
+            if (index >= 0) {
+                if (Status status = loadMaterial(index, material); !status) return status;
             }
+            mModel.materials.push_back(std::move(material));
         }
-        if (!chosen) return success();
-        if (mUsedMaterials.size() > 1)
-            log::warn(mPath + ": " + std::to_string(mUsedMaterials.size()) +
-                      " materials in use; maps come from material " + std::to_string(chosenIndex) +
-                      quoted(chosen->name));
+        if (mModel.materials.empty()) mModel.materials.emplace_back();
+        return success();
+    }
 
+    Status loadMaterial(int index, ModelMaterial& out) {
+        const tinygltf::Material& material = mGltf.materials[static_cast<size_t>(index)];
+        const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+        out.name = material.name;
+        for (size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c)
+            out.baseColourFactor[static_cast<int>(c)] = static_cast<float>(pbr.baseColorFactor[c]);
+        out.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
         struct Map {
             const char* role;
             int texture;
@@ -549,16 +592,15 @@ private:
             ColourSpace colourSpace;
             Image* out;
         };
-        const tinygltf::PbrMetallicRoughness& pbr = chosen->pbrMetallicRoughness;
         for (const Map& map :
              {Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb,
-                  &mModel.albedoMap},
-              Map{"normalTexture", chosen->normalTexture.index, chosen->normalTexture.texCoord, ColourSpace::Linear,
-                  &mModel.normalMap},
+                  &out.albedoMap},
+              Map{"normalTexture", material.normalTexture.index, material.normalTexture.texCoord, ColourSpace::Linear,
+                  &out.normalMap},
               Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                  ColourSpace::Linear, &mModel.metallicRoughnessMap}}) {
+                  ColourSpace::Linear, &out.metallicRoughnessMap}}) {
             if (map.texture < 0) continue;
-            const std::string where = "material " + std::to_string(chosenIndex) + " " + map.role;
+            const std::string where = "material " + std::to_string(index) + quoted(material.name) + " " + map.role;
             if (map.texCoord != 0)
                 log::warn(mPath + ": " + where + " uses TEXCOORD_" + std::to_string(map.texCoord) +
                           "; only TEXCOORD_0 is loaded");
@@ -567,9 +609,13 @@ private:
             int source = mGltf.textures[static_cast<size_t>(map.texture)].source;
             if (source < 0 || static_cast<size_t>(source) >= mGltf.images.size())
                 return fail(where + ": texture " + std::to_string(map.texture) + " has no image this loader can read");
-            Result<Image> image = decodeImage(source, map.colourSpace);
-            if (!image) return image.error();
-            *map.out = std::move(image.value());
+            auto decoded = mDecoded.find({source, map.colourSpace});
+            if (decoded == mDecoded.end()) {
+                Result<Image> image = decodeImage(source, map.colourSpace);
+                if (!image) return image.error();
+                decoded = mDecoded.emplace(std::make_pair(source, map.colourSpace), std::move(image.value())).first;
+            }
+            *map.out = decoded->second;
         }
         return success();
     }
@@ -607,7 +653,8 @@ private:
     fs::path mBaseDir;
     GltfAccessors mAccessors;
     Model mModel;
-    std::vector<int> mUsedMaterials;
+    std::vector<int> mUsedMaterials;  // glTF material indices in first-use order, -1 the default material
+    std::map<std::pair<int, ColourSpace>, Image> mDecoded;  // images shared by several materials decode once
     std::optional<GltfRigBuilder> mRig;  // when the file moves vertices
 };
 

@@ -11,4 +11,8 @@ namespace dermis {
 
 Result<Model> loadCharacterModel(const Character& character);
 
+// Every name in the character's `materials` is one of the model's materials;
+// the error names the scene key and lists the file's material names.
+Status checkMaterialNames(const Scene& scene, size_t characterIndex, const Model& model);
+
 }  // namespace dermis

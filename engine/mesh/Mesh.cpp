@@ -1,4 +1,5 @@
 #include "mesh/Mesh.h"
+#include "mesh/Model.h"
 
 #include <limits>
 
@@ -12,6 +13,11 @@ Bounds MeshData::bounds() const {
         b.max = glm::max(b.max, v.position);
     }
     return b;
+}
+
+std::vector<Submesh> Model::drawRanges() const {
+    if (!submeshes.empty()) return submeshes;
+    return {Submesh{0, static_cast<uint32_t>(mesh.indices.size()), 0}};
 }
 
 }  // namespace dermis

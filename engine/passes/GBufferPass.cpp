@@ -54,14 +54,17 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             for (size_t index = 0; index < characters.size(); ++index) {
                 if (!frame.plan.characters[index].visible) continue;  // off screen (CharacterPlacement::culledBecause)
                 const GpuCharacter& character = characters[index];
-                frame.gl->uploadObject(frame.objectBlock(index));
-                glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOfCharacter[index], 0xFF);
-                glBindTextureUnit(0, character.albedoMap.get());
-                glBindTextureUnit(1, character.normalMap.get());
-                glBindTextureUnit(2, character.leanMap1.get());
-                glBindTextureUnit(3, character.leanMap2.get());
                 glBindVertexArray(character.mesh.vertexArray.get());
-                glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+                for (size_t s = 0; s < character.submeshes.size(); ++s) {
+                    const GpuSubmesh& submesh = character.submeshes[s];
+                    const GpuMaterial& material = character.materials[submesh.material];
+                    frame.gl->uploadObject(frame.objectBlock(index, s));
+                    glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOf(index, s), 0xFF);
+                    bindMaterialMaps(material);
+                    glBindTextureUnit(2, material.leanMap1.get());
+                    glBindTextureUnit(3, material.leanMap2.get());
+                    submesh.draw();
+                }
             }
             glDisable(GL_STENCIL_TEST);
             glDisable(GL_DEPTH_TEST);

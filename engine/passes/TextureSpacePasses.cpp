@@ -86,7 +86,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 glEnable(GL_POLYGON_OFFSET_FILL);
                 glPolygonOffset(-1.0f, -2.0f);
                 glDisable(GL_CULL_FACE);
-                drawTsMesh(frame, plan);
+                drawTsMesh(frame, plan, TsDraw::Surface);
                 glDisable(GL_POLYGON_OFFSET_FILL);
                 glDepthMask(GL_TRUE);
                 glDepthFunc(GL_LESS);

@@ -16,8 +16,13 @@ namespace dermis {
 gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsCharacterPlan& plan);
 // Uploads the character's ObjectBlock and `block`.
 void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, const gpu::TextureSpaceBlock& block);
+enum class TsDraw {
+    Surface,          // the surface's submeshes, each with its ObjectBlock
+    SurfaceWithMaps,  // and its material's maps bound (bindMaterialMaps)
+    WholeCharacter,   // every triangle, one draw, with the ObjectBlock already uploaded
+};
 // Draws the character's TsMesh.
-void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan);
+void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan, TsDraw what);
 std::string tsPassName(const TsCharacterPlan& plan, const std::string& step);
 
 graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,

@@ -80,9 +80,20 @@ void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, cons
     frame.gl->uploadPassBlock(&block, sizeof block);
 }
 
-void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan) {
+void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan, TsDraw what) {
     const auto index = static_cast<size_t>(plan.character);
-    frame.gl->tsMeshes->get(index).draw();
+    const TsMesh& mesh = frame.gl->tsMeshes->get(index);
+    if (what == TsDraw::WholeCharacter) {
+        mesh.draw();
+        return;
+    }
+    const GpuCharacter& character = frame.gl->gpuScene->characters()[index];
+    glBindVertexArray(mesh.vertexArray.get());
+    for (size_t s : plan.submeshes) {
+        frame.gl->uploadObject(frame.objectBlock(index, s));
+        if (what == TsDraw::SurfaceWithMaps) bindMaterialMaps(character.materials[character.submeshes[s].material]);
+        character.submeshes[s].draw();
+    }
 }
 
 std::string tsPassName(const TsCharacterPlan& plan, const std::string& step) { return "ts " + plan.label + " " + step; }
@@ -120,7 +131,7 @@ graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& f
                 glDisable(GL_CULL_FACE);  // thin ears need both faces
                 glUseProgram(frame.gl->programs->tsTsm.get());
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
-                drawTsMesh(frame, plan);
+                drawTsMesh(frame, plan, TsDraw::WholeCharacter);  // light crosses every submesh
                 glDisable(GL_DEPTH_TEST);
             })
         .tsm;
@@ -139,7 +150,7 @@ graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, const FrameCont
                 beginUvRaster(frame, resources.texture(d.stretch), plan.size);
                 glUseProgram(frame.gl->programs->tsStretch.get());
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
-                drawTsMesh(frame, plan);
+                drawTsMesh(frame, plan, TsDraw::Surface);
             })
         .stretch;
 }
@@ -162,15 +173,12 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameCon
             [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
                 glUseProgram(frame.gl->programs->tsIrradiance.get());
-                const GpuCharacter& character = frame.gl->gpuScene->characters()[static_cast<size_t>(plan.character)];
-                glBindTextureUnit(0, character.albedoMap.get());
-                glBindTextureUnit(1, character.normalMap.get());
                 glBindTextureUnit(2, resources.texture(d.tsm));
                 glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
                 bindShadowMaps(frame, resources, d.shadowMaps);
                 glBindTextureUnit(8, resources.texture(d.depthKey));
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
-                drawTsMesh(frame, plan);
+                drawTsMesh(frame, plan, TsDraw::SurfaceWithMaps);
             })
         .out;
 }

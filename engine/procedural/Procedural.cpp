@@ -16,8 +16,8 @@ constexpr int kHeadNormalSize = 2048;
 Model makeHeadModel() {
     HeadMesh head = makeHeadMesh();
     Model model;
-    model.albedoMap = makeHeadAlbedoMap(head, kHeadAlbedoSize);
-    model.normalMap = makeHeadNormalMap(head, kHeadNormalSize);
+    model.materials[0].albedoMap = makeHeadAlbedoMap(head, kHeadAlbedoSize);
+    model.materials[0].normalMap = makeHeadNormalMap(head, kHeadNormalSize);
     model.mesh = std::move(head.mesh);
     return model;
 }

@@ -40,8 +40,8 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
         surface.mRawUvs.push_back(v.uv);
     }
     surface.mIndices = mesh.indices;
-    surface.mAlbedoMap = MipPyramid(decodeToLinear(model.albedoMap));
-    surface.mNormalMap = MipPyramid(std::move(model.normalMap));
+    surface.mAlbedoMap = MipPyramid(decodeToLinear(model.materials[0].albedoMap));
+    surface.mNormalMap = MipPyramid(std::move(model.materials[0].normalMap));
     surface.mAlbedoTint = character.material.albedo;
     surface.mRoughness = character.material.roughness;
     surface.mRhoS = character.material.rhoS;

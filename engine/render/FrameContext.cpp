@@ -36,17 +36,39 @@ void FrameServices::uploadPassBlock(const void* data, size_t size) const {
 }
 
 gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
-    const GpuCharacter& character = gl->gpuScene->characters()[characterIndex];
-    const Material& material = plan.scene->characters[characterIndex].material;
     const glm::mat4& worldFromObject = plan.characters[characterIndex].worldFromObject;
     gpu::ObjectBlock block{};
     block.worldFromObject = worldFromObject;
     block.normalWorldFromObject = glm::inverseTranspose(worldFromObject);
-    block.albedoRoughness = glm::vec4(material.albedo, material.roughness);
-    block.material = glm::vec4(material.rhoS, float(characterIndex + 1), character.albedoMap.isValid() ? 1.0f : 0.0f,
-                               character.normalMap.isValid() ? 1.0f : 0.0f);
-    block.mapping = glm::vec4(material.flipV ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    block.material.y = float(characterIndex + 1);
     return block;
+}
+
+gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submeshIndex) const {
+    const GpuCharacter& character = gl->gpuScene->characters()[characterIndex];
+    const GpuSubmesh& submesh = character.submeshes[submeshIndex];
+    const GpuMaterial& maps = character.materials[submesh.material];
+    const Material& material = characterMaterial(plan.scene->characters[characterIndex], maps.name);
+    gpu::ObjectBlock block = objectBlock(characterIndex);
+    block.albedoRoughness = glm::vec4(material.albedo * glm::vec3(maps.baseColourFactor), material.roughness);
+    block.material = glm::vec4(material.rhoS, float(characterIndex + 1), maps.albedoMap.isValid() ? 1.0f : 0.0f,
+                               maps.normalMap.isValid() ? 1.0f : 0.0f);
+    block.mapping = glm::vec4(material.flipV ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    const int roughnessSource = maps.roughnessMap.isValid()           ? DERMIS_ROUGHNESS_MAP
+                                : maps.metallicRoughnessMap.isValid() ? DERMIS_ROUGHNESS_GLTF
+                                                                      : DERMIS_ROUGHNESS_SCALAR;
+    block.surface = glm::vec4(float(plan.sss.slotOf(characterIndex, submeshIndex)), float(roughnessSource),
+                              maps.roughnessFactor, maps.specularMap.isValid() ? 1.0f : 0.0f);
+    return block;
+}
+
+void bindMaterialMaps(const GpuMaterial& material) {
+    glBindTextureUnit(0, material.albedoMap.get());
+    glBindTextureUnit(1, material.normalMap.get());
+    const GLuint roughness =
+        material.roughnessMap.isValid() ? material.roughnessMap.get() : material.metallicRoughnessMap.get();
+    glBindTextureUnit(DERMIS_UNIT_ROUGHNESS, roughness);
+    glBindTextureUnit(DERMIS_UNIT_SPECULAR, material.specularMap.get());
 }
 
 }  // namespace dermis

@@ -51,8 +51,15 @@ struct FrameContext {
     const FramePlan& plan;
     const FrameServices* gl = nullptr;  // null where the graph is only compiled, never executed
 
-    // The character's ObjectBlock (execute steps only).
+    // The character's ObjectBlock without a material: transforms and object id.
     gpu::ObjectBlock objectBlock(size_t characterIndex) const;
+    // The ObjectBlock of one submesh: its material and profile slot too
+    // (execute steps only).
+    gpu::ObjectBlock objectBlock(size_t characterIndex, size_t submeshIndex) const;
 };
+
+// Binds a material's maps at units 0 (albedo), 1 (normal), DERMIS_UNIT_ROUGHNESS
+// and DERMIS_UNIT_SPECULAR (include/Material.glsl).
+void bindMaterialMaps(const GpuMaterial& material);
 
 }  // namespace dermis

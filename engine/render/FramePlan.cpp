@@ -62,8 +62,10 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
         if (light.type == LightType::Point) continue;
         bool behind = false;
         for (size_t c = 0; c < plan.characters.size() && !behind; ++c) {
-            const int slot = plan.sss.slotOfCharacter[c];
-            behind = slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible && plan.characters[c].visible &&
+            bool visibleSss = false;
+            for (int slot : plan.sss.slotsOfCharacter[c])
+                visibleSss = visibleSss || (slot > 0 && plan.sss.slots[static_cast<size_t>(slot - 1)].visible);
+            behind = visibleSss && plan.characters[c].visible &&
                      isBackLight(light, plan.characters[c].worldBounds, scene.camera.positionM);
         }
         plan.lights.block.lights[index].shadowDepth.w = behind ? 1.0f : 0.0f;
@@ -135,7 +137,8 @@ std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeomet
     for (size_t c = 0; c < plan.characters.size(); ++c) {
         TsCharacterInput input;
         input.worldBounds = plan.characters[c].worldBounds;
-        if (scene.characters[c].material.profile != kOpaqueProfile) {
+        input.submeshMaterials = geometry.submeshMaterials(c);
+        if (plan.sss.hasSss(c)) {
             const UvLayout& layout = geometry.uvLayout(c);
             const float mmPerUnit = glm::length(glm::vec3(plan.characters[c].worldFromObject[0])) * 1000.0f;
             input.mmPerUv = layout.medianStretch * mmPerUnit;
@@ -185,7 +188,9 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
 
     const size_t count = std::min(scene.characters.size(), geometry.size());
     std::vector<Bounds> bounds;
+    std::vector<std::vector<std::string>> submeshMaterials;
     for (size_t c = 0; c < count; ++c) {
+        submeshMaterials.push_back(geometry.submeshMaterials(c));
         const Character& character = scene.characters[c];
         CharacterPlacement placement;
         placement.worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
@@ -200,7 +205,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     plan.worldBounds = unionBounds(plan.characters, false);
     markVisibleCharacters(request, plan);
 
-    auto sss = planSss(scene, bounds, plan.view);
+    auto sss = planSss(scene, bounds, plan.view, submeshMaterials);
     if (!sss.ok()) return sss.error();
     plan.sss = std::move(*sss);
     std::vector<ShadowCasters> casters = fitShadows(scene, plan);

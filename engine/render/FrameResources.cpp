@@ -115,9 +115,8 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
         const Character& character = scene.characters[c];
         const float radiusM = character.ssao.radiusM > 0.0f ? character.ssao.radiusM : ssao.radiusM;
         const int samples = character.ssao.samples > 0 ? character.ssao.samples : ssao.samples;
-        const bool lean = c < mGpuScene.characters().size() && mGpuScene.characters()[c].leanMap1.isValid();
-        characters.characters[c + 1].params =
-            glm::vec4(float(plan.sss.slotOfCharacter[c]), radiusM, float(samples), lean ? 1.0f : 0.0f);
+        const bool lean = c < mGpuScene.characters().size() && mGpuScene.characters()[c].hasLeanMaps();
+        characters.characters[c + 1].params = glm::vec4(0.0f, radiusM, float(samples), lean ? 1.0f : 0.0f);
     }
     glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
 

@@ -11,8 +11,13 @@
 namespace dermis {
 namespace {
 
-GpuMesh uploadMesh(const MeshData& mesh) {
+GpuMesh uploadMesh(const MeshData& mesh, const std::vector<glm::vec4>& colours) {
     GpuMesh gpu;
+    const std::vector<glm::vec4> white(mesh.vertices.size(), glm::vec4(1.0f));
+    const std::vector<glm::vec4>& perVertex = colours.size() == mesh.vertices.size() ? colours : white;
+    gpu.colourBuffer = gl::createBuffer();
+    glNamedBufferStorage(gpu.colourBuffer.get(), static_cast<GLsizeiptr>(perVertex.size() * sizeof(glm::vec4)),
+                         perVertex.data(), 0);
     gpu.vertexBuffer = gl::createBuffer();
     glNamedBufferStorage(gpu.vertexBuffer.get(), static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
                          mesh.vertices.data(), 0);
@@ -22,6 +27,10 @@ GpuMesh uploadMesh(const MeshData& mesh) {
     gpu.vertexArray = gl::createVertexArray();
     const GLuint vao = gpu.vertexArray.get();
     glVertexArrayVertexBuffer(vao, 0, gpu.vertexBuffer.get(), 0, sizeof(Vertex));
+    glVertexArrayVertexBuffer(vao, 1, gpu.colourBuffer.get(), 0, sizeof(glm::vec4));
+    glEnableVertexArrayAttrib(vao, kColourLocation);
+    glVertexArrayAttribFormat(vao, kColourLocation, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, kColourLocation, 1);
     glVertexArrayElementBuffer(vao, gpu.indexBuffer.get());
     struct Attribute {
         GLuint location;
@@ -106,7 +115,37 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
     return gpu;
 }
 
+Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
+    GpuMaterial gpu;
+    gpu.name = material.name;
+    gpu.baseColourFactor = material.baseColourFactor;
+    gpu.roughnessFactor = material.roughnessFactor;
+    const std::pair<const Image*, gl::Texture*> maps[] = {{&material.albedoMap, &gpu.albedoMap},
+                                                          {&material.normalMap, &gpu.normalMap},
+                                                          {&material.metallicRoughnessMap, &gpu.metallicRoughnessMap},
+                                                          {&material.roughnessMap, &gpu.roughnessMap},
+                                                          {&material.specularMap, &gpu.specularMap}};
+    for (const auto& [image, texture] : maps)
+        if (!image->empty()) *texture = uploadImage(*image);
+    if (!material.normalMap.empty()) {
+        auto lean = bakeLeanMaps(material.normalMap);
+        if (!lean.ok()) return lean.error();
+        gpu.leanMap1 = uploadMipChain(lean->lean1, GL_RGBA16F);
+        gpu.leanMap2 = uploadMipChain(lean->lean2, GL_RG16F);
+    }
+    return gpu;
+}
+
 }  // namespace
+
+void GpuSubmesh::draw() const {
+    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<uintptr_t>(firstIndex) * sizeof(uint32_t)));
+}
+
+bool GpuCharacter::hasLeanMaps() const {
+    return std::any_of(materials.begin(), materials.end(), [](const GpuMaterial& m) { return m.leanMap1.isValid(); });
+}
 
 gl::Texture uploadImage(const Image& image) {
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
@@ -154,16 +193,16 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         const Model& model = models[c];
         GpuCharacter gpu;
         gpu.name = character.name;
-        gpu.mesh = uploadMesh(model.mesh);
+        gpu.mesh = uploadMesh(model.mesh, model.colours);
         gpu.rig = uploadRig(model.rig, model.mesh);
-        if (!model.albedoMap.empty()) gpu.albedoMap = uploadImage(model.albedoMap);
-        if (!model.normalMap.empty()) {
-            gpu.normalMap = uploadImage(model.normalMap);
-            auto lean = bakeLeanMaps(model.normalMap);
-            if (!lean.ok()) return makeError(character.name, lean.error().what);
-            gpu.leanMap1 = uploadMipChain(lean->lean1, GL_RGBA16F);
-            gpu.leanMap2 = uploadMipChain(lean->lean2, GL_RG16F);
+        for (const ModelMaterial& material : model.materials) {
+            auto uploaded = uploadMaterial(material);
+            if (!uploaded.ok()) return makeError(character.name, uploaded.error().what);
+            gpu.materials.push_back(std::move(*uploaded));
         }
+        for (const Submesh& submesh : model.drawRanges())
+            gpu.submeshes.push_back({static_cast<GLsizei>(submesh.firstIndex), static_cast<GLsizei>(submesh.indexCount),
+                                     static_cast<size_t>(submesh.material)});
         gpuScene.mCharacters.push_back(std::move(gpu));
     }
     return gpuScene;

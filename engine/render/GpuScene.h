@@ -16,9 +16,14 @@
 
 namespace dermis {
 
+// Attribute location of the per-vertex colour (COLOR_0), a second vertex
+// stream beside the Vertex buffer so the skinning pass's layout stays Vertex.
+constexpr GLuint kColourLocation = 7;
+
 struct GpuMesh {
     gl::VertexArray vertexArray;
     gl::Buffer vertexBuffer;
+    gl::Buffer colourBuffer;  // vec4 per vertex, white where the file has no COLOR_0
     gl::Buffer indexBuffer;
     GLsizei indexCount = 0;
     Bounds objectBounds;
@@ -43,17 +48,41 @@ struct GpuRig {
     bool empty() const { return vertexCount == 0; }
 };
 
-struct GpuCharacter {
-    std::string name;
-    GpuMesh mesh;
-    GpuRig rig;  // empty for a static character
-    gl::Texture albedoMap;  // empty when the material has none
+// One material's maps and factors (mesh/Model.h ModelMaterial); an empty
+// texture is a map it does not have.
+struct GpuMaterial {
+    std::string name;  // the glTF material name: Character::materials looks it up
+    glm::vec4 baseColourFactor{1.0f};
+    float roughnessFactor = 1.0f;
+    gl::Texture albedoMap;
     gl::Texture normalMap;
+    gl::Texture metallicRoughnessMap;
+    gl::Texture roughnessMap;  // the scene's roughness_map; replaces the metallic-roughness map
+    gl::Texture specularMap;
     // LEAN maps baked from the normal map (lean/LeanBake.h), empty without
     // one: (B.x, B.y, M.xx, M.yy) RGBA16F and (M.xy, base variance) RG16F,
     // with the baked mip chain.
     gl::Texture leanMap1;
     gl::Texture leanMap2;
+};
+
+// The triangles [firstIndex, firstIndex + indexCount) of the mesh use materials[material].
+struct GpuSubmesh {
+    GLsizei firstIndex = 0;
+    GLsizei indexCount = 0;
+    size_t material = 0;
+
+    void draw() const;  // with the vertex array bound
+};
+
+struct GpuCharacter {
+    std::string name;
+    GpuMesh mesh;
+    GpuRig rig;  // empty for a static character
+    std::vector<GpuMaterial> materials;
+    std::vector<GpuSubmesh> submeshes;  // cover the whole mesh, in index order
+
+    bool hasLeanMaps() const;  // some material has a normal map
 };
 
 class GpuScene {

@@ -14,6 +14,7 @@ Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
         auto model = loadCharacterModel(character);
         if (!model.ok()) return model.error();
         if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+        if (Status names = checkMaterialNames(scene, models.size(), *model); !names) return names.error();
         auto clip = resolveAnimationClip(scene, models.size(), model->rig);
         if (!clip.ok()) return clip.error();
         models.push_back(std::move(*model));
@@ -36,8 +37,13 @@ Result<int> resolveAnimationClip(const Scene& scene, size_t index, const Rig& ri
 }
 
 SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
-    for (const Model& model : models)
-        mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig)});
+    for (const Model& model : models) {
+        std::vector<std::string> names;
+        for (const Submesh& submesh : model.drawRanges())
+            names.push_back(model.materials[static_cast<size_t>(submesh.material)].name);
+        mCharacters.push_back(
+            {model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig), std::move(names)});
+    }
 }
 
 const UvLayout& SceneGeometry::uvLayout(size_t character) {

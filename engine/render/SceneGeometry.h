@@ -18,6 +18,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dermis {
@@ -41,6 +42,10 @@ public:
     const Bounds& objectBounds(size_t character) const { return mCharacters[character].objectBounds; }
     // What moves the character's vertices (empty for a static one).
     const Rig& rig(size_t character) const { return *mCharacters[character].rig; }
+    // The glTF material name of each of its submeshes (mesh/Model.h drawRanges).
+    const std::vector<std::string>& submeshMaterials(size_t character) const {
+        return mCharacters[character].submeshMaterials;
+    }
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
@@ -51,6 +56,7 @@ private:
         Bounds objectBounds;
         std::shared_ptr<const UvLayout> uvLayout;
         std::shared_ptr<const Rig> rig;
+        std::vector<std::string> submeshMaterials;
     };
     std::vector<Character> mCharacters;
 };

@@ -3,6 +3,7 @@
 #include "render/ScreenRegions.h"
 
 #include "render/ScreenFootprint.h"
+#include "render/SubmeshScattering.h"
 #include "gpu/UniformBlocks.h"
 
 #include <algorithm>
@@ -22,13 +23,13 @@ glm::ivec4 unionRect(const glm::ivec4& a, const glm::ivec4& b) {
 }
 
 void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMetreAtUnitDepth) {
+    const float widthScale2 = plan.widthScale * plan.widthScale;
     const auto& gaussians = plan.profile->gaussians();
     const int used = std::clamp(settings.gaussians, 1, static_cast<int>(gaussians.size()));
     std::vector<glm::vec3> weights;
     for (int i = 0; i < used; ++i) weights.push_back(gaussians[static_cast<size_t>(i)].weight);
     for (size_t i = static_cast<size_t>(used); i < gaussians.size(); ++i) weights.back() += gaussians[i].weight;
 
-    const float widthScale2 = settings.widthScale * settings.widthScale;
     const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
     plan.initWeight = glm::vec3(0.0f);
     plan.steps.clear();
@@ -62,38 +63,58 @@ bool SssPlan::anyVisible() const {
 
 float ViewParams::pixelsPerMetreAtUnitDepth() const { return 0.5f * float(heightPx) * clipFromView[1][1]; }
 
-Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view) {
+bool SssPlan::hasSss(size_t character) const {
+    const std::vector<int>& slots = slotsOfCharacter[character];
+    return std::any_of(slots.begin(), slots.end(), [](int slot) { return slot > 0; });
+}
+
+int SssPlan::slotOf(size_t character, size_t submesh) const {
+    if (character >= slotsOfCharacter.size() || submesh >= slotsOfCharacter[character].size()) return 0;
+    return slotsOfCharacter[character][submesh];
+}
+
+Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view,
+                        const std::vector<std::vector<std::string>>& submeshMaterials) {
     SssPlan plan;
-    plan.slotOfCharacter.assign(scene.characters.size(), 0);
+    plan.slotsOfCharacter.resize(scene.characters.size());
     std::vector<std::vector<glm::ivec4>> characterRects;  // per slot
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
-        if (character.material.profile == kOpaqueProfile) continue;
-        auto profile = findProfile(character.material.profile);
-        if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
-        auto existing = std::find_if(plan.slots.begin(), plan.slots.end(),
-                                     [&](const SssSlotPlan& s) { return s.profile == *profile; });
-        if (existing == plan.slots.end()) {
-            if (plan.slots.size() >= DERMIS_MAX_PROFILES) {
-                return makeError("character '" + character.name + "'",
-                                 "more than " + std::to_string(DERMIS_MAX_PROFILES) + " diffusion profiles in one scene");
+        auto submeshes = submeshScattering(scene, c, c < submeshMaterials.size() ? submeshMaterials[c]
+                                                                                 : std::vector<std::string>{});
+        if (!submeshes.ok()) return submeshes.error();
+        ScreenFootprint fp;
+        if (scene.settings.sss.enabled && c < characterBounds.size()) fp = screenFootprint(characterBounds[c], view);
+        for (const SubmeshScattering& submesh : *submeshes) {
+            if (submesh.profile == nullptr) {
+                plan.slotsOfCharacter[c].push_back(0);
+                continue;
             }
-            SssSlotPlan slot;
-            slot.slot = static_cast<int>(plan.slots.size()) + 1;
-            slot.profile = *profile;
-            plan.slots.push_back(slot);
-            existing = plan.slots.end() - 1;
+            auto existing = std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
+                return s.profile == submesh.profile && s.widthScale == submesh.widthScale;
+            });
+            if (existing == plan.slots.end()) {
+                if (plan.slots.size() >= DERMIS_MAX_PROFILES) {
+                    return makeError("character '" + character.name + "'",
+                                     "more than " + std::to_string(DERMIS_MAX_PROFILES) +
+                                         " (diffusion profile, width scale) pairs in one scene");
+                }
+                SssSlotPlan slot;
+                slot.slot = static_cast<int>(plan.slots.size()) + 1;
+                slot.profile = submesh.profile;
+                slot.widthScale = submesh.widthScale;
+                plan.slots.push_back(slot);
+                existing = plan.slots.end() - 1;
+            }
+            plan.slotsOfCharacter[c].push_back(existing->slot);
+            if (!fp.visible) continue;
+            existing->nearestViewDepthM =
+                existing->visible ? std::min(existing->nearestViewDepthM, fp.nearestViewDepthM) : fp.nearestViewDepthM;
+            existing->scissor = existing->visible ? unionRect(existing->scissor, fp.scissor) : fp.scissor;
+            existing->visible = true;
+            characterRects.resize(plan.slots.size());
+            characterRects[static_cast<size_t>(existing->slot - 1)].push_back(fp.scissor);
         }
-        plan.slotOfCharacter[c] = existing->slot;
-        if (!scene.settings.sss.enabled || c >= characterBounds.size()) continue;
-        const ScreenFootprint fp = screenFootprint(characterBounds[c], view);
-        if (!fp.visible) continue;
-        existing->nearestViewDepthM =
-            existing->visible ? std::min(existing->nearestViewDepthM, fp.nearestViewDepthM) : fp.nearestViewDepthM;
-        existing->scissor = existing->visible ? unionRect(existing->scissor, fp.scissor) : fp.scissor;
-        existing->visible = true;
-        characterRects.resize(plan.slots.size());
-        characterRects[static_cast<size_t>(existing->slot - 1)].push_back(fp.scissor);
     }
     for (size_t s = 0; s < characterRects.size(); ++s) plan.slots[s].regions = disjointCover(characterRects[s]);
     for (SssSlotPlan& slot : plan.slots) planSteps(slot, scene.settings.sss, view.pixelsPerMetreAtUnitDepth());

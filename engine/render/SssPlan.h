@@ -3,8 +3,8 @@
 // from the scene alone (no GL), so the render graph can skip work by
 // predicate and tests can check the decisions.
 //
-// Profiles in use get slots 1..DERMIS_MAX_PROFILES (the stencil value of
-// their pixels). For each slot the chain blurs incrementally (Chappuis 2011
+// Each (profile, width scale) in use (render/SubmeshScattering.h) gets a slot
+// 1..DERMIS_MAX_PROFILES, the stencil value of its submeshes' pixels. For each slot the chain blurs incrementally (Chappuis 2011
 // §2.2.4): step i blurs the previous result by variance v_i - v_(i-1)
 // (v_(-1) = 0) and adds w_i x result into the accumulation.
 // A Gaussian whose standard deviation at the nearest SSS pixel is below
@@ -39,6 +39,7 @@ struct SssGaussianStep {
 struct SssSlotPlan {
     int slot = 0;  // 1..DERMIS_MAX_PROFILES
     const DiffusionProfile* profile = nullptr;
+    float widthScale = 1.0f;  // settings.sss.widthScale x the material's width_scale
     glm::vec3 initWeight{0.0f};  // accumulation = initWeight x irradiance before the first step
     std::vector<SssGaussianStep> steps;  // one per Gaussian used, from the narrowest
     bool visible = false;            // some character with this profile may cover a pixel
@@ -51,8 +52,10 @@ struct SssSlotPlan {
 
 struct SssPlan {
     std::vector<SssSlotPlan> slots;
-    std::vector<int> slotOfCharacter;  // per scene character; 0 = opaque (no SSS)
+    std::vector<std::vector<int>> slotsOfCharacter;  // per scene character, per submesh; 0 = opaque (no SSS)
     bool anyVisible() const;
+    bool hasSss(size_t character) const;  // some submesh of it has a slot
+    int slotOf(size_t character, size_t submesh) const;  // 0 (opaque) for a submesh it does not know
 };
 
 // The camera as the planner needs it.
@@ -66,9 +69,12 @@ struct ViewParams {
     float pixelsPerMetreAtUnitDepth() const;
 };
 
-// characterBounds are world-space bounds, one per scene character. Errors
-// for an unknown profile name or more profiles than slots.
-Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view);
+// characterBounds are world-space bounds, one per scene character;
+// submeshMaterials the glTF material names of each character's submeshes
+// (a missing or empty entry: one submesh with the character's material).
+// Errors for an unknown profile name or more profiles than slots.
+Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view,
+                        const std::vector<std::vector<std::string>>& submeshMaterials = {});
 
 // Whether a light lies behind the character as the camera sees it: the
 // directions from the character's centre to the light and to the camera are

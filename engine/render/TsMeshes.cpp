@@ -34,6 +34,7 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
     // An animated character's derivatives are the skinning pass's, deformed with the mesh.
     const bool animated = !character.rig.empty();
     if (animated) glVertexArrayVertexBuffer(vao, 2, character.rig.derivatives.get(), 0, DERMIS_SKIN_DERIVATIVE_FLOATS * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 3, character.mesh.colourBuffer.get(), 0, sizeof(glm::vec4));
     glVertexArrayElementBuffer(vao, character.mesh.indexBuffer.get());
     struct Attribute {
         GLuint location;
@@ -47,7 +48,8 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
                                     {3, 0, 2, offsetof(Vertex, uv)},
                                     {kTsLocationDPdu, animated ? 2u : 1u, 3, animated ? 0 : offsetof(LayoutVertex, dPdu)},
                                     {kTsLocationDPdv, animated ? 2u : 1u, 3, animated ? 3 * sizeof(float) : offsetof(LayoutVertex, dPdv)},
-                                    {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)}};
+                                    {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)},
+                                    {kColourLocation, 3, 4, 0}};
     for (const Attribute& a : attributes) {
         glEnableVertexArrayAttrib(vao, a.location);
         glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));

@@ -6,6 +6,7 @@
 // (render/SceneGeometry.h). Attribute locations:
 //   0 position, 1 normal, 2 tangent, 3 uv   (the GpuMesh's, as the G-buffer's)
 //   4 dP/du, 5 dP/dv (object units per UV unit), 6 border distance (object units)
+//   7 colour (COLOR_0, the GpuMesh's colour buffer)
 // An animated character's dP/du and dP/dv come instead from its GpuRig's
 // derivatives, which the skinning pass deforms with the mesh each pose, so
 // its stretch map follows the deformation (the border distances stay the

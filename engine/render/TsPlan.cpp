@@ -1,6 +1,7 @@
 #include "render/TsPlan.h"
 
 #include "render/ScreenFootprint.h"
+#include "render/SubmeshScattering.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -76,7 +77,7 @@ void fitTsm(const gpu::GpuLight& light, const Bounds& bounds, TsCharacterPlan& p
 void planGaussians(TsCharacterPlan& plan, const SssSettings& sss, float denseMmPerUv) {
     const auto& gaussians = plan.profile->gaussians();
     const int used = std::clamp(sss.gaussians, 1, static_cast<int>(gaussians.size()));
-    const float widthScale2 = sss.widthScale * sss.widthScale;
+    const float widthScale2 = plan.widthScale * plan.widthScale;
     plan.gaussians.clear();
     for (int i = 0; i < used; ++i) {
         const ProfileGaussian& g = gaussians[static_cast<size_t>(i)];
@@ -132,52 +133,66 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
     for (const Character& character : scene.characters) labelUses[character.name]++;
     for (size_t c = 0; c < scene.characters.size() && c < inputs.size(); ++c) {
         const Character& character = scene.characters[c];
-        if (character.material.profile == kOpaqueProfile) continue;
-        auto profile = findProfile(character.material.profile);
-        if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
-
-        TsCharacterPlan p;
-        p.character = static_cast<int>(c);
-        p.profile = *profile;
-        p.label = character.name.empty() ? "character " + std::to_string(c) : character.name;
-        if (labelUses[character.name] > 1) p.label += " #" + std::to_string(c);
-
-        const TsCharacterInput& input = inputs[c];
-        const ScreenFootprint footprint = screenFootprint(input.worldBounds, view);
-        p.visible = settings.sss.enabled && footprint.visible;
-        p.nearestViewDepthM = footprint.nearestViewDepthM;
-        if (!(input.uvlessSurfaceFraction <= kMaxUvlessSurfaceFraction)) {
-            char why[128];
-            std::snprintf(why, sizeof why, "%.0f%% of its surface has no UV area (limit %.0f%%%s)",
-                          100.0 * input.uvlessSurfaceFraction, 100.0 * kMaxUvlessSurfaceFraction,
-                          input.uvlessSurfaceFraction >= 1.0f ? "; the mesh has no TEXCOORD_0, or all UVs equal" : "");
-            p.fallback = why;
-        } else if (!(input.uvOverlapFraction <= kMaxUvOverlapFraction)) {
-            char why[128];
-            std::snprintf(why, sizeof why,
-                          "%.1f%% of its UV texels are covered by more than one triangle (limit %.0f%%): overlapping or "
-                          "mirrored UVs",
-                          100.0 * input.uvOverlapFraction, 100.0 * kMaxUvOverlapFraction);
-            p.fallback = why;
+        auto submeshes = submeshScattering(scene, c, inputs[c].submeshMaterials);
+        if (!submeshes.ok()) return submeshes.error();
+        std::vector<TsCharacterPlan> surfaces;
+        for (size_t s = 0; s < submeshes->size(); ++s) {
+            const SubmeshScattering& submesh = (*submeshes)[s];
+            if (submesh.profile == nullptr) continue;
+            auto same = std::find_if(surfaces.begin(), surfaces.end(), [&](const TsCharacterPlan& p) {
+                return submesh.sameAs({p.profile, p.widthScale});
+            });
+            if (same == surfaces.end()) {
+                surfaces.emplace_back();
+                surfaces.back().profile = submesh.profile;
+                surfaces.back().widthScale = submesh.widthScale;
+                same = surfaces.end() - 1;
+            }
+            same->submeshes.push_back(s);
         }
-        const float pixelsPerMm =
-            p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;
-        const float densitySide = input.mmPerUv * pixelsPerMm;
-        // The whole character's rectangle, clipping left out: the texture holds
-        // all of it, and a close-up's density is the first criterion's.
-        const float coverageSide = std::sqrt(kTexelsPerCoveredPixel * footprint.unclippedPixels /
-                                             std::max(input.uvCoverageFraction, 1e-4f));
-        p.size = std::min(tsTextureSize(densitySide, settings.ts.minSize, settings.ts.maxSize),
-                          tsTextureSize(coverageSide, settings.ts.minSize, settings.ts.maxSize));
-        planGaussians(p, settings.sss, input.denseMmPerUv);
+        for (TsCharacterPlan& surface : surfaces) {
+            TsCharacterPlan p = std::move(surface);
+            p.character = static_cast<int>(c);
+            p.label = character.name.empty() ? "character " + std::to_string(c) : character.name;
+            if (labelUses[character.name] > 1) p.label += " #" + std::to_string(c);
+            if (surfaces.size() > 1) p.label += " " + p.profile->name() + " " + std::to_string(p.submeshes.front());
+            const TsCharacterInput& input = inputs[c];
+            const ScreenFootprint footprint = screenFootprint(input.worldBounds, view);
+            p.visible = settings.sss.enabled && footprint.visible;
+            p.nearestViewDepthM = footprint.nearestViewDepthM;
+            if (!(input.uvlessSurfaceFraction <= kMaxUvlessSurfaceFraction)) {
+                char why[128];
+                std::snprintf(why, sizeof why, "%.0f%% of its surface has no UV area (limit %.0f%%%s)",
+                              100.0 * input.uvlessSurfaceFraction, 100.0 * kMaxUvlessSurfaceFraction,
+                              input.uvlessSurfaceFraction >= 1.0f ? "; the mesh has no TEXCOORD_0, or all UVs equal" : "");
+                p.fallback = why;
+            } else if (!(input.uvOverlapFraction <= kMaxUvOverlapFraction)) {
+                char why[128];
+                std::snprintf(why, sizeof why,
+                              "%.1f%% of its UV texels are covered by more than one triangle (limit %.0f%%): overlapping or "
+                              "mirrored UVs",
+                              100.0 * input.uvOverlapFraction, 100.0 * kMaxUvOverlapFraction);
+                p.fallback = why;
+            }
+            const float pixelsPerMm =
+                p.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / footprint.nearestViewDepthM : 0.0f;
+            const float densitySide = input.mmPerUv * pixelsPerMm;
+            // The whole character's rectangle, clipping left out: the texture holds
+            // all of it, and a close-up's density is the first criterion's.
+            const float coverageSide = std::sqrt(kTexelsPerCoveredPixel * footprint.unclippedPixels /
+                                                 std::max(input.uvCoverageFraction, 1e-4f));
+            p.size = std::min(tsTextureSize(densitySide, settings.ts.minSize, settings.ts.maxSize),
+                              tsTextureSize(coverageSide, settings.ts.minSize, settings.ts.maxSize));
+            planGaussians(p, settings.sss, input.denseMmPerUv);
 
-        // transmittance.enabled means "light through thin regions" in both modes.
-        if (settings.ts.tsm && settings.transmittance.enabled) p.tsmLight = chooseTsmLight(scene, lights, input.worldBounds);
-        if (p.tsmLight >= 0) {
-            p.tsmSize = std::clamp(p.size, kMinTsmSize, kMaxTsmSize);
-            fitTsm(lights.block.lights[p.tsmLight], input.worldBounds, p);
+            // transmittance.enabled means "light through thin regions" in both modes.
+            if (settings.ts.tsm && settings.transmittance.enabled) p.tsmLight = chooseTsmLight(scene, lights, input.worldBounds);
+            if (p.tsmLight >= 0) {
+                p.tsmSize = std::clamp(p.size, kMinTsmSize, kMaxTsmSize);
+                fitTsm(lights.block.lights[p.tsmLight], input.worldBounds, p);
+            }
+            plan.characters.push_back(std::move(p));
         }
-        plan.characters.push_back(std::move(p));
     }
     return plan;
 }

@@ -3,7 +3,10 @@
 // on the CPU from the scene, the view and each mesh's UV layout (no GL), so
 // the render graph skips work by predicate and tests can check the decisions.
 //
-// Per SSS character (Chappuis 2011 §2.2.2):
+// Per SSS surface (Chappuis 2011 §2.2.2): the submeshes of one character
+// that share a (profile, width scale) (render/SubmeshScattering.h), with
+// their own irradiance texture, blurs and gather; a character with one
+// profile has one surface, its opaque submeshes none.
 //  - visible: its bounds may cover a pixel (render/ScreenFootprint.h). An
 //    invisible character's texture-space passes are all skipped.
 //  - size: the irradiance texture's side, a power of two within
@@ -66,6 +69,7 @@ struct TsCharacterInput {
     float uvlessSurfaceFraction = 0.0f;  // UvLayout::uvlessSurfaceFraction
     float uvOverlapFraction = 0.0f;      // UvLayout::uvOverlapFraction
     float uvCoverageFraction = 1.0f;     // UvLayout::uvCoverageFraction
+    std::vector<std::string> submeshMaterials;  // glTF material names per submesh; empty: one submesh, the character's material
 };
 
 // Texels holding surface per pixel of the character's screen rectangle. The
@@ -85,8 +89,11 @@ struct TsStep {
 
 struct TsCharacterPlan {
     int character = 0;   // index into Scene::characters
-    std::string label;   // names its passes: "ts <label> ..."; the character's name, made unique
+    std::string label;   // names its passes: "ts <label> ..."; the character's name, made unique, and
+                         // the profile's when the character has several surfaces
     const DiffusionProfile* profile = nullptr;
+    float widthScale = 1.0f;            // settings.sss.widthScale x the material's width_scale
+    std::vector<size_t> submeshes;      // the character's submeshes this surface draws
     bool visible = false;
     // Why it falls back to screen space; empty when texture space can run it.
     std::string fallback;
@@ -108,7 +115,7 @@ struct TsCharacterPlan {
 };
 
 struct TsPlan {
-    std::vector<TsCharacterPlan> characters;  // the SSS characters, in scene order
+    std::vector<TsCharacterPlan> characters;  // the SSS surfaces, in scene order
     bool anyRuns() const;              // a character is run in texture space
     bool anyVisibleFallback() const;   // a visible character falls back to screen space
 };

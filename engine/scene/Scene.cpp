@@ -14,4 +14,20 @@ glm::mat4 Transform::worldFromObject(float metresPerUnit) const {
     return t * rz * ry * rx * s;
 }
 
+const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName) {
+    const auto found = character.materials.find(gltfMaterialName);
+    return found == character.materials.end() ? character.material : found->second;
+}
+
+Result<const DiffusionProfile*> findSceneProfile(const Scene& scene, const std::string& name) {
+    for (const DiffusionProfile& profile : scene.profiles)
+        if (profile.name() == name) return &profile;
+    auto builtin = findProfile(name);
+    if (builtin.ok()) return builtin;
+    std::string known;
+    for (const std::string& n : profileNames()) known += (known.empty() ? "" : ", ") + n;
+    for (const DiffusionProfile& profile : scene.profiles) known += ", " + profile.name();
+    return makeError("", "unknown diffusion profile \"" + name + "\" (known: " + known + ")");
+}
+
 }  // namespace dermis

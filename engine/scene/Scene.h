@@ -5,10 +5,13 @@
 // metresPerUnit. Angles in the file are degrees.
 
 #include "core/Limits.h"
+#include "core/Result.h"
 #include "scene/SceneEnums.h"
+#include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,7 +68,12 @@ struct Material {
     glm::vec3 albedo{0.8f, 0.6f, 0.5f};  // linear; multiplies the albedo map
     float roughness = 0.3f;              // Beckmann m (Chappuis 2011 §2.3)
     float rhoS = 0.18f;                  // specular intensity rho_s
-    std::string profile = "skin";        // diffusion profile name, or "none" for an opaque material
+    std::string profile = "skin";        // diffusion profile name (built-in or Scene::profiles), or "none" for an opaque material
+    float widthScale = 1.0f;             // multiplies settings.sss.widthScale for this material's scattering
+    // Grey images (paths, relative to the scene file) or empty: the roughness
+    // map gives Beckmann m itself, the specular map multiplies rhoS.
+    std::string roughnessMap;
+    std::string specularMap;
 };
 
 // Per-character SSAO overrides (Papanikolaou 2013 §3: radius and sample count per object).
@@ -92,7 +100,10 @@ struct Character {
     Transform transform;
     MeshSource mesh;
     float metresPerUnit = 1.0f;
-    Material material;
+    Material material;  // every primitive's, unless `materials` names its glTF material
+    // Per glTF material name: the material its primitives use instead (each
+    // starts as a copy of `material`, then the keys given replace fields).
+    std::map<std::string, Material> materials;
     CharacterSsao ssao;
     CharacterAnimation animation;
 };
@@ -167,8 +178,17 @@ struct Scene {
     Camera camera;
     std::vector<Light> lights;
     std::vector<Character> characters;
+    std::vector<DiffusionProfile> profiles;  // user profiles, by name; never "skin", "marble" or "none"
     Background background;
     RenderSettings settings;
 };
+
+// The material a character's primitives with this glTF material name use:
+// its `materials` entry, else its `material`.
+const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName);
+
+// A diffusion profile by name: a built-in one or one of the scene's own; the
+// error lists every known name.
+Result<const DiffusionProfile*> findSceneProfile(const Scene& scene, const std::string& name);
 
 }  // namespace dermis

@@ -172,26 +172,132 @@ void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh
     mesh.gltfPath = resolveScenePath(sceneFile, mesh.gltfPath);
 }
 
-void readMaterial(JsonObject& parent, const std::string& sceneFile, Material& material) {
-    const json* value = parent.member("material");
-    if (value == nullptr) {
-        return;
-    }
-    JsonObject object(parent.context(), *value, parent.pointer("material"),
-                      {"albedo_map", "normal_map", "flip_v", "procedural", "albedo", "roughness", "rho_s", "profile"});
+const std::vector<std::string> kMaterialKeys = {"albedo_map", "normal_map", "flip_v",      "procedural",
+                                                 "albedo",     "roughness",  "rho_s",       "profile",
+                                                 "width_scale", "roughness_map", "specular_map"};
+
+void readMaterialFields(JsonObject& object, const std::string& sceneFile, const std::vector<std::string>& profiles,
+                        Material& material) {
     object.string("albedo_map", material.albedoMap);
     object.string("normal_map", material.normalMap);
-    material.albedoMap = resolveScenePath(sceneFile, material.albedoMap);
-    material.normalMap = resolveScenePath(sceneFile, material.normalMap);
+    object.string("roughness_map", material.roughnessMap);
+    object.string("specular_map", material.specularMap);
+    for (std::string* path : {&material.albedoMap, &material.normalMap, &material.roughnessMap, &material.specularMap})
+        *path = resolveScenePath(sceneFile, *path);
     object.boolean("flip_v", material.flipV);
     object.boolean("procedural", material.procedural);
     object.vec3("albedo", material.albedo, Range::closed(0.0, 1.0));
     object.number("roughness", material.roughness, Range::leftOpen(0.0, 1.0));
     object.number("rho_s", material.rhoS, Range::closed(0.0, 1.0));
+    object.number("width_scale", material.widthScale, Range::above(0.0));
     object.string("profile", material.profile, false);
-    std::vector<std::string> profiles = profileNames();
-    profiles.emplace_back(kOpaqueProfile);
     checkName(object, "profile", material.profile, profiles, "diffusion profile");
+}
+
+void readMaterial(JsonObject& parent, const std::string& sceneFile, const std::vector<std::string>& profiles,
+                  Material& material) {
+    const json* value = parent.member("material");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(parent.context(), *value, parent.pointer("material"), kMaterialKeys);
+    readMaterialFields(object, sceneFile, profiles, material);
+}
+
+// The object at `key` whose members are named by the file (glTF material
+// names, profile names), or null when absent or not an object (an error).
+const json* namedObjects(JsonObject& parent, const char* key, const std::string& what) {
+    const json* value = parent.member(key);
+    if (value == nullptr || parent.context().failed()) {
+        return nullptr;
+    }
+    const bool isObject = parent.context().check(value->is_object(), parent.pointer(key),
+                                                 "must be an object of " + what + ", got " + jsonTypeForMessage(*value));
+    return isObject ? value : nullptr;
+}
+
+// Per glTF material name, a material that starts as the character's own.
+void readMaterialOverrides(JsonObject& parent, const std::string& sceneFile, const std::vector<std::string>& profiles,
+                           Character& character) {
+    const json* value = namedObjects(parent, "materials", "materials by glTF material name");
+    JsonContext& context = parent.context();
+    if (value == nullptr) {
+        return;
+    }
+    for (const auto& [name, entry] : value->items()) {
+        Material material = character.material;
+        JsonObject object(context, entry, parent.pointer("materials") + "/" + jsonPointerSegment(name), kMaterialKeys);
+        readMaterialFields(object, sceneFile, profiles, material);
+        character.materials[name] = material;
+    }
+}
+
+// Scene-level user profiles: 1..DERMIS_MAX_PROFILE_GAUSSIANS Gaussians each,
+// variances > 0 and increasing, RGB weights >= 0 summing to 1 per channel.
+constexpr double kProfileWeightSumTolerance = 1e-3;
+
+void readProfile(JsonContext& context, const json& value, const std::string& pointer, const std::string& name,
+                 std::vector<DiffusionProfile>& out) {
+    JsonObject object(context, value, pointer, {"gaussians"});
+    const json* list = object.array("gaussians", kMaxProfileGaussians, "Gaussians");
+    if (context.failed()) return;
+    if (!context.check(list != nullptr && !list->empty(), object.pointer("gaussians"),
+                       "give 1 to " + std::to_string(kMaxProfileGaussians) + " Gaussians")) {
+        return;
+    }
+    std::vector<ProfileGaussian> gaussians(list->size());
+    glm::dvec3 sums(0.0);
+    for (size_t i = 0; i < list->size() && !context.failed(); ++i) {
+        const std::string at = object.pointer("gaussians") + "/" + std::to_string(i);
+        JsonObject gaussian(context, (*list)[i], at, {"variance_mm2", "weights"});
+        if (!context.check(gaussian.has("variance_mm2") && gaussian.has("weights"), at,
+                           "needs \"variance_mm2\" and \"weights\"")) {
+            return;
+        }
+        gaussian.number("variance_mm2", gaussians[i].varianceMm2, Range::above(0.0));
+        gaussian.vec3("weights", gaussians[i].weight, Range::closed(0.0, 1.0));
+        if (i > 0 && !context.failed()) {
+            context.check(gaussians[i].varianceMm2 > gaussians[i - 1].varianceMm2, gaussian.pointer("variance_mm2"),
+                          "variances must increase strictly, got " + formatNumberForMessage(gaussians[i].varianceMm2) +
+                              " after " + formatNumberForMessage(gaussians[i - 1].varianceMm2));
+        }
+        sums += glm::dvec3(gaussians[i].weight);
+    }
+    if (context.failed()) return;
+    for (int c = 0; c < 3; ++c) {
+        const char* channel[] = {"red", "green", "blue"};
+        char sum[32];  // 5 digits: enough to show a sum just outside the tolerance, none of the float noise
+        std::snprintf(sum, sizeof sum, "%.5g", sums[c]);
+        if (!context.check(std::fabs(sums[c] - 1.0) <= kProfileWeightSumTolerance, object.pointer("gaussians"),
+                           std::string("the ") + channel[c] + " weights sum to " + sum +
+                               "; each channel must sum to 1 (within 1e-3)")) {
+            return;
+        }
+    }
+    auto profile = DiffusionProfile::create(name, std::move(gaussians));
+    if (!context.check(profile.ok(), pointer, profile.ok() ? "" : profile.error().what)) return;
+    out.push_back(std::move(*profile));
+}
+
+void readProfiles(JsonObject& root, std::vector<DiffusionProfile>& out) {
+    const json* value = namedObjects(root, "profiles", "profiles by name");
+    JsonContext& context = root.context();
+    if (value == nullptr) {
+        return;
+    }
+    std::vector<std::string> builtins = profileNames();
+    builtins.emplace_back(kOpaqueProfile);
+    for (const auto& [name, entry] : value->items()) {
+        const std::string pointer = root.pointer("profiles") + "/" + jsonPointerSegment(name);
+        if (!context.check(!name.empty() && std::find(builtins.begin(), builtins.end(), name) == builtins.end(),
+                           pointer,
+                           "a user profile may not be named " + quoteForMessage(name) + " (built in: " +
+                               listForMessage(builtins, "and") + ")")) {
+            return;
+        }
+        readProfile(context, entry, pointer, name, out);
+        if (context.failed()) return;
+    }
 }
 
 // An integer that must also satisfy `valid` (odd, or 0 as "unset"): one message
@@ -236,9 +342,9 @@ void readCharacterAnimation(JsonObject& parent, CharacterAnimation& animation) {
 }
 
 void readCharacter(JsonContext& context, const json& value, const std::string& pointer, const std::string& sceneFile,
-                   Character& character) {
-    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material", "ssao",
-                                                 "animation"});
+                   const std::vector<std::string>& profiles, Character& character) {
+    JsonObject object(context, value, pointer, {"name", "transform", "mesh", "metres_per_unit", "material",
+                                                 "materials", "ssao", "animation"});
     object.string("name", character.name);
     readTransform(object, character.transform);
     readMesh(object, sceneFile, character.mesh);
@@ -252,7 +358,8 @@ void readCharacter(JsonContext& context, const json& value, const std::string& p
                           ", " + formatNumberForMessage(kMaxMetresPerMeshUnit) + "] metres per mesh unit, got " +
                           formatProductForMessage(metresPerMeshUnit));
     }
-    readMaterial(object, sceneFile, character.material);
+    readMaterial(object, sceneFile, profiles, character.material);
+    readMaterialOverrides(object, sceneFile, profiles, character);
     readCharacterSsao(object, character.ssao);
     readCharacterAnimation(object, character.animation);
 }
@@ -322,8 +429,12 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
     Scene scene;
     scene.path = pathForMessages;
     JsonContext context(pathForMessages);
-    JsonObject root(context, document, "", {"camera", "lights", "characters", "background", "settings"});
+    JsonObject root(context, document, "", {"camera", "lights", "characters", "profiles", "background", "settings"});
     readCamera(root, scene.camera);
+    readProfiles(root, scene.profiles);
+    std::vector<std::string> profiles = profileNames();
+    profiles.emplace_back(kOpaqueProfile);
+    for (const DiffusionProfile& profile : scene.profiles) profiles.push_back(profile.name());
 
     if (const json* lights = root.array("lights", kMaxSceneLights, "lights")) {
         scene.lights.resize(lights->size());
@@ -335,7 +446,7 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
         scene.characters.resize(characters->size());
         for (size_t i = 0; i < characters->size() && !context.failed(); ++i) {
             readCharacter(context, (*characters)[i], root.pointer("characters") + "/" + std::to_string(i),
-                          pathForMessages, scene.characters[i]);
+                          pathForMessages, profiles, scene.characters[i]);
         }
     }
     readBackground(root, scene.background);

@@ -65,6 +65,29 @@ Json lightJson(const Light& light) {
     return j;
 }
 
+Json materialJson(const Material& m, const std::string& sceneFile) {
+    Json material;
+    material["albedo_map"] = relativeScenePath(sceneFile, m.albedoMap);
+    material["normal_map"] = relativeScenePath(sceneFile, m.normalMap);
+    material["roughness_map"] = relativeScenePath(sceneFile, m.roughnessMap);
+    material["specular_map"] = relativeScenePath(sceneFile, m.specularMap);
+    material["flip_v"] = m.flipV;
+    material["procedural"] = m.procedural;
+    material["albedo"] = vec3(m.albedo);
+    material["roughness"] = number(m.roughness);
+    material["rho_s"] = number(m.rhoS);
+    material["width_scale"] = number(m.widthScale);
+    material["profile"] = m.profile;
+    return material;
+}
+
+Json profileJson(const DiffusionProfile& profile) {
+    Json gaussians = Json::array();
+    for (const ProfileGaussian& g : profile.gaussians())
+        gaussians.push_back(Json{{"variance_mm2", number(g.varianceMm2)}, {"weights", vec3(g.weight)}});
+    return Json{{"gaussians", std::move(gaussians)}};
+}
+
 Json characterJson(const Character& character, const std::string& sceneFile) {
     Json transform;
     transform["translation_m"] = vec3(character.transform.translationM);
@@ -78,23 +101,17 @@ Json characterJson(const Character& character, const std::string& sceneFile) {
         mesh["procedural"] = character.mesh.procedural;
     }
 
-    const Material& m = character.material;
-    Json material;
-    material["albedo_map"] = relativeScenePath(sceneFile, m.albedoMap);
-    material["normal_map"] = relativeScenePath(sceneFile, m.normalMap);
-    material["flip_v"] = m.flipV;
-    material["procedural"] = m.procedural;
-    material["albedo"] = vec3(m.albedo);
-    material["roughness"] = number(m.roughness);
-    material["rho_s"] = number(m.rhoS);
-    material["profile"] = m.profile;
-
     Json j;
+    j["material"] = materialJson(character.material, sceneFile);
+    if (!character.materials.empty()) {
+        Json materials = Json::object();
+        for (const auto& [name, material] : character.materials) materials[name] = materialJson(material, sceneFile);
+        j["materials"] = std::move(materials);
+    }
     j["name"] = character.name;
     j["transform"] = std::move(transform);
     j["mesh"] = std::move(mesh);
     j["metres_per_unit"] = number(character.metresPerUnit);
-    j["material"] = std::move(material);
     j["ssao"] = Json{{"radius_m", number(character.ssao.radiusM)}, {"samples", character.ssao.samples}};
     const CharacterAnimation& a = character.animation;
     j["animation"] = Json{{"clip", a.clip}, {"time_s", number(a.timeS)}, {"speed", number(a.speed)}, {"loop", a.loop}};
@@ -184,6 +201,11 @@ std::string sceneToJson(const Scene& scene) {
     root["characters"] = Json::array();
     for (const Character& character : scene.characters) {
         root["characters"].push_back(characterJson(character, scene.path));
+    }
+    if (!scene.profiles.empty()) {
+        Json profiles = Json::object();
+        for (const DiffusionProfile& profile : scene.profiles) profiles[profile.name()] = profileJson(profile);
+        root["profiles"] = std::move(profiles);
     }
     root["background"] = Json{{"colour", vec3(scene.background.colour)}};
     root["settings"] = settingsJson(scene.settings);

@@ -76,14 +76,16 @@ DERMIS_BLOCK(LightsBlock, DERMIS_BINDING_LIGHTS) {
 DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     mat4 worldFromObject;
     mat4 normalWorldFromObject;  // inverse transpose of worldFromObject
-    vec4 albedoRoughness;        // rgb: albedo tint (linear), w: Beckmann roughness m
+    vec4 albedoRoughness;        // rgb: albedo tint x glTF baseColorFactor (linear), w: Beckmann roughness m (the scalar)
     vec4 material;               // x: rho_s, y: object id (1..255), z: has albedo map, w: has normal map
     vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index, z: cube face 0..5 (shadow pass)
+    vec4 surface;                // x: profile slot of this draw (0 = opaque), y: roughness source (DERMIS_ROUGHNESS_*),
+                                 // z: glTF roughnessFactor, w: has a specular map (1/0) (include/Material.glsl)
 } DERMIS_BLOCK_END(uObject)
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).
 struct CharacterParams {
-    vec4 params;  // x: profile slot (0 = none), y: SSAO radius (m), z: SSAO samples, w: has LEAN maps (1/0): the LEAN variants take its specular from passes/LeanSpecularPass
+    vec4 params;  // x: 0 (unused: the profile slot is per draw, ObjectBlock.surface.x), y: SSAO radius (m), z: SSAO samples, w: has LEAN maps (1/0): the LEAN variants take its specular from passes/LeanSpecularPass
 };
 
 DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {

@@ -83,6 +83,7 @@ TEST_F(TextureSpace, StretchMapOnTheUvSphereMatchesTheClosedForm) {
     plan.label = "ball";
     plan.visible = true;
     plan.size = 512;
+    plan.submeshes = {0};  // the sphere's one submesh
     graph::RenderGraph graph;
     const graph::TextureHandle stretch = addTsStretchPass(graph, frame, plan);
     std::vector<glm::vec2> texels(static_cast<size_t>(plan.size * plan.size));

@@ -10,7 +10,7 @@
 
 namespace dermis::test {
 
-std::string writeEdgeScene(const TempDir& dir) {
+std::string writeEdgeScene(const TempDir& dir, const std::string& profile, const std::string& profilesJson) {
     Image step;
     step.width = 4096;
     step.height = 4;
@@ -22,24 +22,25 @@ std::string writeEdgeScene(const TempDir& dir) {
         }
     }
     EXPECT_TRUE(saveImage(dir.file("step.png"), step).ok());
-    char json[2048];
+    char json[4096];
     std::snprintf(json, sizeof json, R"({
       "camera": {"position_m": [0, %.6f, 0], "target_m": [0, 0, 0], "up": [0, 0, -1],
                  "vertical_fov_deg": %.1f, "near_m": 0.005, "far_m": 1},
       "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1, "shadow": false}],
       "characters": [{"name": "step", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.04},
-                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "skin"}}],
+                      "material": {"albedo": [1, 1, 1], "albedo_map": "step.png", "rho_s": 0, "profile": "%s"}}],%s%s
       "background": {"colour": [0, 0, 0]},
       "settings": {"ambient": [0, 0, 0], "energy_conservation": false, "ssao": {"enabled": false},
                    "transmittance": {"enabled": false}, "sss": {"mix": 1}}
     })",
-                  kEdgeHeightM, kEdgeFovDeg);
+                  kEdgeHeightM, kEdgeFovDeg, profile.c_str(), profilesJson.empty() ? "" : "\n      \"profiles\": ",
+                  profilesJson.empty() ? "" : (profilesJson + ",").c_str());
     writeTextFile(dir.file("edge.json"), json);
     return dir.file("edge.json");
 }
 
-EdgeError edgeError(const Image& diffuse, int width, int height) {
-    const DiffusionProfile& skin = skinProfile();
+EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile) {
+    const DiffusionProfile& skin = profile ? *profile : skinProfile();
     const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / height;
     EdgeError e;
     double sumSquares = 0.0;

@@ -12,20 +12,27 @@
 
 #include <string>
 
+namespace dermis {
+class DiffusionProfile;
+}
+
 namespace dermis::test {
 
 constexpr double kEdgeFovDeg = 30.0;
 constexpr double kEdgeHeightM = 0.0336;
 
-// Writes step.png and edge.json into `dir`; returns the scene's path.
-std::string writeEdgeScene(const TempDir& dir);
+// Writes step.png and edge.json into `dir`; returns the scene's path. The
+// plane's material uses `profile`; `profilesJson`, when given, is the
+// scene's "profiles" object (user profiles).
+std::string writeEdgeScene(const TempDir& dir, const std::string& profile = "skin",
+                           const std::string& profilesJson = "");
 
 struct EdgeError {
     double max = 0.0;  // largest |rendered - closed form| of any channel, as a fraction of the unit step
     double rms = 0.0;
 };
 
-// The diffuse AOV's middle row against the skin profile's edge response.
-EdgeError edgeError(const Image& diffuse, int width, int height);
+// The diffuse AOV's middle row against the profile's edge response (skin when null).
+EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile = nullptr);
 
 }  // namespace dermis::test

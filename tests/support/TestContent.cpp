@@ -54,14 +54,28 @@ float smoothstep(float a, float b, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
-}  // namespace
-
-bool writeBendingCylinder(const std::string& path, std::string* error, float uvScale) {
-    using C = BendingCylinder;
+tinygltf::Model newModel() {
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "Dermis tests (tests/support/TestContent.cpp)";
     model.buffers.resize(1);
+    return model;
+}
+
+bool writeModel(tinygltf::Model& model, const std::string& path, std::string* error) {
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
+        if (error) *error = "tinygltf could not write " + path;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool writeBendingCylinder(const std::string& path, std::string* error, float uvScale) {
+    using C = BendingCylinder;
+    tinygltf::Model model = newModel();
 
     std::vector<float> positions, normals, uvs, weights, bulge;
     std::vector<uint16_t> joints;
@@ -162,12 +176,89 @@ bool writeBendingCylinder(const std::string& path, std::string* error, float uvS
     animation.channels = {rotate, morph};
     model.animations.push_back(animation);
 
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&model, path, false, true, true, false)) {
-        if (error) *error = "tinygltf could not write " + path;
-        return false;
+    return writeModel(model, path, error);
+}
+
+bool writeMultiMaterialStrip(const std::string& path, std::string* error) {
+    using S = MultiMaterialStrip;
+    tinygltf::Model model = newModel();
+    tinygltf::Mesh mesh;
+    mesh.name = "strip";
+    for (int p = 0; p < S::kPrimitives; ++p) {
+        std::vector<float> positions, normals, uvs, floatColours;
+        std::vector<uint8_t> byteColours;
+        std::vector<uint16_t> shortColours;
+        std::vector<uint32_t> indices;
+        // A grid whose columns include either side of the step (kStepBandM
+        // apart), so that one UV chart changes colour inside that narrow band;
+        // inner rows and columns keep vertices away from the chart's border.
+        const float left = S::leftXM(p);
+        const float step = left + 0.5f * S::kWidthM;
+        const float xs[] = {left, left + 0.25f * S::kWidthM, step - 0.5f * S::kStepBandM, step + 0.5f * S::kStepBandM,
+                            left + 0.75f * S::kWidthM, left + S::kWidthM};
+        constexpr uint32_t kColumns = 6;
+        constexpr uint32_t kRows = 9;
+        for (uint32_t row = 0; row < kRows; ++row) {
+            const float t = float(row) / float(kRows - 1);
+            const float z = (2.0f * t - 1.0f) * S::kHalfDepthM;
+            for (uint32_t column = 0; column < kColumns; ++column) {
+                const float x = xs[column];
+                positions.insert(positions.end(), {x, 0.0f, z});
+                normals.insert(normals.end(), {0.0f, 1.0f, 0.0f});
+                const float u = (float(p) + (x - left) / S::kWidthM) / float(S::kPrimitives);
+                uvs.insert(uvs.end(), {u * 0.98f + 0.01f, 0.01f + 0.98f * t});
+                const glm::vec3 colour = S::kColours[p][x < step ? 0 : 1];
+                for (int c = 0; c < 3; ++c) {
+                    floatColours.push_back(colour[c]);
+                    byteColours.push_back(static_cast<uint8_t>(std::lround(colour[c] * 255.0f)));
+                    shortColours.push_back(static_cast<uint16_t>(std::lround(colour[c] * 65535.0f)));
+                }
+                floatColours.push_back(1.0f);
+            }
+        }
+        for (uint32_t row = 0; row + 1 < kRows; ++row) {
+            for (uint32_t column = 0; column + 1 < kColumns; ++column) {
+                const uint32_t a = row * kColumns + column, b = a + 1, c = a + kColumns, d = c + 1;
+                indices.insert(indices.end(), {a, c, b, b, c, d});  // counter-clockwise seen from +Y
+            }
+        }
+        const size_t count = positions.size() / 3;
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        primitive.material = p;
+        primitive.attributes["POSITION"] =
+            addAccessor(model, positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count, true);
+        primitive.attributes["NORMAL"] = addAccessor(model, normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+        primitive.attributes["TEXCOORD_0"] = addAccessor(model, uvs, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+        int colours = -1;
+        if (p == 0) {
+            colours = addAccessor(model, floatColours, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, count);
+        } else if (p == 1) {
+            colours = addAccessor(model, byteColours, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC3, count);
+        } else {
+            colours = addAccessor(model, shortColours, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC3, count);
+        }
+        model.accessors[static_cast<size_t>(colours)].normalized = p != 0;
+        primitive.attributes["COLOR_0"] = colours;
+        primitive.indices = addAccessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+        mesh.primitives.push_back(primitive);
+
+        tinygltf::Material material;
+        material.name = S::kNames[p];
+        const glm::vec4 factor = S::kFactors[p];
+        material.pbrMetallicRoughness.baseColorFactor = {factor.r, factor.g, factor.b, factor.a};
+        model.materials.push_back(material);
     }
-    return true;
+    model.meshes.push_back(mesh);
+    tinygltf::Node node;
+    node.name = "strip";
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    return writeModel(model, path, error);
 }
 
 }  // namespace dermis::test

@@ -14,6 +14,8 @@
 //   - the mesh node has a translation, which glTF 2.0 §3.7.3 says a skinned
 //     mesh ignores.
 
+#include <glm/glm.hpp>
+
 #include <string>
 
 namespace dermis::test {
@@ -34,5 +36,32 @@ struct BendingCylinder {
 // a message on failure. uvScale < 1 packs its UVs into the corner square of
 // that side, as an atlas chart: uvScale^2 of the UV square is covered.
 bool writeBendingCylinder(const std::string& path, std::string* error = nullptr, float uvScale = 1.0f);
+
+// The multi-material strip: three flat primitives side by side in the y = 0
+// plane (normal +Y), each its own factor-only glTF material and each split
+// at its middle into two halves of constant COLOR_0, a step in albedo (the
+// colour changes across a band kStepBandM wide; one UV chart per primitive):
+//   primitive 0 "Skin"  x in [-30, -10] mm, step at -20 mm, COLOR_0 VEC4 float
+//   primitive 1 "Cloth" x in [-10,  10] mm, step at   0 mm, COLOR_0 VEC3 normalised unsigned byte
+//   primitive 2 "Wax"   x in [ 10,  30] mm, step at  20 mm, COLOR_0 VEC3 normalised unsigned short
+// z in [-20, 20] mm. Each primitive's UVs are its own third of the square
+// (u in [i/3, (i+1)/3]), so texture space can hold all three.
+struct MultiMaterialStrip {
+    static constexpr int kPrimitives = 3;
+    static constexpr float kWidthM = 0.02f;      // of one primitive, along x
+    static constexpr float kHalfDepthM = 0.02f;  // along z
+    static constexpr float kStepBandM = 1e-4f;
+    static constexpr const char* kNames[kPrimitives] = {"Skin", "Cloth", "Wax"};
+    static constexpr glm::vec4 kFactors[kPrimitives] = {
+        {0.9f, 0.7f, 0.6f, 1.0f}, {0.3f, 0.5f, 0.8f, 1.0f}, {0.8f, 0.8f, 0.7f, 1.0f}};
+    // [primitive][half]: the colour of its -x half, then its +x half; exact in their formats.
+    static constexpr glm::vec3 kColours[kPrimitives][2] = {{{1.0f, 0.8f, 0.7f}, {0.5f, 0.4f, 0.3f}},
+                                                           {{1.0f, 1.0f, 1.0f}, {0.2f, 0.6f, 0.4f}},
+                                                           {{1.0f, 1.0f, 1.0f}, {0.25f, 0.5f, 0.75f}}};
+    static float leftXM(int primitive) { return -0.03f + kWidthM * float(primitive); }
+};
+
+// Writes the multi-material strip as a .gltf with its buffer embedded.
+bool writeMultiMaterialStrip(const std::string& path, std::string* error = nullptr);
 
 }  // namespace dermis::test

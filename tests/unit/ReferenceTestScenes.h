@@ -23,8 +23,8 @@ inline Character proceduralCharacter(const std::string& name, const std::string&
 
 inline Model proceduralModelWithoutMaps(const std::string& name) {
     Model model = std::move(makeProceduralModel(name).value());
-    model.albedoMap = Image{};
-    model.normalMap = Image{};
+    model.materials[0].albedoMap = Image{};
+    model.materials[0].normalMap = Image{};
     return model;
 }
 
@@ -106,8 +106,8 @@ inline std::vector<Model> sphereSceneModels(bool maps) {
             albedo.texels.push_back((i + i / 4) % 2 ? glm::vec4(0.9f, 0.8f, 0.7f, 1.0f) : glm::vec4(0.6f, 0.5f, 0.5f, 1.0f));
             normal.texels.push_back(i % 3 ? glm::vec4(0.5f, 0.5f, 1.0f, 1.0f) : glm::vec4(0.7f, 0.4f, 0.9f, 1.0f));
         }
-        models[0].albedoMap = albedo;
-        models[0].normalMap = normal;
+        models[0].materials[0].albedoMap = albedo;
+        models[0].materials[0].normalMap = normal;
     }
     // The card: 4 cm square, a third of the way from the light to the sphere.
     const glm::vec3 centre = glm::vec3(-0.5f, 0.3f, 0.4f) * 0.6f;

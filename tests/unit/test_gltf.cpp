@@ -228,7 +228,7 @@ TEST_F(GltfTest, QuadWithEachIndexWidth) {
         EXPECT_EQ(model->mesh.indices, kQuadIndices);
         EXPECT_EQ(model->mesh.name, "quad");
         EXPECT_EQ(model->mesh.vertices[2].uv, glm::vec2(1.0f, 0.0f));
-        EXPECT_TRUE(model->albedoMap.empty());
+        EXPECT_TRUE(model->materials[0].albedoMap.empty());
         expectFramesValid(model->mesh);
         // Generated tangents follow +u (+X) with an unmirrored sign.
         for (const Vertex& v : model->mesh.vertices) EXPECT_EQ(v.tangent, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
@@ -397,15 +397,26 @@ TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
     Result<Model> model = loadGltf(path("textured.gltf").string());
     ASSERT_TRUE(model) << model.error().message();
     EXPECT_EQ(model->mesh.triangleCount(), 4u);
-    for (const Image* map : {&model->albedoMap, &model->normalMap, &model->metallicRoughnessMap}) {
+    // Each primitive keeps its material; the maps are the second one's.
+    ASSERT_EQ(model->materials.size(), 2u);
+    EXPECT_EQ(model->materials[0].name, "plain");
+    EXPECT_TRUE(model->materials[0].albedoMap.empty());
+    const ModelMaterial& skin = model->materials[1];
+    EXPECT_EQ(skin.name, "skin");
+    ASSERT_EQ(model->submeshes.size(), 2u);
+    EXPECT_EQ(model->submeshes[0].material, 0);
+    EXPECT_EQ(model->submeshes[1].material, 1);
+    EXPECT_EQ(model->submeshes[1].firstIndex, 6u);
+    EXPECT_EQ(model->submeshes[1].indexCount, 6u);
+    for (const Image* map : {&skin.albedoMap, &skin.normalMap, &skin.metallicRoughnessMap}) {
         EXPECT_EQ(map->width, 3);
         EXPECT_EQ(map->height, 2);
         ASSERT_FALSE(map->empty());
         EXPECT_NEAR(map->texels[0].y, 0.4f, 1.0f / 255.0f);
     }
-    EXPECT_EQ(model->albedoMap.colourSpace, ColourSpace::Srgb);
-    EXPECT_EQ(model->normalMap.colourSpace, ColourSpace::Linear);
-    EXPECT_EQ(model->metallicRoughnessMap.colourSpace, ColourSpace::Linear);
+    EXPECT_EQ(skin.albedoMap.colourSpace, ColourSpace::Srgb);
+    EXPECT_EQ(skin.normalMap.colourSpace, ColourSpace::Linear);
+    EXPECT_EQ(skin.metallicRoughnessMap.colourSpace, ColourSpace::Linear);
 
     fs::remove(path("normal map.png"));
     expectError(path("textured.gltf"), "normal map.png");
@@ -546,7 +557,7 @@ TEST_F(GltfTest, GlbAndGltfTruncatedAtManyOffsetsAreErrors) {
     writeBytes(path("whole.glb"), glb.data(), glb.size());
     Result<Model> whole = loadGltf(path("whole.glb").string());
     ASSERT_TRUE(whole) << whole.error().message();
-    EXPECT_EQ(whole->albedoMap.width, 4);
+    EXPECT_EQ(whole->materials[0].albedoMap.width, 4);
     for (size_t length : fuzz::truncationLengths(glb.size())) {
         SCOPED_TRACE("first " + std::to_string(length) + " bytes of the GLB");
         fs::path file = path("cut" + std::to_string(length) + ".glb");
@@ -688,21 +699,21 @@ TEST(GltfSharedContent, LeePerrySmithHead) {
     EXPECT_NEAR(size.x, 8.6f, 0.1f);
     EXPECT_NEAR(size.y, 7.9f, 0.1f);
     EXPECT_NEAR(size.z, 5.2f, 0.1f);
-    EXPECT_TRUE(plain->albedoMap.empty());
-    EXPECT_TRUE(plain->normalMap.empty());
+    EXPECT_TRUE(plain->materials[0].albedoMap.empty());
+    EXPECT_TRUE(plain->materials[0].normalMap.empty());
     expectFramesValid(plain->mesh);
 
     Result<Model> textured = loadGltf((dir / "LeePerrySmith_textured_flipV.glb").string());
     ASSERT_TRUE(textured) << textured.error().message();
     EXPECT_EQ(textured->mesh.vertices.size(), 9279u);
     EXPECT_EQ(textured->mesh.triangleCount(), 17684u);
-    EXPECT_EQ(textured->albedoMap.width, 1024);
-    EXPECT_EQ(textured->albedoMap.height, 1024);
-    EXPECT_EQ(textured->albedoMap.colourSpace, ColourSpace::Srgb);
-    EXPECT_EQ(textured->normalMap.width, 1024);
-    EXPECT_EQ(textured->normalMap.height, 1024);
-    EXPECT_EQ(textured->normalMap.colourSpace, ColourSpace::Linear);
-    EXPECT_TRUE(textured->metallicRoughnessMap.empty());
+    EXPECT_EQ(textured->materials[0].albedoMap.width, 1024);
+    EXPECT_EQ(textured->materials[0].albedoMap.height, 1024);
+    EXPECT_EQ(textured->materials[0].albedoMap.colourSpace, ColourSpace::Srgb);
+    EXPECT_EQ(textured->materials[0].normalMap.width, 1024);
+    EXPECT_EQ(textured->materials[0].normalMap.height, 1024);
+    EXPECT_EQ(textured->materials[0].normalMap.colourSpace, ColourSpace::Linear);
+    EXPECT_TRUE(textured->materials[0].metallicRoughnessMap.empty());
     expectFramesValid(textured->mesh);
 
     // With the V flip, the scan's UV mapping is unmirrored almost everywhere.

@@ -268,8 +268,8 @@ TEST(ProceduralModels, UnknownNameIsAnError) {
 
 TEST(ProceduralModels, TestShapesHaveNoMaps) {
     for (const char* name : {"plane", "sphere", "wedge"}) {
-        EXPECT_TRUE(model(name).albedoMap.empty()) << name;
-        EXPECT_TRUE(model(name).normalMap.empty()) << name;
+        EXPECT_TRUE(model(name).materials[0].albedoMap.empty()) << name;
+        EXPECT_TRUE(model(name).materials[0].normalMap.empty()) << name;
     }
 }
 
@@ -391,7 +391,7 @@ TEST(ProceduralHead, EarsAreThin) {
 }
 
 TEST(ProceduralHead, AlbedoMapIsVariedSrgbSkin) {
-    const Image& albedo = model("head").albedoMap;
+    const Image& albedo = model("head").materials[0].albedoMap;
     ASSERT_EQ(albedo.width, 1024);
     ASSERT_EQ(albedo.height, 1024);
     EXPECT_EQ(albedo.colourSpace, ColourSpace::Srgb);
@@ -417,7 +417,7 @@ glm::vec3 albedoNear(const glm::vec3& pointM) {
     const Vertex* nearest = &head.mesh.vertices.front();
     for (const Vertex& v : head.mesh.vertices)
         if (glm::distance(v.position, pointM) < glm::distance(nearest->position, pointM)) nearest = &v;
-    const Image& albedo = head.albedoMap;
+    const Image& albedo = head.materials[0].albedoMap;
     glm::vec3 sum(0.0f);
     // A 5x5 average, to see the region's colour rather than its mottling.
     for (int dy = -2; dy <= 2; ++dy) {
@@ -440,7 +440,7 @@ TEST(ProceduralHead, AlbedoFeaturesLandWhereTheMeshPutsThem) {
 }
 
 TEST(ProceduralHead, NormalMapHoldsUnitNormalsFacingOut) {
-    const Image& normals = model("head").normalMap;
+    const Image& normals = model("head").materials[0].normalMap;
     ASSERT_EQ(normals.width, 2048);
     ASSERT_EQ(normals.height, 2048);
     EXPECT_EQ(normals.colourSpace, ColourSpace::Linear);

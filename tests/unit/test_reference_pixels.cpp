@@ -117,7 +117,7 @@ TEST(ReferencePixels, MapsAreReadAtThePixelFootprint) {
     for (int i = 0; i < kSize * kSize; ++i) {
         checker.texels.push_back(glm::vec4(glm::vec3((i % kSize + i / kSize) % 2 ? 0.8f : 0.2f), 1.0f));
     }
-    models[0].albedoMap = checker;
+    models[0].materials[0].albedoMap = checker;
     for (int spp : {1, 4}) {
         reference::ReferenceOptions options;
         options.samplesPerPixel = spp;
@@ -154,7 +154,7 @@ TEST(ReferencePixels, SubSamplesConvergeOnTheEdgeCoverage) {
     for (int i = 0; i < 256; ++i) {
         checker.texels.push_back((i % 16 + i / 16) % 2 ? glm::vec4(0.9f, 0.5f, 0.3f, 1.0f) : glm::vec4(0.3f, 0.6f, 0.9f, 1.0f));
     }
-    models[0].albedoMap = checker;
+    models[0].materials[0].albedoMap = checker;
 
     // The plane's corners projected to pixel coordinates (y down), counter-clockwise there.
     const glm::mat4 clipFromWorld =

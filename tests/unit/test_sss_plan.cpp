@@ -53,7 +53,7 @@ TEST(SssPlan, NearHeadSkipsOnlyTheSubPixelIdentityGaussian) {
     const SssSlotPlan& slot = plan->slots[0];
     EXPECT_TRUE(slot.visible);
     EXPECT_EQ(slot.slot, 1);
-    EXPECT_EQ(plan->slotOfCharacter[0], 1);
+    EXPECT_EQ(plan->slotOf(0, 0), 1);
     ASSERT_EQ(slot.steps.size(), 6u);
     EXPECT_TRUE(slot.steps[0].skipped);  // 0.0064 mm^2: the identity at this distance
     EXPECT_FALSE(slot.steps[5].skipped);
@@ -129,7 +129,7 @@ TEST(SssPlan, OffScreenAndOpaqueCharactersRunNothing) {
     auto opaque = planSss(headScene("none"), {kHeadBounds}, viewFrom(0.45f));
     ASSERT_TRUE(opaque.ok());
     EXPECT_TRUE(opaque->slots.empty());
-    EXPECT_EQ(opaque->slotOfCharacter[0], 0);
+    EXPECT_EQ(opaque->slotOf(0, 0), 0);
 }
 
 TEST(SssPlan, CharactersSharingAProfileShareASlot) {
@@ -141,7 +141,7 @@ TEST(SssPlan, CharactersSharingAProfileShareASlot) {
     auto plan = planSss(scene, {kHeadBounds, kHeadBounds, kHeadBounds}, viewFrom(0.45f));
     ASSERT_TRUE(plan.ok());
     EXPECT_EQ(plan->slots.size(), 2u);
-    EXPECT_EQ(plan->slotOfCharacter, (std::vector<int>{1, 1, 2}));
+    EXPECT_EQ(plan->slotsOfCharacter, (std::vector<std::vector<int>>{{1}, {1}, {2}}));
 }
 
 TEST(SssPlan, UnknownProfileIsAnError) {

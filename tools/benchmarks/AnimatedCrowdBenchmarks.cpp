@@ -1,4 +1,4 @@
-// 32 animated characters sharing the skin pixels of one (issue 14's goal: the
+// 32 animated characters sharing the skin pixels of one (the goal: the
 // screen-space SSS cost within 1.1x of one, and the skinning cost per
 // character): the bending cylinder of the tests (out/content, written by
 // build/tests/dermis_test_content) once at scale 4, and 32 times at scale

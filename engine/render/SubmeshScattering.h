@@ -1,0 +1,31 @@
+#pragma once
+// How each submesh of a character scatters light: the diffusion profile and
+// width scale of the scene material its glTF material name resolves to
+// (Scene.h characterMaterial). Both SSS planners (render/SssPlan.h,
+// render/TsPlan.h) group submeshes by it.
+
+#include "core/Result.h"
+#include "scene/Scene.h"
+#include "sss/DiffusionProfile.h"
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+struct SubmeshScattering {
+    const DiffusionProfile* profile = nullptr;  // null: opaque ("none")
+    float widthScale = 1.0f;                    // settings.sss.widthScale x the material's width_scale
+
+    bool sameAs(const SubmeshScattering& other) const {
+        return profile == other.profile && widthScale == other.widthScale;
+    }
+};
+
+// One entry per submesh; `materialNames` are the glTF material names of the
+// character's submeshes (empty: one submesh with the character's material).
+// Errors name the character and the unknown profile.
+Result<std::vector<SubmeshScattering>> submeshScattering(const Scene& scene, size_t character,
+                                                         const std::vector<std::string>& materialNames);
+
+}  // namespace dermis
