@@ -1,5 +1,7 @@
 #include "reference/ReferenceRenderer.h"
 
+#include "import/CharacterPose.h"
+
 #include "core/Log.h"
 #include "reference/ParallelFor.h"
 #include "import/ModelLoader.h"
@@ -26,9 +28,11 @@ glm::vec3 sanitize(const glm::vec3& c) {
 
 Result<ReferenceRenderer> ReferenceRenderer::load(const Scene& scene, const ReferenceOptions& options) {
     std::vector<Model> models;
-    for (const Character& character : scene.characters) {
-        auto model = loadCharacterModel(character);
+    for (size_t c = 0; c < scene.characters.size(); ++c) {
+        auto model = loadCharacterModel(scene.characters[c]);
         if (!model.ok()) return model.error();
+        // Animated characters as the engine's frame at time 0 shows them.
+        if (const Status posed = poseModelAt(scene, c, 0.0f, *model); !posed.ok()) return posed.error();
         models.push_back(std::move(*model));
     }
     return create(scene, std::move(models), options);

@@ -100,9 +100,7 @@ Status poseCharacter(const Scene& scene, const SceneGeometry& geometry, size_t i
     const Character& character = scene.characters[index];
     const CharacterAnimation& animation = character.animation;
     placement.animated = true;
-    placement.clipTimeS =
-        clip < 0 ? 0.0f
-                 : clipTime(animation.timeS + animation.speed * timeS, rig.clips[static_cast<size_t>(clip)].durationS(), animation.loop);
+    placement.clipTimeS = characterClipTime(animation, rig, clip, timeS);
     placement.pose = poseRig(rig, clip, placement.clipTimeS);
     placement.skinPassName = "skin:" + character.name + "#" + std::to_string(index);
     rigPoseBounds(rig, placement.pose, objectBounds.min, objectBounds.max);

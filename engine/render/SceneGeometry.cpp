@@ -22,20 +22,6 @@ Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
     return models;
 }
 
-Result<int> resolveAnimationClip(const Scene& scene, size_t index, const Rig& rig) {
-    const Character& character = scene.characters[index];
-    const std::string& name = character.animation.clip;
-    if (name == kRestPoseClip || (name.empty() && rig.clips.empty())) return -1;
-    if (name.empty()) return 0;
-    const int clip = rig.findClip(name);
-    if (clip < 0) {
-        const std::string source = character.mesh.gltfPath.empty() ? "its mesh" : character.mesh.gltfPath;
-        return makeError(scene.path, "/characters/" + std::to_string(index) + "/animation/clip: '" + name +
-                                         "' is not a clip of " + source + " (its clips: " + rig.clipList() + ")");
-    }
-    return clip;
-}
-
 SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
     for (const Model& model : models) {
         std::vector<std::string> names;

@@ -10,6 +10,7 @@
 //   FramePlan plan = *planFrame(scene, geometry, request, shadowCache);
 
 #include "core/Result.h"
+#include "import/CharacterPose.h"
 #include "mesh/Mesh.h"
 #include "mesh/Model.h"
 #include "scene/Scene.h"
@@ -28,9 +29,6 @@ namespace dermis {
 // animation clip the model does not have (the message lists those it has).
 Result<std::vector<Model>> loadSceneModels(const Scene& scene);
 
-// The clip a character's animation plays: an index into its rig's clips, or
-// -1 for the rest pose (no clips, or clip "none").
-Result<int> resolveAnimationClip(const Scene& scene, size_t character, const Rig& rig);
 
 class SceneGeometry {
 public:

@@ -2,6 +2,7 @@
 // and the rig, against closed forms of its construction.
 #include "TestContent.h"
 #include "anim/Rig.h"
+#include "import/CharacterPose.h"
 #include "import/GltfLoader.h"
 
 #include <gtest/gtest.h>
@@ -89,6 +90,33 @@ TEST_F(SkinnedCylinder, HalfWayThroughTheClipMatchesTheClosedForm) {
     // The tip's normals turn with it.
     const glm::vec3 n = deformed.normals[index(tip, 0)];
     EXPECT_NEAR(glm::distance(n, bent(glm::vec3(1, 0, 0), angle) - bent(glm::vec3(0), angle)), 0.0f, 1e-6f);
+}
+
+// What the CPU reference renders (import/CharacterPose.h): the character
+// posed as the frame shows it. time_s 0.5 at speed 2 and frame time 0.25 s
+// is clip time 1 s, the full 90-degree bend.
+TEST_F(SkinnedCylinder, CpuCopyIsPosedAtTheFramesClipTime) {
+    Scene scene;
+    scene.path = "scene.json";
+    Character character;
+    character.animation.clip = "bend";
+    character.animation.timeS = 0.5f;
+    character.animation.speed = 2.0f;
+    scene.characters.push_back(character);
+    Model model = *sModel;
+    ASSERT_TRUE(poseModelAt(scene, 0, 0.25f, model).ok());
+    const int tip = BendingCylinder::kRings - 1;
+    float worst = 0.0f;
+    for (int column = 0; column <= BendingCylinder::kSegments; ++column)
+        worst = std::max(worst, glm::distance(model.mesh.vertices[index(tip, column)].position,
+                                              bent(restPosition(tip, column), BendingCylinder::kBendDeg)));
+    EXPECT_LT(worst, 1e-6f);
+    // An unknown clip is the scene's error, as the renderer gives it.
+    scene.characters[0].animation.clip = "wave";
+    const Status unknown = poseModelAt(scene, 0, 0.0f, model);
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_NE(unknown.error().message().find("scene.json: /characters/0/animation/clip: 'wave' is not a clip"), std::string::npos)
+        << unknown.error().message();
 }
 
 TEST_F(SkinnedCylinder, PoseBoundsHoldEveryVertexAtEveryTime) {
