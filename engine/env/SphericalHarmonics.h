@@ -1,0 +1,59 @@
+#pragma once
+// Nine-coefficient (bands 0-2) spherical harmonics of environment light,
+// after Ramamoorthi & Hanrahan 2001: projection of a latitude-longitude map
+// with each texel weighted by its exact solid angle, the irradiance of the
+// projected light, and rotation of the coefficients (Chappuis 2011 §3.4).
+//
+// Basis (real, orthonormal; direction d = (x, y, z), unit):
+//   Y00 = 0.282095
+//   Y1-1 = 0.488603 y,  Y10 = 0.488603 z,  Y11 = 0.488603 x
+//   Y2-2 = 1.092548 xy, Y2-1 = 1.092548 yz, Y20 = 0.315392 (3z^2 - 1),
+//   Y21 = 1.092548 xz,  Y22 = 0.546274 (x^2 - y^2)
+// in that order (index l^2 + l + m).
+//
+// Irradiance (Ramamoorthi & Hanrahan 2001, eq. 7-8): E(n) = sum_lm A_l L_lm
+// Y_lm(n), with A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4: the clamped cosine's
+// band-limited convolution.
+//
+// Rotation: band l's coefficients transform by a (2l+1)^2 matrix. Chappuis
+// 2011 §3.4 builds it from Z and X(+-90 degree) factors of a ZYZ rotation;
+// here each band's matrix is solved from 2l+1 sample directions instead (the
+// band is closed under rotation, so its coefficients are fixed exactly by
+// the values at any 2l+1 directions where the basis is independent): the
+// same matrix, for any rotation, without Euler angles.
+//
+// Lat-long layout: column u covers longitude phi = 2 pi (u + 0.5) / W about
+// +Y (the up axis), row v colatitude theta = pi (v + 0.5) / H from +Y (row 0
+// at the top); d = (sin theta sin phi, cos theta, sin theta cos phi).
+
+#include "core/Image.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+
+namespace dermis {
+
+constexpr int kShCoefficients = 9;
+
+struct Sh9 {
+    std::array<glm::vec3, kShCoefficients> coefficients{};  // RGB per basis function
+};
+
+std::array<float, kShCoefficients> shBasis(const glm::vec3& direction);
+
+// The unit direction of a lat-long texel's centre, and its exact solid angle.
+glm::vec3 latLongDirection(int u, int v, int width, int height);
+float latLongTexelSolidAngle(int v, int width, int height);
+
+// Projects the map's RGB radiance: L_lm = sum over texels of L Y_lm d_omega.
+Sh9 projectLatLong(const Image& map);
+
+// Irradiance at normal n of the band-limited light.
+glm::vec3 shIrradiance(const Sh9& light, const glm::vec3& normal);
+
+// The coefficients of the light rotated by `rotation` (a rotation matrix):
+// rotated(d) = light(rotation^T d).
+Sh9 rotateSh(const Sh9& light, const glm::mat3& rotation);
+
+}  // namespace dermis
