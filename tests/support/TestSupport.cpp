@@ -52,4 +52,12 @@ std::string contentDir() { return DERMIS_SOURCE_CONTENT_DIR; }
 std::string contentScene(const std::string& name) { return contentDir() + "/scenes/" + name; }
 std::string sharedContentDir() { return DERMIS_SHARED_CONTENT_DIR; }
 
+Image solidImage(int width, int height, float value) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height), glm::vec4(value, value, value, 1.0f));
+    return image;
+}
+
 }  // namespace dermis::test

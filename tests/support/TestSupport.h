@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers for the GL and command-line tests.
 
+#include "core/Image.h"
+
 #include <filesystem>
 #include <string>
 
@@ -35,5 +37,8 @@ std::string readTextFile(const std::string& path);
 std::string contentDir();  // the project's content/
 std::string contentScene(const std::string& name);  // content/scenes/<name>
 std::string sharedContentDir();  // ../shared/content (may not exist)
+
+// A width x height image of one grey value (alpha 1).
+Image solidImage(int width, int height, float value);
 
 }  // namespace dermis::test

@@ -1,26 +1,18 @@
 // Image comparison figures and the false-colour difference image.
 #include "core/ImageMetrics.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace dermis;
 
-namespace {
-
-Image solid(int width, int height, float value) {
-    Image image;
-    image.width = width;
-    image.height = height;
-    image.texels.assign(static_cast<size_t>(width * height), glm::vec4(value, value, value, 1.0f));
-    return image;
-}
-
-}  // namespace
+using test::solidImage;
 
 TEST(ImageMetrics, IdenticalImagesHaveNoError) {
-    const Image a = solid(8, 4, 0.5f);
+    const Image a = solidImage(8, 4, 0.5f);
     auto d = compareImages(a, a);
     ASSERT_TRUE(d.ok());
     EXPECT_EQ(d->pixels, 32u);
@@ -32,7 +24,7 @@ TEST(ImageMetrics, IdenticalImagesHaveNoError) {
 }
 
 TEST(ImageMetrics, KnownDifferenceGivesTheClosedForms) {
-    const Image reference = solid(4, 4, 1.0f);
+    const Image reference = solidImage(4, 4, 1.0f);
     Image test = reference;
     for (size_t i = 0; i < 8; ++i) test.texels[i] = glm::vec4(1.1f, 1.1f, 1.1f, 1.0f);  // half the pixels off by 0.1
     auto d = compareImages(reference, test);
@@ -44,7 +36,7 @@ TEST(ImageMetrics, KnownDifferenceGivesTheClosedForms) {
 }
 
 TEST(ImageMetrics, MaskSelectsThePixels) {
-    const Image reference = solid(4, 1, 1.0f);
+    const Image reference = solidImage(4, 1, 1.0f);
     Image test = reference;
     test.texels[3] = glm::vec4(5.0f);
     std::vector<uint8_t> mask = {1, 1, 1, 0};
@@ -55,13 +47,13 @@ TEST(ImageMetrics, MaskSelectsThePixels) {
 }
 
 TEST(ImageMetrics, BadInputsAreErrors) {
-    EXPECT_FALSE(compareImages(solid(4, 4, 1.0f), solid(4, 3, 1.0f)).ok());
-    EXPECT_FALSE(compareImages(solid(4, 4, 1.0f), solid(4, 4, 1.0f), std::vector<uint8_t>(3, 1)).ok());
-    EXPECT_FALSE(compareImages(solid(4, 4, 1.0f), solid(4, 4, 1.0f), std::vector<uint8_t>(16, 0)).ok());
+    EXPECT_FALSE(compareImages(solidImage(4, 4, 1.0f), solidImage(4, 3, 1.0f)).ok());
+    EXPECT_FALSE(compareImages(solidImage(4, 4, 1.0f), solidImage(4, 4, 1.0f), std::vector<uint8_t>(3, 1)).ok());
+    EXPECT_FALSE(compareImages(solidImage(4, 4, 1.0f), solidImage(4, 4, 1.0f), std::vector<uint8_t>(16, 0)).ok());
 }
 
 TEST(ImageMetrics, NonFiniteTexelsAreInfinitelyWrong) {
-    const Image reference = solid(2, 2, 1.0f);
+    const Image reference = solidImage(2, 2, 1.0f);
     Image test = reference;
     test.texels[1].g = NAN;
     auto d = compareImages(reference, test);
@@ -72,12 +64,12 @@ TEST(ImageMetrics, NonFiniteTexelsAreInfinitelyWrong) {
 }
 
 TEST(ImageMetrics, PercentileOfDifferences) {
-    const Image reference = solid(10, 10, 0.0f);
+    const Image reference = solidImage(10, 10, 0.0f);
     Image test = reference;
     for (size_t i = 0; i < test.texels.size(); ++i) test.texels[i].g = float(i) / 100.0f;
     EXPECT_NEAR(differencePercentile(reference, test, {}, 0.5), 0.49, 1e-6);
     EXPECT_NEAR(differencePercentile(reference, test, {}, 1.0), 0.99, 1e-6);
-    EXPECT_EQ(differencePercentile(reference, solid(2, 2, 0.0f), {}, 0.5), 0.0);
+    EXPECT_EQ(differencePercentile(reference, solidImage(2, 2, 0.0f), {}, 0.5), 0.0);
 }
 
 TEST(ImageMetrics, NiceNumbersRoundUp) {
@@ -90,7 +82,7 @@ TEST(ImageMetrics, NiceNumbersRoundUp) {
 }
 
 TEST(ImageMetrics, HeatmapHasAScaleBarAndGreyOutsideTheMask) {
-    const Image reference = solid(100, 50, 1.0f);
+    const Image reference = solidImage(100, 50, 1.0f);
     Image test = reference;
     test.at(10, 10) = glm::vec4(1.3f, 1.0f, 1.0f, 1.0f);
     std::vector<uint8_t> mask(reference.texels.size(), 1);
