@@ -27,12 +27,7 @@ Status poseModelAt(const Scene& scene, size_t character, float frameTimeS, Model
     auto clip = resolveAnimationClip(scene, character, model.rig);
     if (!clip.ok()) return clip.error();
     const float clipTimeS = characterClipTime(scene.characters[character].animation, model.rig, *clip, frameTimeS);
-    const SkinnedVertices posed = deformRig(model.rig, poseRig(model.rig, *clip, clipTimeS));
-    for (size_t v = 0; v < model.mesh.vertices.size() && v < posed.positions.size(); ++v) {
-        model.mesh.vertices[v].position = posed.positions[v];
-        model.mesh.vertices[v].normal = posed.normals[v];
-        model.mesh.vertices[v].tangent = posed.tangents[v];
-    }
+    setVertexFrames(model.mesh, deformRig(model.rig, poseRig(model.rig, *clip, clipTimeS)));
     return success();
 }
 

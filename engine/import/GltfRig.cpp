@@ -363,12 +363,7 @@ Rig GltfRigBuilder::finish(MeshData& mesh) {
         mRig.bind.tangents.push_back(v.tangent);
     }
     mRig.computeEntryBounds();
-    const SkinnedVertices rest = deformRig(mRig, poseRig(mRig, -1, 0.0f));
-    for (size_t i = 0; i < count; ++i) {
-        mesh.vertices[i].position = rest.positions[i];
-        mesh.vertices[i].normal = rest.normals[i];
-        mesh.vertices[i].tangent = rest.tangents[i];
-    }
+    setVertexFrames(mesh, deformRig(mRig, poseRig(mRig, -1, 0.0f)));
     return std::move(mRig);
 }
 

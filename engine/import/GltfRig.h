@@ -22,7 +22,7 @@
 #include "anim/Rig.h"
 #include "core/Result.h"
 #include "import/GltfAccessors.h"
-#include "mesh/Mesh.h"
+#include "mesh/Model.h"
 
 #include <tiny_gltf.h>
 

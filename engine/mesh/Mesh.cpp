@@ -20,4 +20,12 @@ std::vector<Submesh> Model::drawRanges() const {
     return {Submesh{0, static_cast<uint32_t>(mesh.indices.size()), 0}};
 }
 
+void setVertexFrames(MeshData& mesh, const SkinnedVertices& frames) {
+    for (size_t v = 0; v < mesh.vertices.size() && v < frames.positions.size(); ++v) {
+        mesh.vertices[v].position = frames.positions[v];
+        mesh.vertices[v].normal = frames.normals[v];
+        mesh.vertices[v].tangent = frames.tangents[v];
+    }
+}
+
 }  // namespace dermis

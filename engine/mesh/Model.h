@@ -47,4 +47,8 @@ struct Model {
     std::vector<Submesh> drawRanges() const;
 };
 
+// Writes positions, normals and tangents (a pose of the rig, or its bind
+// vertices) into the mesh's vertices, keeping their UVs; the counts match.
+void setVertexFrames(MeshData& mesh, const SkinnedVertices& frames);
+
 }  // namespace dermis

@@ -30,18 +30,8 @@ void skin(const FrameContext& frame, size_t index) {
     for (const auto& [binding, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
     glUseProgram(frame.gl->programs->skinning.get());
     const auto groups = static_cast<GLuint>((rig.vertexCount + DERMIS_SKINNING_GROUP_SIZE - 1) / DERMIS_SKINNING_GROUP_SIZE);
-    glDispatchCompute(groups, 1, 1);
     // The passes after it read the buffer as vertex attributes.
-    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-    // llvmpipe leaves the GL_TIME_ELAPSED query after one that held only a
-    // dispatch without a start time (the next pass then reports the time
-    // since boot); a clear inside this pass's query gives it one. Clearing
-    // the 1x1 white input to white changes nothing.
-    gl::Attachments attachments;
-    attachments.colour[0] = frame.gl->whiteTexture;
-    frame.gl->framebuffers->bind(attachments);
-    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearBufferfv(GL_COLOR, 0, white);
+    frame.gl->dispatchCompute(groups, GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
 }
 
 // Some pass draws the character this frame: the G-buffer (it is on screen) or

@@ -26,6 +26,20 @@ void FrameServices::drawRegions(const std::vector<glm::ivec4>& regions) const {
     glDrawArrays(GL_TRIANGLES, 0 + 3, static_cast<GLsizei>(6 * count));
 }
 
+void FrameServices::dispatchCompute(GLuint groups, GLbitfield barriers) const {
+    glDispatchCompute(groups, 1, 1);
+    glMemoryBarrier(barriers);
+    // llvmpipe leaves the GL_TIME_ELAPSED query after one that held only a
+    // dispatch without a start time (the next pass then reports the time
+    // since boot); a clear inside this pass's query gives it one. Clearing
+    // the 1x1 white input to white changes nothing.
+    gl::Attachments attachments;
+    attachments.colour[0] = whiteTexture;
+    framebuffers->bind(attachments);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, white);
+}
+
 void FrameServices::uploadObject(const gpu::ObjectBlock& block) const {
     glNamedBufferSubData(objectUniforms, 0, sizeof block, &block);
 }

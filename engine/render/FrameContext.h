@@ -43,6 +43,9 @@ struct FrameServices {
     // shaders/fullscreen.vert.
     void drawRegions(const std::vector<glm::ivec4>& regions) const;
     void uploadObject(const gpu::ObjectBlock& block) const;
+    // Runs the bound compute program over `groups` work groups, then a memory
+    // barrier of `barriers` for the passes that read what it wrote.
+    void dispatchCompute(GLuint groups, GLbitfield barriers) const;
     // Copies `size` bytes to the per-pass block; it must be at most kMaxPassBlockBytes.
     void uploadPassBlock(const void* data, size_t size) const;
 };

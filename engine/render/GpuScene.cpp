@@ -79,11 +79,7 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
     if (rig.empty()) return gpu;
     const size_t count = mesh.vertices.size();
     MeshData bind = mesh;
-    for (size_t v = 0; v < count; ++v) {
-        bind.vertices[v].position = rig.bind.positions[v];
-        bind.vertices[v].normal = rig.bind.normals[v];
-        bind.vertices[v].tangent = rig.bind.tangents[v];
-    }
+    setVertexFrames(bind, rig.bind);
     const UvLayout derivatives = analyseUvDerivatives(bind);
     std::vector<SkinSourceVertex> source(count);
     std::vector<SkinInfluenceGpu> influences(count);

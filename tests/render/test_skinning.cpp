@@ -174,7 +174,7 @@ TEST_F(Skinning, CharacterNoPassDrawsIsNotSkinned) {
 
 // On llvmpipe a GL_TIME_ELAPSED query holding only a compute dispatch left
 // the next pass's query without a start: the shadow pass reported the time
-// since boot (hours). passes/SkinningPass.cpp works around it; without the
+// since boot (hours). FrameServices::dispatchCompute (render/FrameContext.h) works around it; without the
 // workaround this test sees over 1e6 ms.
 TEST_F(Skinning, PassAfterTheSkinPassHasASaneGpuTime) {
     load((mDir / "cylinder.json").string());

@@ -71,11 +71,6 @@ size_t skinPixels(Renderer& renderer) {
     return size_t(std::count_if(image->texels.begin(), image->texels.end(), [](const glm::vec4& t) { return t.r > 0.0f; }));
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : v[v.size() / 2];
-}
-
 void animatedCrowd(benchmark::State& state) {
     context();
     if (!std::filesystem::exists(cylinderPath())) {

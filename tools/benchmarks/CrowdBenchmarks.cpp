@@ -35,11 +35,6 @@ struct CrowdCase {
     std::vector<double> wallMs;
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : v[v.size() / 2];
-}
-
 Image finalImage(Renderer& renderer) {
     (void)renderer.renderFrame({kWidth, kHeight, Aov::Final});
     auto image = renderer.readOutput();
