@@ -59,6 +59,14 @@ constexpr double kMaxMetresPerMeshUnit = 1e6;
 constexpr double kMaxAnimationTimeS = 1e6;
 constexpr double kMaxAnimationSpeed = 1e3;
 
+// Environment light (Scene::environment): SH bands 1..3 (1, 4 or 9
+// coefficients, Ramamoorthi & Hanrahan 2001), and an intensity that keeps the
+// map's radiance inside the same float32 headroom as a light's.
+constexpr int kMaxShBands = 3;
+constexpr double kMaxEnvironmentIntensity = kMaxLightRadiance;
+constexpr double kMaxEnvironmentSpeedDegPerS = 1e4;
+constexpr double kMaxEnvironmentAngleDeg = 1e6;
+
 // Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
 constexpr int kMinTsSize = 64;
 constexpr int kMaxTsSize = 4096;

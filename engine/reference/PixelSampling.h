@@ -9,12 +9,18 @@
 // nothing else (not on threads). One sample per pixel is the pixel centre, as
 // the engine rasterises.
 
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
 
 #include <vector>
+
+namespace dermis::reference {
+using raytrace::Bvh;
+using raytrace::BvhHit;
+using raytrace::Ray;
+}  // namespace dermis::reference
 
 namespace dermis::reference {
 

@@ -20,7 +20,7 @@
 //   of the light's centre, as in the renderer. A delta light casts one ray.
 // Transmittance (back-lit light through thin parts) is not part of E.
 
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 #include "reference/CharacterSurface.h"
 #include "scene/Scene.h"
 
@@ -28,6 +28,12 @@
 
 #include <cstdint>
 #include <vector>
+
+namespace dermis::reference {
+using raytrace::Bvh;
+using raytrace::BvhHit;
+using raytrace::Ray;
+}  // namespace dermis::reference
 
 namespace dermis::reference {
 

@@ -3,13 +3,17 @@
 #include "import/CharacterPose.h"
 
 #include "core/Log.h"
-#include "reference/ParallelFor.h"
+#include "raytrace/ParallelFor.h"
 #include "import/ModelLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
+
+namespace dermis::reference {
+using raytrace::parallelFor;
+}  // namespace dermis::reference
 
 namespace dermis::reference {
 namespace {

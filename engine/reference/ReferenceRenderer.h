@@ -30,7 +30,7 @@
 
 #include "core/Image.h"
 #include "core/Result.h"
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 #include "reference/CharacterSurface.h"
 #include "reference/DiffusionIntegrator.h"
 #include "reference/EngineIrradiance.h"
@@ -44,6 +44,12 @@
 #include <limits>
 #include <memory>
 #include <vector>
+
+namespace dermis::reference {
+using raytrace::Bvh;
+using raytrace::BvhHit;
+using raytrace::Ray;
+}  // namespace dermis::reference
 
 namespace dermis::reference {
 

@@ -2,7 +2,11 @@
 // for splitting error maps into thin and thick regions (docs/reference.md).
 #include "reference/ReferenceRenderer.h"
 
-#include "reference/ParallelFor.h"
+#include "raytrace/ParallelFor.h"
+
+namespace dermis::reference {
+using raytrace::parallelFor;
+}  // namespace dermis::reference
 
 namespace dermis::reference {
 namespace {

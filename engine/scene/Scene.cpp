@@ -14,6 +14,17 @@ glm::mat4 Transform::worldFromObject(float metresPerUnit) const {
     return t * rz * ry * rx * s;
 }
 
+bool isBuiltInEnvironment(const std::string& source) {
+    for (std::string_view name : kBuiltInEnvironments)
+        if (source == name) return true;
+    return false;
+}
+
+glm::mat3 Environment::worldFromMap(float timeS) const {
+    const float angleDeg = rotation.angleDeg + rotation.speedDegPerS * timeS;
+    return glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(angleDeg), rotation.axis));
+}
+
 const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName) {
     const auto found = character.materials.find(gltfMaterialName);
     return found == character.materials.end() ? character.material : found->second;

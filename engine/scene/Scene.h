@@ -112,6 +112,35 @@ struct Background {
     glm::vec3 colour{0.05f, 0.05f, 0.06f};  // linear RGB radiance behind everything
 };
 
+// Environment light (docs/environment.md): a lat-long radiance map around the
+// scene, for diffuse light through nine SH coefficients (Ramamoorthi &
+// Hanrahan 2001) and specular light through a prefiltered map. Absent from a
+// scene (source empty), the frame has the uniform settings.ambient only.
+// The environments the engine makes itself (env/EnvironmentMap.h), so that a
+// scene needs no file; any other `source` is a map file.
+inline constexpr std::string_view kBuiltInEnvironments[] = {"sky", "studio"};
+bool isBuiltInEnvironment(const std::string& source);
+
+struct EnvironmentRotation {
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};  // normalised by the loader
+    float angleDeg = 0.0f;              // at time 0
+    float speedDegPerS = 0.0f;          // the angle grows by this per second of scene time
+};
+
+struct Environment {
+    std::string source;  // empty: none; a built-in (kBuiltInEnvironments) or a map file (resolved path)
+    float intensity = 1.0f;  // multiplies the map's radiance
+    EnvironmentRotation rotation;  // world(d) = R map(d): the map turned about `axis` by the angle
+    bool background = true;        // draw the map behind everything (the skybox pass), else background.colour
+    EnvironmentOcclusion occlusion = EnvironmentOcclusion::Transfer;  // what darkens the environment's diffuse light
+    EnvironmentSpecular specular = EnvironmentSpecular::Prefiltered;
+    int shBands = kMaxShBands;  // SH bands of the diffuse light, 1..3 (1, 4 or 9 coefficients)
+
+    bool enabled() const { return !source.empty(); }
+    // The rotation from map directions to world directions at scene time t.
+    glm::mat3 worldFromMap(float timeS) const;
+};
+
 // Screen-space SSS (docs/screen-space.md, step 6; Chappuis 2011 §2.2.4, Vila Verde 2015 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
@@ -180,6 +209,7 @@ struct Scene {
     std::vector<Character> characters;
     std::vector<DiffusionProfile> profiles;  // user profiles, by name; never "skin", "marble" or "none"
     Background background;
+    Environment environment;
     RenderSettings settings;
 };
 

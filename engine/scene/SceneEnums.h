@@ -65,6 +65,31 @@ inline constexpr EnumTable<ShadowFilter, 3> kShadowFilters{
       {ShadowFilter::Pcss, "pcss",
        "penumbrae as wide as the light's size implies (Fernando 2005); pcf4x4 for a delta light"}}}};
 
+// What darkens the environment's diffuse light where the character hides it
+// from itself (docs/environment.md, "Occlusion"). SSAO then darkens only the
+// uniform ambient, never the same light twice.
+enum class EnvironmentOcclusion { None, Ssao, Transfer };
+
+inline constexpr EnumTable<EnvironmentOcclusion, 3> kEnvironmentOcclusions{
+    "environment occlusion",
+    {{{EnvironmentOcclusion::None, "none", "unoccluded SH irradiance at the pixel's normal"},
+      {EnvironmentOcclusion::Ssao, "ssao", "SH irradiance at the pixel's normal times the SSAO"},
+      {EnvironmentOcclusion::Transfer, "transfer",
+       "per-vertex SH transfer of visibility x cosine (Chappuis 2011 §3.3)"}}}};
+
+// The environment's specular light.
+enum class EnvironmentSpecular { Off, Sh, Prefiltered };
+
+inline constexpr EnumTable<EnvironmentSpecular, 3> kEnvironmentSpeculars{
+    "environment specular",
+    {{{EnvironmentSpecular::Off, "off", "no specular from the environment"},
+      {EnvironmentSpecular::Sh, "sh", "the SH light's radiance towards the reflection (cheap, blurry)"},
+      {EnvironmentSpecular::Prefiltered, "prefiltered",
+       "the map prefiltered per roughness for the Beckmann lobe, split sum"}}}};
+
+static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne(),
+              "every value and every name appears once");
+
 static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssVariants.isOneToOne() &&
                   kSssBlurs.isOneToOne() && kShadowFilters.isOneToOne(),
               "every value and every name appears once");

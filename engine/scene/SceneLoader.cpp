@@ -373,6 +373,40 @@ void readBackground(JsonObject& root, Background& background) {
     object.vec3("colour", background.colour, Range::closed(0.0, kMaxLightRadiance));
 }
 
+void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment& environment) {
+    const json* value = root.member("environment");
+    if (value == nullptr) {
+        return;
+    }
+    JsonObject object(root.context(), *value, root.pointer("environment"),
+                      {"source", "intensity", "rotation", "background", "occlusion", "specular", "sh_bands"});
+    std::string source;
+    object.string("source", source, false);
+    environment.source = isBuiltInEnvironment(source) ? source : resolveScenePath(sceneFile, source);
+    object.number("intensity", environment.intensity, Range::closed(0.0, kMaxEnvironmentIntensity));
+    object.boolean("background", environment.background);
+    choice(object, "occlusion", kEnvironmentOcclusions, environment.occlusion);
+    choice(object, "specular", kEnvironmentSpeculars, environment.specular);
+    object.integer("sh_bands", environment.shBands, Range::closed(1, kMaxShBands));
+    JsonContext& context = root.context();
+    if (context.check(object.has("source"), object.pointer("source"),
+                      "is required: a built-in environment (" + listForMessage({kBuiltInEnvironments[0].data(), kBuiltInEnvironments[1].data()}, "or") +
+                          ") or a lat-long map file")) {
+        const json* rotationValue = object.member("rotation");
+        if (rotationValue == nullptr) return;
+        JsonObject rotation(context, *rotationValue, object.pointer("rotation"), {"axis", "angle_deg", "speed_deg_per_s"});
+        rotation.vec3("axis", environment.rotation.axis);
+        rotation.number("angle_deg", environment.rotation.angleDeg, Range::closed(-kMaxEnvironmentAngleDeg, kMaxEnvironmentAngleDeg));
+        rotation.number("speed_deg_per_s", environment.rotation.speedDegPerS,
+                        Range::closed(-kMaxEnvironmentSpeedDegPerS, kMaxEnvironmentSpeedDegPerS));
+        if (!context.failed() &&
+            context.check(length(environment.rotation.axis) > kParallelTolerance, rotation.pointer("axis"),
+                          "must not be the zero vector")) {
+            environment.rotation.axis = glm::vec3(normalised(environment.rotation.axis));
+        }
+    }
+}
+
 // Reads the fields a visit lists (SettingsFields.h) from one JSON object.
 class FieldReader {
 public:
@@ -429,7 +463,8 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
     Scene scene;
     scene.path = pathForMessages;
     JsonContext context(pathForMessages);
-    JsonObject root(context, document, "", {"camera", "lights", "characters", "profiles", "background", "settings"});
+    JsonObject root(context, document, "", {"camera", "lights", "characters", "profiles", "background", "environment",
+                                                 "settings"});
     readCamera(root, scene.camera);
     readProfiles(root, scene.profiles);
     std::vector<std::string> profiles = profileNames();
@@ -450,6 +485,7 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
         }
     }
     readBackground(root, scene.background);
+    readEnvironment(root, pathForMessages, scene.environment);
     readSettings(root, scene.settings);
 
     if (context.failed()) {

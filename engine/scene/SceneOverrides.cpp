@@ -17,7 +17,8 @@ namespace {
 using nlohmann::json;
 
 // The keys of a scene document's root; any other first key is under settings.
-const std::vector<std::string> kRootKeys = {"camera", "lights", "characters", "background", "settings"};
+const std::vector<std::string> kRootKeys = {"camera", "lights", "characters", "background", "environment",
+                                                 "settings"};
 
 bool isIndex(const std::string& key) {
     return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) { return c >= '0' && c <= '9'; });

@@ -3,7 +3,7 @@
 //
 // An override is "PATH=VALUE". PATH is dot-separated object keys and array
 // indices from the document root ("characters.0.material.roughness"); a PATH
-// whose first key is not a root key (camera, lights, characters, background,
+// whose first key is not a root key (camera, lights, characters, background, environment,
 // settings) is taken under settings ("sss.taps" == "settings.sss.taps"). VALUE
 // is JSON when it parses as JSON (13, false, [0, 0.1, 0.5], "text") and
 // otherwise the text itself as a string (sss.blur=control).

@@ -144,6 +144,19 @@ private:
     Json& mOut;
 };
 
+Json environmentJson(const Environment& e, const std::string& sceneFile) {
+    const std::string source = isBuiltInEnvironment(e.source) ? e.source : relativeScenePath(sceneFile, e.source);
+    return Json{{"source", source},
+                {"intensity", number(e.intensity)},
+                {"rotation", Json{{"axis", vec3(e.rotation.axis)},
+                                  {"angle_deg", number(e.rotation.angleDeg)},
+                                  {"speed_deg_per_s", number(e.rotation.speedDegPerS)}}},
+                {"background", e.background},
+                {"occlusion", name(kEnvironmentOcclusions, e.occlusion)},
+                {"specular", name(kEnvironmentSpeculars, e.specular)},
+                {"sh_bands", e.shBands}};
+}
+
 Json settingsJson(const RenderSettings& settings) {
     Json j;
     FieldWriter writer(j);
@@ -208,6 +221,7 @@ std::string sceneToJson(const Scene& scene) {
         root["profiles"] = std::move(profiles);
     }
     root["background"] = Json{{"colour", vec3(scene.background.colour)}};
+    if (scene.environment.enabled()) root["environment"] = environmentJson(scene.environment, scene.path);
     root["settings"] = settingsJson(scene.settings);
     // Replace, not throw, on invalid UTF-8 in names or paths.
     return collapseNumberArrays(root.dump(2, ' ', false, Json::error_handler_t::replace)) + "\n";

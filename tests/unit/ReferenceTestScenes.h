@@ -62,8 +62,8 @@ inline Light sunFromAbove(float intensity = 1.0f) {
 }
 
 // A ray straight down onto the y = 0 plane at (xM, zM), starting just above it.
-inline reference::Ray downAt(float xM, float zM) {
-    return reference::Ray{glm::vec3(xM, 0.01f, zM), glm::vec3(0.0f, -1.0f, 0.0f)};
+inline raytrace::Ray downAt(float xM, float zM) {
+    return raytrace::Ray{glm::vec3(xM, 0.01f, zM), glm::vec3(0.0f, -1.0f, 0.0f)};
 }
 
 }  // namespace dermis::test

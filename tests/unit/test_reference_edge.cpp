@@ -60,7 +60,7 @@ TEST(ReferenceEdge, MatchesTheAnalyticEdgeResponse) {
     ASSERT_TRUE(renderer.ok()) << renderer.error().message();
 
     const float xsMm[] = {-3.0f, -1.0f, -0.4f, -0.15f, -0.05f, 0.0f, 0.03f, 0.1f, 0.25f, 0.6f, 1.5f, 4.0f};
-    std::vector<reference::Ray> rays;
+    std::vector<raytrace::Ray> rays;
     for (float xMm : xsMm) {
         // Two points per distance, along the edge, to meet the tessellation at different phases.
         for (float alongMm : {0.0f, 7.3f}) {

@@ -14,8 +14,8 @@ using namespace dermis::test;
 
 namespace {
 
-std::vector<reference::Ray> pointsAwayFromTheBorder() {
-    std::vector<reference::Ray> rays;
+std::vector<raytrace::Ray> pointsAwayFromTheBorder() {
+    std::vector<raytrace::Ray> rays;
     for (int i = 0; i < 40; ++i) {
         // Up to 0.3 m from the centre of the 1 m plane: the profile reaches 14 mm.
         const float x = 0.3f * std::sin(1.7f * float(i));
@@ -64,7 +64,7 @@ TEST(ReferenceFurnace, OpaqueCharacterIsLambertian) {
 
     const std::vector<glm::vec4> values = renderer->diffuseAlongRays({downAt(0.1f, -0.2f)}, 0.0f, 0.02f);
     // E x albedo x the energy factors in (at N.L) and out (N.V = 1: the ray looks straight down).
-    const reference::Bvh noOccluders = reference::Bvh::build({});
+    const raytrace::Bvh noOccluders = raytrace::Bvh::build({});
     const reference::ReferenceLighting lighting(scene, noOccluders);
     const Material& material = scene.characters[0].material;
     const float nDotL = -light.direction.y;
@@ -84,6 +84,6 @@ TEST(ReferenceFurnace, BackgroundIsZeroWithZeroAlpha) {
     models.push_back(proceduralModelWithoutMaps("plane"));
     auto renderer = reference::ReferenceRenderer::create(scene, std::move(models), reference::ReferenceOptions{});
     ASSERT_TRUE(renderer.ok());
-    const reference::Ray up{glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+    const raytrace::Ray up{glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
     EXPECT_EQ(renderer->diffuseAlongRays({up}, 0.0f, 10.0f)[0], glm::vec4(0.0f));
 }

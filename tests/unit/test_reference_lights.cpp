@@ -4,7 +4,7 @@
 // integrator's edge refinement.
 #include "PenumbraEdge.h"
 
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 #include "reference/ReferenceLighting.h"
 
 #include <gtest/gtest.h>
@@ -22,10 +22,10 @@ constexpr double kPi = 3.14159265358979323846;
 // The blocker: a horizontal quad at this height over x < 0 (its edge runs along z at x = 0).
 constexpr float kBlockerHeightM = 0.05f;
 
-reference::Bvh blockerBvh() {
+raytrace::Bvh blockerBvh() {
     const float h = kBlockerHeightM;
     const glm::vec3 a(-1.0f, h, -1.0f), b(0.0f, h, -1.0f), c(0.0f, h, 1.0f), d(-1.0f, h, 1.0f);
-    return reference::Bvh::build({a, b, c, a, c, d});
+    return raytrace::Bvh::build({a, b, c, a, c, d});
 }
 
 Scene bareLitScene(const Light& light) {
@@ -72,7 +72,7 @@ struct Profiles {
 };
 
 Profiles sampleProfiles(const Light& light, double fromM, double toM, int count) {
-    const reference::Bvh bvh = blockerBvh();
+    const raytrace::Bvh bvh = blockerBvh();
     const Scene scene = bareLitScene(light);
     const reference::ReferenceLighting lighting(scene, bvh);
     Profiles p;
@@ -151,7 +151,7 @@ TEST(ReferenceLights, PointLightsCastShadowRays) {
     // x = 0.1 - 0.1 x 0.3 / 0.25 = -0.02 m.
     Light light = lampOfRadius(LightType::Point, 0.0f);
     light.positionM.x = 0.1f;
-    const reference::Bvh bvh = blockerBvh();
+    const raytrace::Bvh bvh = blockerBvh();
     const Scene scene = bareLitScene(light);
     const reference::ReferenceLighting lighting(scene, bvh);
     EXPECT_EQ(lighting.irradiance(floorPoint(-0.021)).x, 0.0f);
@@ -160,7 +160,7 @@ TEST(ReferenceLights, PointLightsCastShadowRays) {
 }
 
 TEST(ReferenceLights, PenumbraSamplesRefineAgainstLitAndUmbra) {
-    const reference::Bvh bvh = blockerBvh();
+    const raytrace::Bvh bvh = blockerBvh();
     const Scene scene = bareLitScene(sunOfDiameter(5.0f));
     const reference::ReferenceLighting lighting(scene, bvh);
     auto visibilityAt = [&](double x) {

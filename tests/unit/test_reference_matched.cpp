@@ -64,7 +64,7 @@ glm::vec3 exactIntegrand(const reference::ReferenceLighting& lighting, float u, 
 
 // The engine's texture as ts_irradiance.frag lays it out: row y at v = (y + 0.5) / H.
 Image textureFromExactLighting(const Scene& scene, int shiftTexels) {
-    const reference::Bvh none = reference::Bvh::build({});
+    const raytrace::Bvh none = raytrace::Bvh::build({});
     const reference::ReferenceLighting lighting(scene, none);
     Image image;
     image.width = image.height = kTexels;
@@ -82,7 +82,7 @@ Image textureFromExactLighting(const Scene& scene, int shiftTexels) {
 // the midpoints between texel centres (where a smooth function's is largest),
 // with a bilinear read written here.
 float largestTexelError(const Scene& scene, const Image& texture) {
-    const reference::Bvh none = reference::Bvh::build({});
+    const raytrace::Bvh none = raytrace::Bvh::build({});
     const reference::ReferenceLighting lighting(scene, none);
     float worst = 0.0f;
     for (int y = 0; y + 1 < kTexels; ++y) {
@@ -101,8 +101,8 @@ float largestTexelError(const Scene& scene, const Image& texture) {
 }
 
 // Points across the cone's edge ring, in several directions.
-std::vector<reference::Ray> raysAcrossTheRing() {
-    std::vector<reference::Ray> rays;
+std::vector<raytrace::Ray> raysAcrossTheRing() {
+    std::vector<raytrace::Ray> rays;
     for (int i = 0; i < 24; ++i) {
         const float radiusM = 0.001f * (7.0f + 0.25f * float(i));
         const float angle = 0.7f + 2.4f * float(i);
@@ -190,7 +190,7 @@ TEST(ReferenceMatched, UniformTextureOnAFlatPlaneChangesNothing) {
     options.engineIrradiance.push_back(texture);
     auto renderer = reference::ReferenceRenderer::create(scene, planeModels(), options);
     ASSERT_TRUE(renderer.ok()) << renderer.error().message();
-    std::vector<reference::Ray> rays;
+    std::vector<raytrace::Ray> rays;
     for (int i = 0; i < 24; ++i) rays.push_back(downAt(0.3f * std::sin(1.7f * float(i)), 0.3f * std::cos(2.3f * float(i))));
     const std::vector<glm::vec4> delta = renderer->scatterChangeAlongRays(rays, 0.0f, 0.02f);
     const glm::vec3 scale = glm::sqrt(kAlbedo) * integrand;
@@ -208,8 +208,8 @@ TEST(ReferenceMatched, NoScatterChangeWithoutSssOrTexture) {
     Image texture;
     texture.width = texture.height = 2;
     texture.texels.assign(4, glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));  // the light "moved": Delta would be non-zero
-    const std::vector<reference::Ray> rays = {downAt(0.0f, 0.0f), downAt(0.2f, 0.1f),
-                                              reference::Ray{glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)}};
+    const std::vector<raytrace::Ray> rays = {downAt(0.0f, 0.0f), downAt(0.2f, 0.1f),
+                                              raytrace::Ray{glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)}};
     for (bool sss : {false, true}) {
         for (bool withTexture : {false, true}) {
             if (sss && withTexture) continue;

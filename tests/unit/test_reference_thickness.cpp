@@ -23,7 +23,7 @@ Image thickness(const Scene& scene, std::vector<Model> models, int width, int he
 
 // The world point a pixel centre's ray meets on the plane y = yM.
 glm::vec3 onPlaneY(const Camera& camera, int width, int height, int x, int y, float yM) {
-    const reference::Ray ray = reference::ReferenceRenderer::cameraRay(camera, width, height, x, y);
+    const raytrace::Ray ray = reference::ReferenceRenderer::cameraRay(camera, width, height, x, y);
     return ray.origin + ray.direction * ((yM - ray.origin.y) / ray.direction.y);
 }
 

@@ -612,7 +612,7 @@ TEST(SceneLoader, UnknownKeyIsNamedWithTheKnownOnes) {
     EXPECT_EQ(errorOf(R"({"background": {"colr": [1, 1, 1]}})"),
               "/background/colr: unknown key \"colr\" (known: colour)");
     EXPECT_EQ(errorOf(R"({"camra": {}})"),
-              "/camra: unknown key \"camra\" (known: camera, lights, characters, profiles, background and settings)");
+              "/camra: unknown key \"camra\" (known: camera, lights, characters, profiles, background, environment and settings)");
     EXPECT_EQ(
         errorOf(R"({"lights": [{}, {"colour": [1, 1, 1], "power": 2}]})").rfind("/lights/1/power: unknown key", 0), 0u);
     // Keys with pointer syntax in them are escaped.

@@ -7,7 +7,7 @@
 
 #include "core/Image.h"
 #include "core/Log.h"
-#include "reference/ParallelFor.h"
+#include "raytrace/ParallelFor.h"
 #include "reference/ReferenceRenderer.h"
 #include "scene/SceneLoader.h"
 
@@ -120,7 +120,7 @@ int runReference(const std::vector<std::string>& rawArgs) {
     log::info("reference: " + std::to_string(size->first) + "x" + std::to_string(size->second) + ", density " +
               std::to_string(options.quadrature.density) + " per s^2, " + std::to_string(options.samplesPerPixel) +
               " samples per pixel, " +
-              std::to_string(reference::resolveThreadCount(options.threads)) + " threads");
+              std::to_string(raytrace::resolveThreadCount(options.threads)) + " threads");
     const Image image = renderer->renderDiffuse(size->first, size->second);
     const auto done = std::chrono::steady_clock::now();
     if (const Status saved = saveImage(outPath, image); !saved.ok()) return failure(saved.error());

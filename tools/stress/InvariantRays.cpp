@@ -102,14 +102,14 @@ Result<SceneRays> SceneRays::create(const Scene& scene) {
             const float length = glm::length(v.normal);
             if (!(length > 1e-6f)) m.predictLights = false;
         }
-        m.bvh = reference::Bvh::build(m.cornersM);
+        m.bvh = raytrace::Bvh::build(m.cornersM);
         rays.mCharacters.push_back(std::move(m));
     }
     return rays;
 }
 
 bool SceneRays::occluded(const glm::vec3& fromM, const glm::vec3& toLight, float distanceM) const {
-    const reference::Ray ray{fromM, toLight};
+    const raytrace::Ray ray{fromM, toLight};
     for (const CharacterMesh& m : mCharacters) {
         if (m.bvh.anyHit(ray, 0.0f, distanceM)) return true;
     }
@@ -173,11 +173,11 @@ bool SceneRays::lightReaches(const glm::vec3& pointM, const glm::vec3& geometric
     return false;
 }
 
-int SceneRays::nearestCharacter(const reference::Ray& ray, float nearM, float farM) const {
+int SceneRays::nearestCharacter(const raytrace::Ray& ray, float nearM, float farM) const {
     int nearest = -1;
     float nearestT = kInfinity;
     for (size_t c = 0; c < mCharacters.size(); ++c) {
-        reference::BvhHit hit;
+        raytrace::BvhHit hit;
         if (mCharacters[c].bvh.closestHit(ray, nearM, farM, &hit) && hit.t < nearestT) {
             nearestT = hit.t;
             nearest = int(c);
@@ -203,12 +203,12 @@ std::vector<RaySample> SceneRays::sample(int width, int height) const {
             RaySample s;
             s.x = x;
             s.y = y;
-            const reference::Ray ray = cameraRays.through(float(x) + 0.5f, float(y) + 0.5f);
+            const raytrace::Ray ray = cameraRays.through(float(x) + 0.5f, float(y) + 0.5f);
             s.characterDepthM.assign(mCharacters.size(), kInfinity);
-            reference::BvhHit nearest;
+            raytrace::BvhHit nearest;
             nearest.t = kInfinity;
             for (size_t c = 0; c < mCharacters.size(); ++c) {
-                reference::BvhHit hit;
+                raytrace::BvhHit hit;
                 if (!mCharacters[c].bvh.closestHit(ray, camera.nearM * (1.0f - shell), camera.farM * (1.0f + shell), &hit))
                     continue;
                 s.characterDepthM[c] = hit.t;

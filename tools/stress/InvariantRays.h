@@ -7,7 +7,7 @@
 // prediction of whether it is lit, made without the engine's shaders.
 
 #include "core/Result.h"
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 #include "scene/Scene.h"
 #include "stress/Invariants.h"
 
@@ -25,7 +25,7 @@ public:
 
 private:
     struct CharacterMesh {
-        reference::Bvh bvh;
+        raytrace::Bvh bvh;
         std::vector<glm::vec3> cornersM;       // three per triangle
         std::vector<glm::vec3> cornerNormals;  // world space, three per triangle, not normalised
         bool predictLights = true;             // false when a normal map or a zero normal may turn N anywhere
@@ -34,7 +34,7 @@ private:
     };
     float diffuseLeftTowards(const CharacterMesh& m, const glm::vec3& shadingNormal, const glm::vec3& toEye) const;
     // The character whose nearest hit along the ray lies in [nearM, farM]; -1 for none.
-    int nearestCharacter(const reference::Ray& ray, float nearM, float farM) const;
+    int nearestCharacter(const raytrace::Ray& ray, float nearM, float farM) const;
     bool ambientLights() const;
     bool lightReaches(const glm::vec3& pointM, const glm::vec3& geometricNormal, const glm::vec3& shadingNormal) const;
     bool occluded(const glm::vec3& fromM, const glm::vec3& toLight, float distanceM) const;

@@ -1,13 +1,13 @@
 // The reference's BVH against brute force: the same nearest hits and the same
 // any-hit answers on random rays through random (and some degenerate) triangles.
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-using namespace dermis::reference;
+using namespace dermis::raytrace;
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-namespace dermis::reference {
+namespace dermis::raytrace {
 
 // 0 means std::thread::hardware_concurrency() (at least 1).
 int resolveThreadCount(int requested);
@@ -18,4 +18,4 @@ int resolveThreadCount(int requested);
 void parallelFor(size_t count, int threads, const std::function<void(size_t)>& work,
                  const std::string& progressLabel = {});
 
-}  // namespace dermis::reference
+}  // namespace dermis::raytrace

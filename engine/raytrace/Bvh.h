@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace dermis::reference {
+namespace dermis::raytrace {
 
 struct Ray {
     glm::vec3 origin{0.0f};
@@ -57,4 +57,4 @@ private:
     std::vector<uint32_t> mTriangleIds;  // leaf slot -> original index
 };
 
-}  // namespace dermis::reference
+}  // namespace dermis::raytrace

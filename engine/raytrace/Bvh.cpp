@@ -1,11 +1,11 @@
-#include "reference/Bvh.h"
+#include "raytrace/Bvh.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-namespace dermis::reference {
+namespace dermis::raytrace {
 namespace {
 
 constexpr int kBins = 16;
@@ -226,4 +226,4 @@ bool Bvh::anyHit(const Ray& ray, float tMin, float tMax) const {
     return traverse<true>(ray, tMin, tMax, &unused);
 }
 
-}  // namespace dermis::reference
+}  // namespace dermis::raytrace

@@ -1,4 +1,4 @@
-#include "reference/ParallelFor.h"
+#include "raytrace/ParallelFor.h"
 
 #include "core/Log.h"
 
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace dermis::reference {
+namespace dermis::raytrace {
 
 int resolveThreadCount(int requested) {
     if (requested > 0) return requested;
@@ -34,4 +34,4 @@ void parallelFor(size_t count, int threads, const std::function<void(size_t)>& w
     for (std::thread& thread : pool) thread.join();
 }
 
-}  // namespace dermis::reference
+}  // namespace dermis::raytrace
