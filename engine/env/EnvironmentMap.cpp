@@ -10,6 +10,26 @@
 
 namespace dermis {
 
+namespace {
+
+Image emptyLatLong(int height) {
+    Image map;
+    map.height = height;
+    map.width = 2 * height;
+    map.colourSpace = ColourSpace::Linear;
+    map.texels.resize(size_t(map.width) * size_t(map.height));
+    return map;
+}
+
+// 1 inside the box's cap, 0 outside, a smoothstep across its edge.
+float softBoxCoverage(const SoftBox& box, const glm::vec3& direction, float edgeDeg) {
+    const float angleDeg = glm::degrees(std::acos(std::clamp(glm::dot(direction, glm::normalize(box.direction)), -1.0f, 1.0f)));
+    const float t = std::clamp((box.radiusDeg + 0.5f * edgeDeg - angleDeg) / std::max(edgeDeg, 1e-3f), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+}  // namespace
+
 Status checkEnvironmentMap(const Image& map, const std::string& name) {
     if (map.width != 2 * map.height) {
         return makeError(name, std::to_string(map.width) + "x" + std::to_string(map.height) +
@@ -54,11 +74,7 @@ Result<Image> loadEnvironmentMap(const std::string& path) {
 }
 
 Image makeProceduralSky(const ProceduralSky& sky, int height) {
-    Image map;
-    map.height = height;
-    map.width = 2 * height;
-    map.colourSpace = ColourSpace::Linear;
-    map.texels.resize(size_t(map.width) * size_t(map.height));
+    Image map = emptyLatLong(height);
     const glm::vec3 sun = glm::normalize(sky.sunDirection);
     const double cosSun = std::cos(glm::radians(double(sky.sunRadiusDeg)));
     std::vector<std::pair<int, int>> sunTexels;
@@ -96,6 +112,33 @@ Image makeProceduralSky(const ProceduralSky& sky, int height) {
     const glm::vec3 texelRadiance = sky.sunRadiance * float(discSolidAngle / sunTexelsSolidAngle);
     for (const auto& [u, v] : sunTexels) map.at(u, v) = glm::vec4(texelRadiance, 1.0f);
     return map;
+}
+
+
+Image makeProceduralStudio(const ProceduralStudio& studio, int height) {
+    Image map = emptyLatLong(height);
+    for (int v = 0; v < map.height; ++v) {
+        for (int u = 0; u < map.width; ++u) {
+            const glm::vec3 d = latLongDirection(u, v, map.width, map.height);
+            glm::vec3 radiance = d.y >= 0.0f ? studio.walls : studio.floor;
+            for (const SoftBox* box : {&studio.key, &studio.fill, &studio.rim}) {
+                radiance = glm::mix(radiance, box->radiance, softBoxCoverage(*box, d, studio.edgeDeg));
+            }
+            map.at(u, v) = glm::vec4(radiance, 1.0f);
+        }
+    }
+    return map;
+}
+
+Result<Image> makeBuiltInEnvironment(const std::string& name, int height) {
+    if (name == "sky") {
+        ProceduralSky sky;
+        // A 0.53 degree sun of this radiance gives 2.0 irradiance facing it; the sky gives about 2.
+        sky.sunRadiance = glm::vec3(30000.0f, 28500.0f, 25500.0f);
+        return makeProceduralSky(sky, height);
+    }
+    if (name == "studio") return makeProceduralStudio(ProceduralStudio{}, height);
+    return makeError(name, "unknown built-in environment (known: sky or studio)");
 }
 
 }  // namespace dermis

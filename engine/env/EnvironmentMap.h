@@ -37,4 +37,34 @@ struct ProceduralSky {
 
 Image makeProceduralSky(const ProceduralSky& sky, int height);
 
+// A built-in photo studio: dim walls and floor and three soft boxes (key,
+// fill, rim), each a spherical cap of `radiance` with a soft edge
+// `edgeDeg` wide, so that nine SH coefficients describe it well.
+struct SoftBox {
+    glm::vec3 direction{0.0f, 0.0f, 1.0f};  // towards the box; normalised when used
+    float radiusDeg = 20.0f;
+    glm::vec3 radiance{1.0f};
+};
+
+struct ProceduralStudio {
+    glm::vec3 walls{0.06f, 0.06f, 0.065f};
+    glm::vec3 floor{0.03f, 0.028f, 0.026f};
+    SoftBox key{{0.6f, 0.45f, 0.65f}, 22.0f, {5.0f, 4.8f, 4.5f}};
+    SoftBox fill{{-0.75f, 0.15f, 0.6f}, 28.0f, {0.9f, 0.95f, 1.1f}};
+    SoftBox rim{{-0.2f, 0.55f, -0.8f}, 12.0f, {4.0f, 4.0f, 4.0f}};
+    float edgeDeg = 4.0f;
+};
+
+Image makeProceduralStudio(const ProceduralStudio& studio, int height);
+
+// The rows of the built-in environments (Scene::kBuiltInEnvironments):
+// 512 x 256, texels of 0.7 degrees, finer than any lobe the renderer blurs
+// them with (docs/environment.md).
+constexpr int kBuiltInEnvironmentHeight = 256;
+
+// The built-in environment of that name ("sky": makeProceduralSky with a sun
+// giving about twice the sky's irradiance; "studio": makeProceduralStudio).
+// An unknown name is an error listing the known ones.
+Result<Image> makeBuiltInEnvironment(const std::string& name, int height = kBuiltInEnvironmentHeight);
+
 }  // namespace dermis
