@@ -9,6 +9,10 @@
 //   target 4       R16F: LEAN M'.xy
 //   (include/Lean.glsl: the space, the projection and the packing). The
 //   normal is then the LEAN mean normal, so the normal map is not read.
+// With GBUFFER_TRANSFER defined as the next free target (3, or 5 with LEAN),
+// when the environment's occlusion is "transfer" (include/EnvironmentTransfer.glsl):
+//   target N       RGBA16F: the environment irradiance L.T interpolated from
+//                  the vertices, a = the share of the sky they see
 // Material maps are sampled with the mip bias uFrame.features.w (0 but in tests).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
@@ -35,6 +39,10 @@ layout(location = 2) out uint oDepthKey;
 #ifdef GBUFFER_LEAN
 layout(location = 3) out vec4 oLeanMoments;
 layout(location = 4) out float oLeanCross;
+#endif
+#ifdef GBUFFER_TRANSFER
+in vec4 vEnvironment;
+layout(location = GBUFFER_TRANSFER) out vec4 oEnvironment;
 #endif
 
 in vec3 vViewPositionM;
@@ -86,4 +94,7 @@ void main() {
     oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(vUv, mipBias));
     int slot = int(uObject.surface.x + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
+#ifdef GBUFFER_TRANSFER
+    oEnvironment = vEnvironment;
+#endif
 }

@@ -12,6 +12,10 @@ out vec4 vViewTangent;  // xyz tangent, w bitangent sign
 out vec2 vUv;
 out vec3 vViewPositionM;
 out vec3 vColour;
+#ifdef GBUFFER_TRANSFER
+#include "EnvironmentTransfer.glsl"
+out vec4 vEnvironment;
+#endif
 
 void main() {
     vec4 worldPosition = uObject.worldFromObject * vec4(aPosition, 1.0);
@@ -21,5 +25,8 @@ void main() {
     vUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
     vViewPositionM = (uFrame.viewFromWorld * worldPosition).xyz;
     vColour = aColour.rgb;
+#ifdef GBUFFER_TRANSFER
+    vEnvironment = transferIrradiance();
+#endif
     gl_Position = uFrame.clipFromWorld * worldPosition;
 }

@@ -3,6 +3,8 @@
 // Linear HDR out.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
+#include "EnergyConservation.glsl"
+layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 #include "LeanLights.glsl"
 
 layout(binding = 0) uniform sampler2D uDepth;

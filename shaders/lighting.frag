@@ -4,10 +4,15 @@
 //      G-buffer's LEAN cross moment M'.xy, which the blur carries along with
 //      the irradiance (include/SssBlur.glsl, include/Lean.glsl). Each light's share is scaled by the energy
 //      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (Chappuis 2011 §2.6);
-//      the ambient term by the SSAO.
-//   1: specular (Kelemen/Szirmay-Kalos), kept apart and added after the blur;
-//      with LIGHTING_LEAN 0 for characters with LEAN maps (their lobe comes
-//      from include/LeanLights.glsl).
+//      the uniform ambient by the SSAO; the environment's diffuse light
+//      (include/Environment.glsl) by the occlusion the scene chose: none, the
+//      SSAO, or the per-vertex transfer (the G-buffer's environment target),
+//      so that no light is darkened twice (docs/environment.md, "Occlusion").
+//   1: specular (Kelemen/Szirmay-Kalos) of the lights and the environment,
+//      kept apart and added after the blur; with LIGHTING_LEAN, for
+//      characters with LEAN maps (their lobe comes from
+//      include/LeanLights.glsl), alpha 0 and in red the environment's
+//      specular occlusion.
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -18,6 +23,7 @@
 #include "Specular.glsl"
 #include "Lights.glsl"
 #include "EnergyConservation.glsl"
+#include "Environment.glsl"
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
@@ -29,6 +35,7 @@ layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 #ifdef LIGHTING_LEAN
 layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
 #endif
+layout(binding = 9) uniform sampler2D uEnvironmentTransfer;  // the G-buffer's environment target (occlusion "transfer")
 
 in vec2 vUv;
 layout(location = 0) out vec4 oIrradiance;
@@ -67,8 +74,20 @@ void main() {
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(normalMaterial.xy), vec3(0.0, 1.0, 0.0));
     vec3 V = safeNormalize(uFrame.cameraPositionM.xyz - worldPositionM, N);
 
-    vec3 irradiance = uFrame.ambient.rgb * texture(uAmbientOcclusion, vUv).r;
+    float ambientOcclusion = texture(uAmbientOcclusion, vUv).r;
+    vec3 irradiance = uFrame.ambient.rgb * ambientOcclusion;
     vec3 specular = vec3(0.0);
+    float environmentVisibility = 1.0;
+    if (environmentLit()) {
+        int occlusion = environmentOcclusion();
+        vec4 environment = occlusion == DERMIS_ENV_OCCLUSION_TRANSFER
+                               ? texelFetch(uEnvironmentTransfer, pixel, 0)
+                               : vec4(environmentIrradiance(N), occlusion == DERMIS_ENV_OCCLUSION_SSAO ? ambientOcclusion : 1.0);
+        if (occlusion == DERMIS_ENV_OCCLUSION_SSAO) environment.rgb *= ambientOcclusion;
+        irradiance += environment.rgb * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
+        environmentVisibility = specularOcclusion(clamp(dot(N, V), 0.0, 1.0), environment.a, roughness);
+        if (keepSpecular) specular += environmentSpecular(uEnergy, N, V, roughness, rhoS) * environmentVisibility;
+    }
     vec4 shadowed = vec4(0.0);
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
@@ -96,6 +115,6 @@ void main() {
 #endif
     oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, mixRatio)), alpha);
     // Alpha 0 marks a pixel whose specular the LEAN lobe gives (LeanLights.glsl).
-    oSpecular = vec4(sanitizeColour(specular), keepSpecular ? 1.0 : 0.0);
+    oSpecular = keepSpecular ? vec4(sanitizeColour(specular), 1.0) : vec4(environmentVisibility, 0.0, 0.0, 0.0);
     oVisibility = shadowed;
 }

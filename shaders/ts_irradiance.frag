@@ -1,8 +1,10 @@
 // Texture-space step 2: the irradiance texture (Chappuis 2011 §2.2.3, include/TextureSpace.glsl).
 //   rgb: sum over lights of radiance x N.L x PCF shadow x (1 - rho_s rho_dt(N.L, m))
 //        (Chappuis 2011 §2.4, §2.6), plus ambient x SSAO (where the texel is the
-//        pixel the camera sees), times albedo^mix (pre-scatter, §2.2.4): the
-//        same light the lighting pass gives a pixel (lighting.frag).
+//        pixel the camera sees), plus the environment's diffuse light with
+//        its occlusion (include/Environment.glsl), times albedo^mix
+//        (pre-scatter, §2.2.4): the same light the lighting pass gives a
+//        pixel (lighting.frag).
 //   a:   exp(-c d), d the thickness (mm) towards the TSM light (listing 2.7),
 //        1 without a TSM; always > 0, so 0 marks an empty texel.
 #define DERMIS_USE_TS_BLOCK
@@ -11,6 +13,7 @@
 #include "Shadows.glsl"
 #include "Lights.glsl"
 #include "EnergyConservation.glsl"
+#include "Environment.glsl"
 #include "TextureSpace.glsl"
 #include "Material.glsl"
 
@@ -27,6 +30,7 @@ in vec3 vWorldNormal;
 in vec4 vWorldTangent;
 in vec2 vMapUv;
 in vec3 vColour;
+in vec4 vEnvironment;
 
 layout(location = 0) out vec4 oIrradiance;
 
@@ -61,7 +65,14 @@ void main() {
     float rhoS = materialRhoS(vMapUv, 0.0);
     bool conserveEnergy = uFrame.features.x > 0.5;
 
-    vec3 irradiance = uFrame.ambient.rgb * ambientOcclusion(vWorldPositionM);
+    float occlusion = ambientOcclusion(vWorldPositionM);
+    vec3 irradiance = uFrame.ambient.rgb * occlusion;
+    if (environmentLit()) {
+        int mode = environmentOcclusion();
+        vec3 environment = mode == DERMIS_ENV_OCCLUSION_TRANSFER ? vEnvironment.rgb : environmentIrradiance(N);
+        if (mode == DERMIS_ENV_OCCLUSION_SSAO) environment *= occlusion;
+        irradiance += environment * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
+    }
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];

@@ -19,6 +19,8 @@ out vec2 vMapUv;         // where the material's maps are sampled (flip_v applie
 out vec3 vDPduM;         // metres per UV unit
 out vec3 vDPdvM;
 out vec3 vColour;
+#include "EnvironmentTransfer.glsl"
+out vec4 vEnvironment;  // L.T and the visible share (occlusion "transfer"; 0 when the mesh has no transfer)
 
 void main() {
     vWorldPositionM = (uObject.worldFromObject * vec4(aPosition, 1.0)).xyz;
@@ -28,6 +30,7 @@ void main() {
     vDPduM = mat3(uObject.worldFromObject) * aDPdu;
     vDPdvM = mat3(uObject.worldFromObject) * aDPdv;
     vColour = aColour.rgb;
+    vEnvironment = transferIrradiance();
     // Texel (x, y) of an N x N target holds uv = ((x, y) + 0.5) / N, so that
     // texture(map, uv) reads back what was written here.
     gl_Position = vec4(aUv * 2.0 - 1.0, 0.0, 1.0);

@@ -7,6 +7,7 @@
 #include "passes/LightingPass.h"
 #include "passes/ShadowPass.h"
 #include "passes/SkinningPass.h"
+#include "passes/SkyboxPass.h"
 #include "passes/SsaoPass.h"
 #include "passes/SssPasses.h"
 #include "passes/TextureSpacePasses.h"
@@ -46,7 +47,8 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
             if (gbuffer.hasLean()) lean = {chain.extras[0], chain.diffuse, lighting.visibility};
         }
         if (aov == Aov::Final || aov == Aov::Radiance) {
-            const graph::TextureHandle hdr = addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular, lean);
+            const graph::TextureHandle hdr = addSkyboxPass(
+                graph, frame, gbuffer, addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular, lean));
             graph.markOutput(aov == Aov::Final ? addTonemapPass(graph, frame, hdr, output)
                                                : addAovPass(graph, frame, {gbuffer, {}, {}, hdr}, output));
             return;

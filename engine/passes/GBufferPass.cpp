@@ -18,6 +18,9 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 g.leanMoments = builder.create("lean moments", {w, h, graph::TextureFormat::Rgba16F});
                 g.leanCross = builder.create("lean cross moment", {w, h, graph::TextureFormat::R16F});
             }
+            if (frame.plan.environment.transfer) {
+                g.environment = builder.create("environment transfer", {w, h, graph::TextureFormat::Rgba16F});
+            }
         },
         [frame](const graph::PassResources& resources, const GBuffer& g) {
             gl::Attachments attachments;
@@ -28,6 +31,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 attachments.colour[3] = resources.texture(g.leanMoments);
                 attachments.colour[4] = resources.texture(g.leanCross);
             }
+            const bool transfer = g.environment.isValid();
+            if (transfer) attachments.colour[g.hasLean() ? 5 : 3] = resources.texture(g.environment);
             attachments.depth = resources.texture(g.depthStencil);
             attachments.depthHasStencil = true;
             frame.gl->framebuffers->bind(attachments);
@@ -41,6 +46,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 glClearBufferfv(GL_COLOR, 3, zero);
                 glClearBufferfv(GL_COLOR, 4, zero);
             }
+            if (transfer) glClearBufferfv(GL_COLOR, g.hasLean() ? 5 : 3, zero);
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
@@ -49,7 +55,9 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             glStencilMask(0xFF);
             glDisable(GL_CULL_FACE);
-            glUseProgram(g.hasLean() ? frame.gl->programs->gbufferLean.get() : frame.gl->programs->gbuffer.get());
+            const Programs& programs = *frame.gl->programs;
+            glUseProgram(g.hasLean() ? (transfer ? programs.gbufferLeanTransfer.get() : programs.gbufferLean.get())
+                                     : (transfer ? programs.gbufferTransfer.get() : programs.gbuffer.get()));
             const auto& characters = frame.gl->gpuScene->characters();
             for (size_t index = 0; index < characters.size(); ++index) {
                 if (!frame.plan.characters[index].visible) continue;  // off screen (CharacterPlacement::culledBecause)

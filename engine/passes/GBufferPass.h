@@ -18,6 +18,7 @@ struct GBuffer {
     graph::TextureHandle depthKey;        // R32UI: profile slot and view depth (UniformBlocks.glsl)
     graph::TextureHandle leanMoments;     // RGBA16F (B'.x, B'.y, M'.xx, M'.yy); invalid in variant c
     graph::TextureHandle leanCross;       // R16F M'.xy; invalid in variant c
+    graph::TextureHandle environment;     // RGBA16F: the transfer's L.T and visible share; invalid unless occlusion "transfer"
 
     bool hasLean() const { return leanMoments.isValid(); }
     // The targets the SSS chain blurs with the irradiance: none in variant c.

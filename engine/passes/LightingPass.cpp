@@ -35,6 +35,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
                 d.ambientOcclusion = builder.read(ambientOcclusion);
                 if (gbuffer.hasLean()) d.leanCross = builder.read(gbuffer.leanCross);
+                if (gbuffer.environment.isValid()) d.gbuffer.environment = builder.read(gbuffer.environment);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 d.out.irradiance = builder.create("irradiance", {w, h, graph::TextureFormat::Rgba16F});
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
@@ -49,6 +50,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                                      d.ambientOcclusion});
                 bindShadowMaps(frame, resources, d.shadowMaps);
                 if (lean) glBindTextureUnit(8, resources.texture(d.leanCross));
+                if (d.gbuffer.environment.isValid()) glBindTextureUnit(9, resources.texture(d.gbuffer.environment));
                 frame.gl->drawFullscreenTriangle();
             })
         .out;

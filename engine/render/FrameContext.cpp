@@ -55,6 +55,10 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
     block.worldFromObject = worldFromObject;
     block.normalWorldFromObject = glm::inverseTranspose(worldFromObject);
     block.material.y = float(characterIndex + 1);
+    if (characterIndex < plan.environment.objectSh.size()) {
+        const Sh9& light = plan.environment.objectSh[characterIndex];
+        for (int i = 0; i < kShCoefficients; ++i) block.environmentSh[i] = glm::vec4(light.coefficients[size_t(i)], 0.0f);
+    }
     return block;
 }
 

@@ -202,6 +202,12 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     }
     plan.worldBounds = unionBounds(plan.characters, false);
     markVisibleCharacters(request, plan);
+    auto environment = geometry.environment(scene.environment);
+    if (!environment.ok()) return environment.error();
+    std::vector<glm::mat4> worldFromObject;
+    for (const CharacterPlacement& placement : plan.characters) worldFromObject.push_back(placement.worldFromObject);
+    plan.environment = planEnvironment(scene.environment, std::move(*environment), worldFromObject, request.timeS,
+                                       request.aov == Aov::Final || request.aov == Aov::Radiance);
 
     auto sss = planSss(scene, bounds, plan.view, submeshMaterials);
     if (!sss.ok()) return sss.error();

@@ -37,6 +37,8 @@
 #include "scene/Scene.h"
 #include "sss/BlurKernel.h"
 
+#include "render/EnvironmentPlan.h"
+
 #include <glm/glm.hpp>
 
 #include <string>
@@ -107,6 +109,7 @@ struct FramePlan {
     bool textureSpace = false;  // the frame declares texture-space passes (then ts and tsKernel are planned)
     TsPlan ts;
     BlurKernel tsKernel;
+    EnvironmentPlan environment;
 };
 
 // Whether the frame's AOV reads the SSS chain (screen- or texture-space): the

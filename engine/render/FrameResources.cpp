@@ -68,9 +68,19 @@ Status FrameResources::prepare(const FramePlan& plan, SceneGeometry& geometry) {
     uploadSssBlocks(plan);
     prepareOutput(plan);
     prepareShadowMaps(plan);
+    mEnvironment.prepare(plan.environment, *plan.scene);
+    if (plan.environment.transfer) {
+        for (size_t c = 0; c < plan.characters.size(); ++c) {
+            if (const Status made = mEnvironment.prepareTransfer(c, geometry.mesh(c)); !made.ok()) return made;
+            GpuEnvironment::attachTransfer(mGpuScene.characters()[c].mesh.vertexArray.get(), mEnvironment.transferBuffer(c));
+        }
+    }
     for (const TsCharacterPlan& character : plan.ts.characters) {
         const auto index = static_cast<size_t>(character.character);
         mTsMeshes.prepare(index, mGpuScene.characters()[index], geometry.uvLayout(index));
+        if (plan.environment.transfer) {
+            GpuEnvironment::attachTransfer(mTsMeshes.get(index).vertexArray.get(), mEnvironment.transferBuffer(index));
+        }
     }
     return success();
 }

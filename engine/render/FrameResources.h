@@ -12,9 +12,11 @@
 #include "render/FrameContext.h"
 #include "render/FrameInputs.h"
 #include "render/FramePlan.h"
+#include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
 #include "render/SceneGeometry.h"
+#include "render/GpuEnvironment.h"
 #include "render/TsMeshes.h"
 #include "gpu/UniformBlocks.h"
 
@@ -66,6 +68,7 @@ private:
     std::array<ShadowMap, DERMIS_MAX_SHADOWED_LIGHTS> mShadowMaps;
     size_t mShadowMapsUsed = 0;
     TsMeshes mTsMeshes;
+    GpuEnvironment mEnvironment;
     gl::Texture mOutput;
     graph::TextureDesc mOutputDesc{};
 };

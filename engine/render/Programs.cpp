@@ -42,30 +42,40 @@ Result<Programs> Programs::build() {
     auto skinning = gl::buildProgram({"", "", defines, "skinning.comp"});
     if (!skinning.ok()) return skinning.error();
     programs.skinning = std::move(*skinning);
-    // The LEAN variants (render/SssVariant.h): the same shaders with their
-    // LEAN outputs, and the LEAN specular pass.
-    struct LeanEntry {
+    // Variants of shaders by a define: the LEAN variants (render/SssVariant.h)
+    // with their LEAN outputs, the LEAN specular pass, the G-buffer with the
+    // environment transfer, and the skybox (a full-screen triangle on the far
+    // plane, so the depth test keeps it to the background).
+    struct VariantEntry {
         gl::Program Programs::*member;
         const char* vertex;
         const char* fragment;
         gl::ShaderDefine define;
     };
     const std::string leanTargets = std::to_string(kLeanSssTargets);
-    const LeanEntry leanEntries[] = {
+    const VariantEntry variantEntries[] = {
         {&Programs::gbufferLean, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_LEAN", "1"}},
         {&Programs::lightingLean, "fullscreen.vert", "lighting.frag", {"LIGHTING_LEAN", "1"}},
         {&Programs::sssInitLean, "fullscreen.vert", "sss_init.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::sssBlurLean, "fullscreen.vert", "sss_blur.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
         {&Programs::compositeLean, "fullscreen.vert", "composite.frag", {"COMPOSITE_LEAN", "1"}},
+        {&Programs::gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_TRANSFER", "3"}},
+        {&Programs::skybox, "fullscreen.vert", "skybox.frag", {"FULLSCREEN_AT_FAR_PLANE", "1"}},
     };
-    for (const LeanEntry& e : leanEntries) {
-        std::vector<gl::ShaderDefine> leanDefines = defines;
-        if (!e.define.name.empty()) leanDefines.push_back(e.define);
-        auto program = gl::buildProgram({e.vertex, e.fragment, leanDefines, {}});
+    for (const VariantEntry& e : variantEntries) {
+        std::vector<gl::ShaderDefine> variantDefines = defines;
+        if (!e.define.name.empty()) variantDefines.push_back(e.define);
+        auto program = gl::buildProgram({e.vertex, e.fragment, variantDefines, {}});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }
+    std::vector<gl::ShaderDefine> leanTransfer = defines;
+    leanTransfer.push_back({"GBUFFER_LEAN", "1"});
+    leanTransfer.push_back({"GBUFFER_TRANSFER", "5"});  // after the LEAN targets 3 and 4
+    auto gbufferLeanTransfer = gl::buildProgram({"gbuffer.vert", "gbuffer.frag", leanTransfer, {}});
+    if (!gbufferLeanTransfer.ok()) return gbufferLeanTransfer.error();
+    programs.gbufferLeanTransfer = std::move(*gbufferLeanTransfer);
     return programs;
 }
 

@@ -33,6 +33,11 @@ struct Programs {
     gl::Program sssBlurLean;
     gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
     gl::Program compositeLean;  // composite with the LEAN specular
+    // Environment light (docs/environment.md): the G-buffers with the
+    // per-vertex transfer's target (occlusion "transfer"), and the skybox.
+    gl::Program gbufferTransfer;
+    gl::Program gbufferLeanTransfer;
+    gl::Program skybox;
 
     static Result<Programs> build();
 };

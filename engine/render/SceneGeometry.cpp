@@ -38,6 +38,16 @@ const UvLayout& SceneGeometry::uvLayout(size_t character) {
     return *c.uvLayout;
 }
 
+Result<std::shared_ptr<const EnvironmentLight>> SceneGeometry::environment(const Environment& environment) {
+    if (!environment.enabled()) return std::shared_ptr<const EnvironmentLight>();
+    if (!mEnvironment || mEnvironment->source != environment.source) {
+        auto light = loadEnvironmentLight(environment);
+        if (!light.ok()) return light.error();
+        mEnvironment = std::move(*light);
+    }
+    return mEnvironment;
+}
+
 Bounds transformBounds(const Bounds& b, const glm::mat4& m) {
     Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
     for (int corner = 0; corner < 8; ++corner) {

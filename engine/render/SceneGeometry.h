@@ -15,6 +15,7 @@
 #include "mesh/Model.h"
 #include "scene/Scene.h"
 #include "mesh/UvLayout.h"
+#include "render/EnvironmentPlan.h"
 
 #include <glm/glm.hpp>
 
@@ -47,8 +48,12 @@ public:
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
+    // The environment's map and SH, loaded on first use and again when the
+    // source changes; null when the scene has none. Errors name the map.
+    Result<std::shared_ptr<const EnvironmentLight>> environment(const Environment& environment);
 
 private:
+    std::shared_ptr<const EnvironmentLight> mEnvironment;
     struct Character {
         MeshData mesh;
         Bounds objectBounds;

@@ -15,12 +15,30 @@
 // M'.yy) and of the visibility. The caller fetches what it shares with the
 // rest of its shader; the two textures are fetched before the branch (on
 // llvmpipe a fetch under divergent control flow costs several times more).
-// Needs Common.glsl and UniformBlocks.glsl first.
+// The environment's specular (include/Environment.glsl) goes through the same
+// lobe: its mean normal and an isotropic Beckmann width with the lobe's
+// slope variance, m^2 = trace(Sigma_m) (Lean.glsl: m^2 / 2 per axis), the
+// specular occlusion being what the lighting pass wrote into the LEAN pixel's
+// specular (its red channel).
+// Needs Common.glsl, UniformBlocks.glsl and EnergyConservation.glsl (with
+// uEnergy bound) first.
 #ifndef DERMIS_LEAN_LIGHTS_GLSL
 #define DERMIS_LEAN_LIGHTS_GLSL
 
 #include "Lights.glsl"
 #include "Lean.glsl"
+#include "Environment.glsl"
+
+// The environment's specular through a LEAN lobe, view-space V.
+vec3 leanEnvironmentSpecular(LeanLobe lobe, vec3 V, float rhoS, float occlusion) {
+    if (!environmentLit()) return vec3(0.0);
+    vec3 meanNormal = vec3(lobe.meanFromView[0][2], lobe.meanFromView[1][2], lobe.meanFromView[2][2]);
+    vec3 Q = lobe.inverseCovariance;
+    float determinant = max(Q.x * Q.y - Q.z * Q.z, 1e-20);
+    float m = sqrt(max((Q.x + Q.y) / determinant, 0.0));
+    mat3 worldFromView = mat3(uFrame.worldFromView);
+    return environmentSpecular(uEnergy, worldFromView * meanNormal, worldFromView * V, m, rhoS) * occlusion;
+}
 
 vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, vec4 lightingSpecular, float crossMoment, float rhoS,
                        sampler2D moments, sampler2D visibility) {
@@ -46,6 +64,7 @@ vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, vec4 lightingSpecular,
         if (max(radiance.r, max(radiance.g, radiance.b)) <= 0.0) continue;
         specular += radiance * (shadow * leanSpecular(lobe, viewFromWorld * L, rhoS));
     }
+    specular += leanEnvironmentSpecular(lobe, V, rhoS, lightingSpecular.r);
     return sanitizeColour(specular);
 }
 

@@ -100,6 +100,21 @@
 #define DERMIS_UNIT_BECKMANN 14
 #define DERMIS_UNIT_ENERGY 15
 
+// Environment light (scene/SceneEnums.h kEnvironmentOcclusions and
+// kEnvironmentSpeculars, include/Environment.glsl): the ids reaching shaders,
+// the SH coefficients (bands 0-2), the vertex attributes holding a vertex's
+// transfer (three vec3), and the texture unit of the environment map.
+#define DERMIS_ENV_OCCLUSION_NONE 0
+#define DERMIS_ENV_OCCLUSION_SSAO 1
+#define DERMIS_ENV_OCCLUSION_TRANSFER 2
+#define DERMIS_ENV_SPECULAR_OFF 0
+#define DERMIS_ENV_SPECULAR_SH 1
+#define DERMIS_ENV_SPECULAR_PREFILTERED 2
+#define DERMIS_SH_COEFFICIENTS 9
+#define DERMIS_LOCATION_TRANSFER 8      // 8, 9, 10: coefficients 0-2, 3-5, 6-8
+#define DERMIS_UNIT_ENVIRONMENT 11
+#define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
+
 // Fresnel reflectance at normal incidence for skin (d'Eon & Luebke 2007, after
 // Donner & Jensen): Schlick's F0 of the specular and of its energy table.
 #define DERMIS_SKIN_F0 0.028

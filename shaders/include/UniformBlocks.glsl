@@ -30,6 +30,7 @@
 #define DERMIS_BINDING_PROFILES 4
 #define DERMIS_BINDING_PASS 5
 #define DERMIS_BINDING_SCREEN_REGIONS 6
+#define DERMIS_BINDING_ENVIRONMENT 7
 
 // The depth-key target (R32UI) packs a pixel's profile slot in the top 4 bits
 // and its view depth in the low 28, in units of 2^-20 m (about 1 micrometre,
@@ -81,7 +82,17 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index, z: cube face 0..5 (shadow pass)
     vec4 surface;                // x: profile slot of this draw (0 = opaque), y: roughness source (DERMIS_ROUGHNESS_*),
                                  // z: glTF roughnessFactor, w: has a specular map (1/0) (include/Material.glsl)
+    vec4 environmentSh[DERMIS_SH_COEFFICIENTS];  // rgb: uEnvironment.sh in this object's space, for its vertices' transfer
 } DERMIS_BLOCK_END(uObject)
+
+// The frame's environment light (render/EnvironmentPlan.h, include/Environment.glsl).
+DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
+    vec4 sh[DERMIS_SH_COEFFICIENTS];  // rgb: radiance's SH coefficients (world space) x intensity; 0 past the scene's sh_bands
+    mat4 mapFromWorld;                // a world direction to the map's (rotation; the skybox and the specular)
+    vec4 params;  // x: an environment lights the frame (1/0), y: DERMIS_ENV_OCCLUSION_*, z: DERMIS_ENV_SPECULAR_*, w: intensity
+    vec4 map;     // x: the map's last mip level, y: 1 = the map is drawn behind everything
+    vec4 averageAlbedo[DERMIS_AVERAGE_ALBEDO_SIZE / 4];  // rho_dt(mu, m) averaged 2 int mu dmu, at m = i / (SIZE - 1)
+} DERMIS_BLOCK_END(uEnvironment)
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).
 struct CharacterParams {

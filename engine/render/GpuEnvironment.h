@@ -1,0 +1,53 @@
+#pragma once
+// The GPU side of the environment light (render/EnvironmentPlan.h,
+// docs/environment.md), owned by the frame resources and made in the prepare
+// step (a GL context must be current):
+//   - the EnvironmentBlock (binding DERMIS_BINDING_ENVIRONMENT) each frame;
+//   - the map with its prefiltered mips (env/PrefilteredEnvironment.h) on unit
+//     DERMIS_UNIT_ENVIRONMENT, made again only when the source changes;
+//   - each character's per-vertex SH transfer (env/ShTransferCache.h: computed
+//     once, then read from the disk cache), a vertex buffer attached to its
+//     vertex arrays at DERMIS_LOCATION_TRANSFER, only when the occlusion is
+//     "transfer". An animated character's transfer is its rest pose's
+//     (docs/environment.md, "Animated characters").
+
+#include "core/Result.h"
+#include "gl/GlObjects.h"
+#include "gpu/UniformBlocks.h"
+#include "mesh/Mesh.h"
+#include "render/EnvironmentPlan.h"
+
+#include <memory>
+#include <vector>
+
+namespace dermis {
+
+class GpuEnvironment {
+public:
+    GpuEnvironment();
+
+    // Uploads the block, and the map when its source changed. Binds both.
+    void prepare(const EnvironmentPlan& plan, const Scene& scene);
+    // The character's transfer buffer, made on first need (0 before).
+    Status prepareTransfer(size_t character, const MeshData& mesh);
+    GLuint transferBuffer(size_t character) const {
+        return character < mTransfers.size() ? mTransfers[character].get() : 0;
+    }
+    // Attaches a transfer buffer (three vec3 per vertex) to a vertex array.
+    static void attachTransfer(GLuint vertexArray, GLuint buffer);
+
+private:
+    gl::Buffer mUniforms;
+    gl::Texture mMap;
+    std::shared_ptr<const EnvironmentLight> mMapLight;  // what mMap was made from
+    int mMapLevels = 0;
+    std::vector<gl::Buffer> mTransfers;
+    std::vector<float> mAverageAlbedo;  // DERMIS_AVERAGE_ALBEDO_SIZE values of m
+};
+
+// rho_dt(mu, m) averaged over the cosine-weighted hemisphere, 2 int_0^1
+// rho_dt(mu, m) mu dmu, from the energy table (row-major, row = m; brdf/EnergyTable.h),
+// by the trapezoid rule over its columns, one value per row.
+std::vector<float> hemisphericalAverageAlbedo(const std::vector<float>& energyTable, int size);
+
+}  // namespace dermis

@@ -1,0 +1,98 @@
+// Environment light (docs/environment.md): a lat-long radiance map around the
+// scene, as nine SH coefficients for the diffuse light and as a prefiltered
+// map for the specular.
+//
+// Integration:
+//   - include Common.glsl and UniformBlocks.glsl first; uEnvironment (binding
+//     DERMIS_BINDING_ENVIRONMENT) is uploaded once per frame by
+//     render/FrameResources.cpp, which binds the map (with its prefiltered
+//     mips, include/EnvironmentSpecular.glsl) to DERMIS_UNIT_ENVIRONMENT;
+//   - diffuse: environmentIrradiance(N) where nothing occludes, or the
+//     transfer's L.T interpolated from the vertices (transferIrradiance, in a
+//     vertex shader reading DERMIS_LOCATION_TRANSFER); either times
+//     environmentDiffuseShare(m, rho_s) when energy conservation is on;
+//   - specular: environmentSpecular(), times specularOcclusion(). The lighting
+//     pass gives it; for pixels whose specular the LEAN lobe gives
+//     (include/LeanLights.glsl) it writes the occlusion instead, and the
+//     LEAN lobe's mean normal and width are used after the blur.
+// Both are added only where uEnvironment.params.x is 1.
+#ifndef DERMIS_ENVIRONMENT_GLSL
+#define DERMIS_ENVIRONMENT_GLSL
+
+#include "EnergyConservation.glsl"
+#include "EnvironmentSpecular.glsl"
+
+layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
+
+#if DERMIS_SH_COEFFICIENTS != 9
+#error "Environment.glsl evaluates bands 0-2: nine coefficients"
+#endif
+
+bool environmentLit() { return uEnvironment.params.x > 0.5; }
+int environmentOcclusion() { return int(uEnvironment.params.y + 0.5); }
+int environmentSpecularMode() { return int(uEnvironment.params.z + 0.5); }
+
+// The real SH basis of bands 0-2 at a unit direction, in the order of
+// engine/env/SphericalHarmonics.h (index l^2 + l + m).
+void shBasis9(vec3 d, out float basis[9]) {
+    basis[0] = 0.282095;
+    basis[1] = 0.488603 * d.y;
+    basis[2] = 0.488603 * d.z;
+    basis[3] = 0.488603 * d.x;
+    basis[4] = 1.092548 * d.x * d.y;
+    basis[5] = 1.092548 * d.y * d.z;
+    basis[6] = 0.315392 * (3.0 * d.z * d.z - 1.0);
+    basis[7] = 1.092548 * d.x * d.z;
+    basis[8] = 0.546274 * (d.x * d.x - d.y * d.y);
+}
+
+// Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
+// 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
+vec3 environmentIrradiance(vec3 N) {
+    float basis[9];
+    shBasis9(N, basis);
+    const float kA[9] = float[9](3.141593, 2.094395, 2.094395, 2.094395, 0.785398, 0.785398, 0.785398, 0.785398,
+                                 0.785398);
+    vec3 irradiance = vec3(0.0);
+    for (int i = 0; i < 9; ++i) irradiance += uEnvironment.sh[i].rgb * (kA[i] * basis[i]);
+    return max(irradiance, vec3(0.0));
+}
+
+// The share of the environment's (near uniform) light the specular lobe
+// leaves to the diffuse: 1 - rho_s rho_avg(m), rho_avg the cosine-weighted
+// hemispherical mean of rho_dt (Chappuis 2011 §2.6 applied per direction and
+// averaged; exact for a uniform environment, the white-furnace case).
+float environmentDiffuseShare(float m, float rhoS) {
+    float x = clamp(m, 0.0, 1.0) * float(DERMIS_AVERAGE_ALBEDO_SIZE - 1);
+    int i = min(int(x), DERMIS_AVERAGE_ALBEDO_SIZE - 2);
+    float a = uEnvironment.averageAlbedo[i / 4][i % 4];
+    float b = uEnvironment.averageAlbedo[(i + 1) / 4][(i + 1) % 4];
+    return clamp(1.0 - rhoS * mix(a, b, x - float(i)), 0.0, 1.0);
+}
+
+// Specular occlusion from a cosine-weighted visibility (Lagarde & de Rousiers
+// 2014, "Moving Frostbite to PBR", eq. 65 with their roughness taken as m).
+float specularOcclusion(float nDotV, float visibility, float m) {
+    return clamp(pow(max(nDotV + visibility, 0.0), exp2(-16.0 * m - 1.0)) - 1.0 + visibility, 0.0, 1.0);
+}
+
+// The environment's specular light towards V from a surface of normal N
+// (world space), before occlusion: split sum (Karis 2013) with the
+// Kelemen/Szirmay-Kalos lobe's directional albedo rho_s rho_dt(N.V, m) (the
+// energy table) times the radiance prefiltered for roughness m around the
+// reflection, or with specular "sh" the SH light's cosine-blurred radiance
+// there, E(R) / pi.
+vec3 environmentSpecular(sampler2D energyTable, vec3 N, vec3 V, float m, float rhoS) {
+    int mode = environmentSpecularMode();
+    if (mode == DERMIS_ENV_SPECULAR_OFF) return vec3(0.0);
+    float nDotV = clamp(dot(N, V), 0.0, 1.0);
+    float albedo = 1.0 - energyLeftForDiffuse(energyTable, nDotV, m, rhoS);
+    vec3 R = reflect(-V, N);
+    vec3 radiance = mode == DERMIS_ENV_SPECULAR_SH
+                        ? environmentIrradiance(R) * (1.0 / 3.14159265)
+                        : prefilteredRadiance(uEnvironmentMap, mat3(uEnvironment.mapFromWorld) * R, m) *
+                              uEnvironment.params.w;
+    return radiance * albedo;
+}
+
+#endif
