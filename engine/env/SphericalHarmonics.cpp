@@ -1,5 +1,6 @@
 #include "env/SphericalHarmonics.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dermis {
@@ -82,6 +83,14 @@ glm::vec3 latLongDirection(int u, int v, int width, int height) {
 float latLongTexelSolidAngle(int v, int width, int height) {
     const double theta0 = kPi * v / height, theta1 = kPi * (v + 1) / height;
     return float(2.0 * kPi / width * (std::cos(theta0) - std::cos(theta1)));
+}
+
+glm::vec2 latLongUv(const glm::vec3& direction) {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(direction));
+    double u = std::atan2(d.x, d.z) / (2.0 * kPi);
+    if (u < 0.0) u += 1.0;
+    const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+    return glm::vec2(float(u), float(v));
 }
 
 Sh9 projectLatLong(const Image& map) {

@@ -45,6 +45,10 @@ std::array<float, kShCoefficients> shBasis(const glm::vec3& direction);
 // The unit direction of a lat-long texel's centre, and its exact solid angle.
 glm::vec3 latLongDirection(int u, int v, int width, int height);
 float latLongTexelSolidAngle(int v, int width, int height);
+// The inverse of latLongDirection as texture coordinates: u = phi / (2 pi) in
+// [0, 1), v = theta / pi in [0, 1]; a texel's centre direction gives
+// ((u + 0.5) / width, (v + 0.5) / height). The poles read u = 0.
+glm::vec2 latLongUv(const glm::vec3& direction);
 
 // Projects the map's RGB radiance: L_lm = sum over texels of L Y_lm d_omega.
 Sh9 projectLatLong(const Image& map);

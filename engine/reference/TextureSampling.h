@@ -2,9 +2,11 @@
 // Texture reads as the GPU makes them for the renderer's maps: bilinear, GL_REPEAT,
 // texel centres at (i + 0.5) / size, row 0 at v = 0 (engine/render/GpuScene.cpp
 // uploads images top row first, so texture(uv) follows glTF's convention). One
-// level; MipPyramid.h builds the levels and the trilinear read on it.
+// level (core/ImageSampling.h's sampleBilinear, GL_REPEAT on both axes by
+// default); MipPyramid.h builds the levels and the trilinear read on it.
 
 #include "core/Image.h"
+#include "core/ImageSampling.h"
 
 #include <glm/glm.hpp>
 
@@ -17,7 +19,6 @@ float srgbToLinear(float encoded);
 // image already linear is returned unchanged.
 Image decodeToLinear(const Image& image);
 
-// Bilinear read at uv (repeat wrapping). An empty image reads as `fallback`.
-glm::vec4 sampleBilinear(const Image& image, const glm::vec2& uv, const glm::vec4& fallback);
+using dermis::sampleBilinear;
 
 }  // namespace dermis::reference

@@ -119,4 +119,28 @@
 // Donner & Jensen): Schlick's F0 of the specular and of its energy table.
 #define DERMIS_SKIN_F0 0.028
 
+// The prefiltered environment map of the split-sum specular (Karis 2013;
+// env/PrefilteredEnvironment.h, include/EnvironmentSpecular.glsl): a lat-long
+// mip chain of DERMIS_PREFILTERED_LEVELS levels from a base of
+// 2 DERMIS_PREFILTERED_BASE_HEIGHT x DERMIS_PREFILTERED_BASE_HEIGHT texels.
+// Level 0 is the map itself (a mirror, m = 0); level k >= 1 holds the Beckmann
+// lobe of roughness m_k = DERMIS_PREFILTERED_MAX_ROUGHNESS 2^(k - LEVELS + 1),
+// so m doubles as the texels do and every level's lobe (angular standard
+// deviation sqrt(2) m about R) spans 3.6 of its own texels; the level is linear
+// in m between levels 0 and 1 and clamps beyond the last level.
+// The two mappings below are the one definition that C++ and GLSL share: they
+// use only log2, exp2 and clamp, which GLSL has built in and C++ takes from std.
+#define DERMIS_PREFILTERED_LEVELS 6
+#define DERMIS_PREFILTERED_BASE_HEIGHT 256
+#define DERMIS_PREFILTERED_MAX_ROUGHNESS 1.0
+#define DERMIS_PREFILTERED_FIRST_ROUGHNESS (DERMIS_PREFILTERED_MAX_ROUGHNESS * exp2(2.0 - DERMIS_PREFILTERED_LEVELS))
+#define DERMIS_PREFILTERED_LEVEL_OF_ROUGHNESS(m) \
+    clamp((m) < DERMIS_PREFILTERED_FIRST_ROUGHNESS \
+              ? (m) / DERMIS_PREFILTERED_FIRST_ROUGHNESS \
+              : (DERMIS_PREFILTERED_LEVELS - 1.0) + log2((m) / DERMIS_PREFILTERED_MAX_ROUGHNESS), \
+          0.0, DERMIS_PREFILTERED_LEVELS - 1.0)
+#define DERMIS_PREFILTERED_ROUGHNESS_OF_LEVEL(level) \
+    ((level) < 1.0 ? (level) * DERMIS_PREFILTERED_FIRST_ROUGHNESS \
+                   : DERMIS_PREFILTERED_MAX_ROUGHNESS * exp2((level) - (DERMIS_PREFILTERED_LEVELS - 1.0)))
+
 #endif

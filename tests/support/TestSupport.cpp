@@ -1,5 +1,8 @@
 #include "TestSupport.h"
 
+#include "core/ImageResample.h"
+#include "env/SphericalHarmonics.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,11 +56,14 @@ std::string contentScene(const std::string& name) { return contentDir() + "/scen
 std::string sharedContentDir() { return DERMIS_SHARED_CONTENT_DIR; }
 
 Image solidImage(int width, int height, float value) {
-    Image image;
-    image.width = width;
-    image.height = height;
-    image.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height), glm::vec4(value, value, value, 1.0f));
-    return image;
+    return makeImage(width, height, ColourSpace::Linear, glm::vec4(value, value, value, 1.0f));
+}
+
+Image latLongImage(int width, int height, const std::function<glm::vec3(const glm::vec3&)>& radiance) {
+    Image map = makeImage(width, height, ColourSpace::Linear);
+    for (int v = 0; v < height; ++v)
+        for (int u = 0; u < width; ++u) map.at(u, v) = glm::vec4(radiance(latLongDirection(u, v, width, height)), 1.0f);
+    return map;
 }
 
 }  // namespace dermis::test

@@ -3,7 +3,10 @@
 
 #include "core/Image.h"
 
+#include <glm/glm.hpp>
+
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace dermis::test {
@@ -40,5 +43,9 @@ std::string sharedContentDir();  // ../shared/content (may not exist)
 
 // A width x height image of one grey value (alpha 1).
 Image solidImage(int width, int height, float value);
+
+// A width x height lat-long map (env/SphericalHarmonics.h's layout) whose
+// texels hold radiance(direction of the texel's centre), alpha 1.
+Image latLongImage(int width, int height, const std::function<glm::vec3(const glm::vec3&)>& radiance);
 
 }  // namespace dermis::test

@@ -2,6 +2,8 @@
 // (env/SphericalHarmonics.h) against closed forms.
 #include "env/SphericalHarmonics.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -14,15 +16,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-Image latLong(int width, int height, const std::function<glm::vec3(const glm::vec3&)>& radiance) {
-    Image map;
-    map.width = width;
-    map.height = height;
-    map.texels.resize(size_t(width) * size_t(height));
-    for (int v = 0; v < height; ++v)
-        for (int u = 0; u < width; ++u) map.at(u, v) = glm::vec4(radiance(latLongDirection(u, v, width, height)), 1.0f);
-    return map;
-}
+using test::latLongImage;
 
 // The clamped cosine about `axis`: max(0, d . axis).
 std::function<glm::vec3(const glm::vec3&)> lobe(const glm::vec3& axis) {
@@ -38,7 +32,7 @@ TEST(SphericalHarmonics, TexelSolidAnglesCoverTheSphere) {
 // The goal: a constant environment L gives irradiance pi L everywhere, to 1e-4 relative.
 TEST(SphericalHarmonics, ConstantEnvironmentGivesPiTimesItsRadiance) {
     const glm::vec3 radiance(1.0f, 0.5f, 0.25f);
-    const Sh9 sh = projectLatLong(latLong(256, 128, [&](const glm::vec3&) { return radiance; }));
+    const Sh9 sh = projectLatLong(latLongImage(256, 128, [&](const glm::vec3&) { return radiance; }));
     for (const glm::vec3& n : {glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::normalize(glm::vec3(0.3f, -0.8f, 0.5f))}) {
         const glm::vec3 e = shIrradiance(sh, n);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c] / (kPi * radiance[c]), 1.0f, 1e-4f) << "channel " << c;
@@ -54,7 +48,7 @@ TEST(SphericalHarmonics, ConstantEnvironmentGivesPiTimesItsRadiance) {
 // 256 x 128; the band-limited irradiance at +Z follows from these in closed
 // form: pi L00 Y00 + (2 pi / 3) L10 Y10(z) + (pi / 4) L20 Y20(z).
 TEST(SphericalHarmonics, ClampedCosineLobeMatchesItsClosedForm) {
-    const Sh9 sh = projectLatLong(latLong(256, 128, lobe(glm::vec3(0, 0, 1))));
+    const Sh9 sh = projectLatLong(latLongImage(256, 128, lobe(glm::vec3(0, 0, 1))));
     const float expected[kShCoefficients] = {0.282095f * kPi, 0, 0.488603f * 2.0f * kPi / 3.0f, 0, 0, 0,
                                              0.315392f * kPi / 2.0f, 0, 0};
     for (int i = 0; i < kShCoefficients; ++i) {
@@ -73,9 +67,9 @@ TEST(SphericalHarmonics, ClampedCosineLobeMatchesItsClosedForm) {
 TEST(SphericalHarmonics, RotatedCoefficientsEqualTheRotatedEnvironmentsProjection) {
     const glm::mat3 rotation(glm::rotate(glm::mat4(1.0f), glm::radians(37.0f), glm::normalize(glm::vec3(0.4f, 1.0f, -0.3f))));
     const glm::vec3 axis = glm::normalize(glm::vec3(0.2f, 0.5f, 0.8f));
-    const Sh9 original = projectLatLong(latLong(256, 128, lobe(axis)));
+    const Sh9 original = projectLatLong(latLongImage(256, 128, lobe(axis)));
     const Sh9 rotated = rotateSh(original, rotation);
-    const Sh9 reprojected = projectLatLong(latLong(256, 128, lobe(rotation * axis)));
+    const Sh9 reprojected = projectLatLong(latLongImage(256, 128, lobe(rotation * axis)));
     for (int i = 0; i < kShCoefficients; ++i)
         EXPECT_NEAR(rotated.coefficients[size_t(i)].r, reprojected.coefficients[size_t(i)].r, 2e-3f) << "coefficient " << i;
     for (const glm::vec3& n : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, -1, 0.5f))})
@@ -89,7 +83,7 @@ TEST(SphericalHarmonics, RotatedCoefficientsEqualTheRotatedEnvironmentsProjectio
 // A single bright texel: its coefficients are its radiance x Y(direction) x its solid angle.
 TEST(SphericalHarmonics, SingleBrightTexelProjectsAsItsDirection) {
     const int width = 32, height = 16, u = 5, v = 11;
-    Image map = latLong(width, height, [](const glm::vec3&) { return glm::vec3(0.0f); });
+    Image map = latLongImage(width, height, [](const glm::vec3&) { return glm::vec3(0.0f); });
     map.at(u, v) = glm::vec4(1000.0f, 0.0f, 0.0f, 1.0f);
     const Sh9 sh = projectLatLong(map);
     const glm::vec3 d = latLongDirection(u, v, width, height);
