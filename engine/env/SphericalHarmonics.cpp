@@ -32,37 +32,44 @@ std::array<double, N> solve(std::array<std::array<double, N>, N> a, std::array<d
     return x;
 }
 
-// Rotates band `Band` (its 2 Band + 1 coefficients start at Band^2) by
-// matching values at fixed, independent sample directions.
-template <int Band>
-void rotateBand(const Sh9& in, const glm::mat3& rotation, Sh9& out) {
-    constexpr int n = 2 * Band + 1;
-    constexpr int first = Band * Band;
-    // Directions where the band's basis functions are independent (the
-    // matrix of their values is invertible): unit vectors, spread out.
-    const glm::vec3 samples[5] = {glm::normalize(glm::vec3(1, 0.3f, 0.2f)), glm::normalize(glm::vec3(-0.2f, 1, 0.4f)),
-                                  glm::normalize(glm::vec3(0.3f, -0.5f, 1)), glm::normalize(glm::vec3(1, 1, -0.6f)),
-                                  glm::normalize(glm::vec3(-0.7f, 0.2f, -1))};
-    std::array<std::array<double, n>, n> basisAtSamples{};
-    for (int k = 0; k < n; ++k) {
-        const auto y = shBasis(samples[k]);
-        for (int j = 0; j < n; ++j) basisAtSamples[k][j] = y[first + j];
-    }
-    const glm::mat3 inverse = glm::transpose(rotation);
-    for (int channel = 0; channel < 3; ++channel) {
-        std::array<double, n> values{};
-        for (int k = 0; k < n; ++k) {
-            const auto y = shBasis(inverse * samples[k]);
-            for (int j = 0; j < n; ++j) values[k] += double(in.coefficients[first + j][channel]) * y[first + j];
+// Band 2's basis at five fixed directions where its functions are
+// independent (the matrix of their values is invertible), and that matrix's
+// inverse: a rotated band's coefficients are the inverse applied to the
+// unrotated function's values at the directions.
+constexpr int kBand2First = 4;
+constexpr int kBand2Size = 5;
+using Matrix5 = std::array<std::array<double, kBand2Size>, kBand2Size>;
+
+const std::array<glm::vec3, kBand2Size>& band2Samples() {
+    static const std::array<glm::vec3, kBand2Size> samples = {
+        glm::normalize(glm::vec3(1, 0.3f, 0.2f)), glm::normalize(glm::vec3(-0.2f, 1, 0.4f)),
+        glm::normalize(glm::vec3(0.3f, -0.5f, 1)), glm::normalize(glm::vec3(1, 1, -0.6f)),
+        glm::normalize(glm::vec3(-0.7f, 0.2f, -1))};
+    return samples;
+}
+
+const Matrix5& band2SampleInverse() {
+    static const Matrix5 inverse = [] {
+        Matrix5 basisAtSamples{};
+        for (int s = 0; s < kBand2Size; ++s) {
+            const auto y = shBasis(band2Samples()[size_t(s)]);
+            for (int k = 0; k < kBand2Size; ++k) basisAtSamples[size_t(s)][size_t(k)] = y[size_t(kBand2First + k)];
         }
-        const std::array<double, n> rotated = solve<n>(basisAtSamples, values);
-        for (int j = 0; j < n; ++j) out.coefficients[first + j][channel] = float(rotated[j]);
-    }
+        Matrix5 out{};
+        for (int column = 0; column < kBand2Size; ++column) {
+            std::array<double, kBand2Size> unit{};
+            unit[size_t(column)] = 1.0;
+            const auto solved = solve<kBand2Size>(basisAtSamples, unit);
+            for (int row = 0; row < kBand2Size; ++row) out[size_t(row)][size_t(column)] = solved[size_t(row)];
+        }
+        return out;
+    }();
+    return inverse;
 }
 
 }  // namespace
 
-std::array<float, kShCoefficients> shBasis(const glm::vec3& d) {
+ShScalar9 shBasis(const glm::vec3& d) {
     return {0.282095f,
             0.488603f * d.y,
             0.488603f * d.z,
@@ -119,11 +126,51 @@ glm::vec3 shIrradiance(const Sh9& light, const glm::vec3& normal) {
     return e;
 }
 
+ShRotation makeShRotation(const glm::mat3& rotation) {
+    ShRotation out;
+    // Band 1 is c1 (t . d) with t = (c11, c1-1, c10): rotated, t becomes
+    // rotation x t; in basis order (y, z, x) that is the rotation's rows and
+    // columns permuted.
+    constexpr int kAxisOfBand1[3] = {1, 2, 0};
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 3; ++column)
+            out.band1[size_t(row)][size_t(column)] = rotation[kAxisOfBand1[column]][kAxisOfBand1[row]];
+    // Band 2: values of the rotated basis at the samples, then the inverse.
+    const glm::mat3 inverse = glm::transpose(rotation);
+    Matrix5 rotatedAtSamples{};
+    for (int s = 0; s < kBand2Size; ++s) {
+        const auto y = shBasis(inverse * band2Samples()[size_t(s)]);
+        for (int k = 0; k < kBand2Size; ++k) rotatedAtSamples[size_t(s)][size_t(k)] = y[size_t(kBand2First + k)];
+    }
+    const Matrix5& sampleInverse = band2SampleInverse();
+    for (int row = 0; row < kBand2Size; ++row)
+        for (int column = 0; column < kBand2Size; ++column) {
+            double sum = 0.0;
+            for (int s = 0; s < kBand2Size; ++s) sum += sampleInverse[size_t(row)][size_t(s)] * rotatedAtSamples[size_t(s)][size_t(column)];
+            out.band2[size_t(row)][size_t(column)] = float(sum);
+        }
+    return out;
+}
+
+ShScalar9 applyShRotation(const ShRotation& rotation, const ShScalar9& in) {
+    ShScalar9 out{};
+    out[0] = in[0];
+    for (size_t row = 0; row < 3; ++row)
+        for (size_t column = 0; column < 3; ++column) out[1 + row] += rotation.band1[row][column] * in[1 + column];
+    for (size_t row = 0; row < 5; ++row)
+        for (size_t column = 0; column < 5; ++column) out[4 + row] += rotation.band2[row][column] * in[4 + column];
+    return out;
+}
+
 Sh9 rotateSh(const Sh9& light, const glm::mat3& rotation) {
+    const ShRotation bands = makeShRotation(rotation);
     Sh9 out;
-    out.coefficients[0] = light.coefficients[0];
-    rotateBand<1>(light, rotation, out);
-    rotateBand<2>(light, rotation, out);
+    for (int channel = 0; channel < 3; ++channel) {
+        ShScalar9 in{};
+        for (size_t i = 0; i < size_t(kShCoefficients); ++i) in[i] = light.coefficients[i][channel];
+        const ShScalar9 rotated = applyShRotation(bands, in);
+        for (size_t i = 0; i < size_t(kShCoefficients); ++i) out.coefficients[i][channel] = rotated[i];
+    }
     return out;
 }
 

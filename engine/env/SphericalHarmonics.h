@@ -17,10 +17,11 @@
 //
 // Rotation: band l's coefficients transform by a (2l+1)^2 matrix. Chappuis
 // 2011 §3.4 builds it from Z and X(+-90 degree) factors of a ZYZ rotation;
-// here each band's matrix is solved from 2l+1 sample directions instead (the
-// band is closed under rotation, so its coefficients are fixed exactly by
-// the values at any 2l+1 directions where the basis is independent): the
-// same matrix, for any rotation, without Euler angles.
+// here band 1's matrix is the rotation itself (its basis is the direction's
+// y, z, x) and band 2's is solved from 5 sample directions instead (the band
+// is closed under rotation, so its coefficients are fixed exactly by the
+// values at any 5 directions where the basis is independent): the same
+// matrices, for any rotation, without Euler angles.
 //
 // Lat-long layout: column u covers longitude phi = 2 pi (u + 0.5) / W about
 // +Y (the up axis), row v colatitude theta = pi (v + 0.5) / H from +Y (row 0
@@ -40,7 +41,10 @@ struct Sh9 {
     std::array<glm::vec3, kShCoefficients> coefficients{};  // RGB per basis function
 };
 
-std::array<float, kShCoefficients> shBasis(const glm::vec3& direction);
+// One channel's nine coefficients (a transfer vector, one colour of a light).
+using ShScalar9 = std::array<float, kShCoefficients>;
+
+ShScalar9 shBasis(const glm::vec3& direction);
 
 // The unit direction of a lat-long texel's centre, and its exact solid angle.
 glm::vec3 latLongDirection(int u, int v, int width, int height);
@@ -59,5 +63,19 @@ glm::vec3 shIrradiance(const Sh9& light, const glm::vec3& normal);
 // The coefficients of the light rotated by `rotation` (a rotation matrix):
 // rotated(d) = light(rotation^T d).
 Sh9 rotateSh(const Sh9& light, const glm::mat3& rotation);
+
+// The band matrices of one rotation (row-major, acting on the band's
+// coefficients in basis order; band 0 is unchanged): built once, applied to
+// any number of coefficient sets. rotateSh and rotateTransfer
+// (env/ShTransfer.h) both use it.
+struct ShRotation {
+    std::array<std::array<float, 3>, 3> band1{};
+    std::array<std::array<float, 5>, 5> band2{};
+};
+
+ShRotation makeShRotation(const glm::mat3& rotation);
+
+// The coefficients of f rotated: rotated(d) = f(rotation^T d).
+ShScalar9 applyShRotation(const ShRotation& rotation, const ShScalar9& coefficients);
 
 }  // namespace dermis

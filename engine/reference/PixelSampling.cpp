@@ -1,6 +1,7 @@
 #include "reference/PixelSampling.h"
 
 #include "core/Hash.h"
+#include "raytrace/Sampling.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -8,11 +9,6 @@
 #include <cstdint>
 
 namespace dermis::reference {
-namespace {
-
-float unitFloat(uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }  // [0, 1), 24 bits
-
-}  // namespace
 
 int strataPerSide(int samplesPerPixel) {
     if (samplesPerPixel < 1 || samplesPerPixel > kMaxSamplesPerPixel) return 0;
@@ -23,17 +19,7 @@ int strataPerSide(int samplesPerPixel) {
 std::vector<glm::vec2> subSampleOffsets(int x, int y, int samplesPerPixel) {
     const int n = strataPerSide(samplesPerPixel);
     if (n <= 1) return {glm::vec2(0.5f)};
-    std::vector<glm::vec2> offsets;
-    offsets.reserve(size_t(n) * size_t(n));
-    const uint32_t pixel = lowbias32(uint32_t(x) * 0x9e3779b9U ^ lowbias32(uint32_t(y)));
-    for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-            const uint32_t h = lowbias32(pixel ^ uint32_t(j * n + i) * 0x85ebca6bU);
-            const glm::vec2 jitter(unitFloat(h), unitFloat(lowbias32(h)));
-            offsets.push_back((glm::vec2(float(i), float(j)) + jitter) / float(n));
-        }
-    }
-    return offsets;
+    return raytrace::jitteredGrid(n, lowbias32(uint32_t(x) * 0x9e3779b9U ^ lowbias32(uint32_t(y))));
 }
 
 CameraRays::CameraRays(const Camera& camera, int width, int height) {

@@ -2,6 +2,7 @@
 
 #include "gpu/UniformBlocks.h"
 #include "brdf/EnergyTable.h"
+#include "raytrace/Sampling.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -37,21 +38,9 @@ float radicalInverse2(uint32_t i) {
 // the concentric map (Shirley & Chiu 1997), which keeps the strata's areas.
 std::vector<glm::vec2> discSamples(int count) {
     std::vector<glm::vec2> samples;
-    for (int i = 0; i < count; ++i) {
-        const float a = 2.0f * (float(i) + 0.5f) / float(count) - 1.0f;
-        const float b = 2.0f * (radicalInverse2(uint32_t(i)) + 0.5f / float(count)) - 1.0f;
-        const float quarterPi = 0.25f * glm::pi<float>();
-        float r = 0.0f;
-        float phi = 0.0f;
-        if (std::fabs(a) > std::fabs(b)) {
-            r = a;
-            phi = quarterPi * (b / a);
-        } else if (b != 0.0f) {
-            r = b;
-            phi = 2.0f * quarterPi - quarterPi * (a / b);
-        }
-        samples.emplace_back(r * std::cos(phi), r * std::sin(phi));
-    }
+    for (int i = 0; i < count; ++i)
+        samples.push_back(raytrace::concentricDisc(
+            glm::vec2((float(i) + 0.5f) / float(count), radicalInverse2(uint32_t(i)) + 0.5f / float(count))));
     return samples;
 }
 

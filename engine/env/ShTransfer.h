@@ -1,0 +1,70 @@
+#pragma once
+// Per-vertex spherical-harmonic transfer for environment light: how much of
+// the environment a vertex sees past the character's own mesh, weighted by
+// the cosine (Sloan et al. 2002; per vertex as in Chappuis 2011 §3.3 and
+// Yang et al. 2012 §III):
+//
+//   T_lm(vertex) = integral over the sphere of V(w) max(N . w, 0) Y_lm(w) dw
+//
+// with N the vertex normal and V(w) = 0 where a ray from the vertex towards w
+// hits the mesh. Lit by an environment whose SH radiance is L (in the mesh's
+// object space), the vertex's irradiance is E = sum_lm L_lm T_lm. With no
+// occluder, T_lm = A_l Y_lm(N) (Funk-Hecke; the A_l of shIrradiance).
+//
+// Estimated with cosine-weighted rays (pdf = N . w / pi), so
+//   T_lm ~= (pi / n) sum_i V(w_i) Y_lm(w_i):
+// a jittered sqrt(n) x sqrt(n) grid on the unit square, mapped to the disc
+// by the concentric map (Shirley & Chiu 1997) and lifted to the hemisphere
+// (Malley's method), turned about the normal by an angle hashed from the
+// vertex index. Every random number comes from the vertex and sample index,
+// so the result is the same for any thread count.
+
+#include "core/Result.h"
+#include "env/SphericalHarmonics.h"
+#include "mesh/Mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dermis {
+
+// 256 rays (16 x 16 strata): the RMS error of T_00 on the occluded test case
+// (a vertex beside a wall) is about 0.2% of the unoccluded T_00, and the time
+// for a 10k-vertex head stays well under 10 s on two cores; see
+// docs/environment.md for the measurements.
+constexpr int kDefaultShTransferRays = 256;
+
+struct ShTransferOptions {
+    int raysPerVertex = kDefaultShTransferRays;  // a square number (the strata are a square grid)
+    int threads = 0;                             // 0: all hardware threads
+    std::string progressLabel = "SH transfer";   // empty: no progress bar
+};
+
+// One transfer vector per vertex, in the mesh's vertex order.
+struct ShTransfer {
+    std::vector<ShScalar9> perVertex;
+    int raysPerVertex = 0;
+};
+
+// The mesh's own occlusion only. Errors: raysPerVertex not a positive
+// square, an index outside the vertex list, an index count that is not a
+// multiple of 3.
+Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptions& options = {});
+
+// The transfer of a vertex that has turned by `rotation` (object space, bind
+// pose -> posed): rotated(w) = transfer(rotation^T w), so E = L . T stays the
+// irradiance with L in the same object space as the posed vertex. Exact for
+// a rigid motion of the whole mesh; for a skinned vertex it keeps the bind
+// pose's occlusion, turned with the vertex (docs/environment.md measures the
+// error).
+ShScalar9 rotateTransfer(const ShScalar9& transfer, const glm::mat3& rotation);
+
+// The rotation of a linear-blend skinning matrix: the orthonormal factor of
+// its upper 3 x 3's polar decomposition (the closest rotation to it; Higham
+// 1986: the iteration X <- (X + X^-T) / 2). A blend of rotations is not a
+// rotation; its polar factor is what a vertex's frame turns by.
+glm::mat3 skinningRotation(const glm::mat4& blendedSkinningMatrix);
+
+}  // namespace dermis

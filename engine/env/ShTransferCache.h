@@ -1,0 +1,50 @@
+#pragma once
+// A disk cache of per-vertex SH transfer (env/ShTransfer.h), keyed by the
+// mesh's content, so a character's transfer is traced once per machine.
+//
+// Key: 64-bit FNV-1a over the raw bytes of every vertex's position and
+// normal, the indices, the rays per vertex and kShTransferCacheVersion
+// (bumped whenever the sampling or the file layout changes). Directory:
+// $DERMIS_CACHE_DIR, else $XDG_CACHE_HOME/dermis, else $HOME/.cache/dermis.
+// File sh-transfer-<16 hex digits>.bin, native byte order:
+//   magic "DRMSSHT1" (8 bytes), version u32, rays per vertex u32,
+//   vertex count u64, key u64, FNV-1a of the payload u64,
+//   then vertex count x 9 float32 (the transfer, vertex by vertex).
+// A file that fails any check (size, magic, version, count, rays, key,
+// payload hash) is ignored with one warning and recomputed; a directory that
+// cannot be written gives a warning, never an error. Files are written to a
+// temporary name in the same directory and renamed, so a reader never sees
+// half a file.
+
+#include "core/Result.h"
+#include "env/ShTransfer.h"
+#include "mesh/Mesh.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace dermis {
+
+constexpr uint32_t kShTransferCacheVersion = 1;
+
+uint64_t shTransferCacheKey(const MeshData& mesh, int raysPerVertex);
+
+// Empty when none of the variables is set.
+std::filesystem::path shTransferCacheDirectory();
+
+// "sh-transfer-<key in 16 hex digits>.bin"
+std::string shTransferCacheFileName(uint64_t key);
+
+struct ShTransferLoad {
+    ShTransfer transfer;
+    bool fromCache = false;
+    std::filesystem::path cacheFile;  // empty when there is no cache directory
+};
+
+// The cached transfer if a valid file exists, else computeShTransfer (timed
+// in one info line) and an attempt to store it. Errors only for what
+// computeShTransfer refuses.
+Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTransferOptions& options = {});
+
+}  // namespace dermis
