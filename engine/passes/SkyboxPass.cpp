@@ -22,7 +22,8 @@ graph::TextureHandle addSkyboxPass(graph::RenderGraph& graph, const FrameContext
             "skybox",
             [&](graph::PassBuilder& builder, SkyboxData& d) {
                 d.depth = builder.read(gbuffer.depthStencil);
-                d.hdr = builder.write(hdr);
+                // It draws over the composite's colour, which must exist first.
+                d.hdr = builder.write(builder.read(hdr));
                 const bool skip = !frame.plan.environment.skybox;
                 builder.skipIf(skip, skip ? skyboxSkipReason(frame.plan) : std::string());
             },
