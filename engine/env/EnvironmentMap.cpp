@@ -138,7 +138,12 @@ Result<Image> makeBuiltInEnvironment(const std::string& name, int height) {
         return makeProceduralSky(sky, height);
     }
     if (name == "studio") return makeProceduralStudio(ProceduralStudio{}, height);
-    return makeError(name, "unknown built-in environment (known: sky or studio)");
+    if (name == "uniform") {
+        Image map = emptyLatLong(height);
+        std::fill(map.texels.begin(), map.texels.end(), glm::vec4(1.0f));
+        return map;
+    }
+    return makeError(name, "unknown built-in environment (known: sky, studio or uniform)");
 }
 
 }  // namespace dermis

@@ -63,7 +63,8 @@ Image makeProceduralStudio(const ProceduralStudio& studio, int height);
 constexpr int kBuiltInEnvironmentHeight = 256;
 
 // The built-in environment of that name ("sky": makeProceduralSky with a sun
-// giving about twice the sky's irradiance; "studio": makeProceduralStudio).
+// giving about the sky's irradiance; "studio": makeProceduralStudio;
+// "uniform": radiance 1 everywhere, the white furnace).
 // An unknown name is an error listing the known ones.
 Result<Image> makeBuiltInEnvironment(const std::string& name, int height = kBuiltInEnvironmentHeight);
 

@@ -118,7 +118,7 @@ struct Background {
 // scene (source empty), the frame has the uniform settings.ambient only.
 // The environments the engine makes itself (env/EnvironmentMap.h), so that a
 // scene needs no file; any other `source` is a map file.
-inline constexpr std::string_view kBuiltInEnvironments[] = {"sky", "studio"};
+inline constexpr std::string_view kBuiltInEnvironments[] = {"sky", "studio", "uniform"};
 bool isBuiltInEnvironment(const std::string& source);
 
 struct EnvironmentRotation {

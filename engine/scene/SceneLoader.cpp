@@ -389,8 +389,9 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
     choice(object, "specular", kEnvironmentSpeculars, environment.specular);
     object.integer("sh_bands", environment.shBands, Range::closed(1, kMaxShBands));
     JsonContext& context = root.context();
+    const std::vector<std::string> builtIn(std::begin(kBuiltInEnvironments), std::end(kBuiltInEnvironments));
     if (context.check(object.has("source"), object.pointer("source"),
-                      "is required: a built-in environment (" + listForMessage({kBuiltInEnvironments[0].data(), kBuiltInEnvironments[1].data()}, "or") +
+                      "is required: a built-in environment (" + listForMessage(builtIn, "or") +
                           ") or a lat-long map file")) {
         const json* rotationValue = object.member("rotation");
         if (rotationValue == nullptr) return;
