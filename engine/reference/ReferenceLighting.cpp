@@ -2,13 +2,17 @@
 
 #include "gpu/UniformBlocks.h"
 #include "brdf/EnergyTable.h"
+#include "core/Hash.h"
+#include "import/EnvironmentSource.h"
 #include "raytrace/Sampling.h"
 
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <string>
 
 namespace dermis::reference {
 namespace {
@@ -34,22 +38,65 @@ float radicalInverse2(uint32_t i) {
     return float(double(i) / 4294967296.0);
 }
 
+// The Hammersley set of `count` points on the unit square, each centred in its stratum.
+std::vector<glm::vec2> hammersleySquare(int count) {
+    std::vector<glm::vec2> points;
+    for (int i = 0; i < count; ++i) {
+        points.emplace_back((float(i) + 0.5f) / float(count), radicalInverse2(uint32_t(i)) + 0.5f / float(count));
+    }
+    return points;
+}
+
 // A stratified (Hammersley) set on the unit square, taken onto the unit disc by
-// the concentric map (Shirley & Chiu 1997), which keeps the strata's areas.
+// the concentric map, which keeps the strata's areas.
 std::vector<glm::vec2> discSamples(int count) {
     std::vector<glm::vec2> samples;
-    for (int i = 0; i < count; ++i)
-        samples.push_back(raytrace::concentricDisc(
-            glm::vec2((float(i) + 0.5f) / float(count), radicalInverse2(uint32_t(i)) + 0.5f / float(count))));
+    for (const glm::vec2& p : hammersleySquare(count)) samples.push_back(raytrace::concentricDisc(p));
     return samples;
+}
+
+// Two unit vectors that make a right-handed orthonormal frame with the unit `axis`.
+void tangentFrame(const glm::vec3& axis, glm::vec3& t, glm::vec3& b) {
+    t = glm::normalize(glm::cross(axis, std::fabs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    b = glm::cross(axis, t);
+}
+
+// Where rays towards `direction` leave the point: off the surface on that side of the triangle's plane.
+glm::vec3 rayOrigin(const SurfacePoint& point, const glm::vec3& direction) {
+    const float side = glm::dot(point.geometricNormal, direction) >= 0.0f ? 1.0f : -1.0f;
+    return point.positionM + point.geometricNormal * (side * kShadowOffsetM);
+}
+
+// A hash of the point's position bits: the seed of its environment samples, so
+// that they depend on the point alone (not on the thread or the call order).
+uint32_t positionSeed(const glm::vec3& positionM) {
+    uint32_t seed = 0x9e3779b9u;
+    for (int i = 0; i < 3; ++i) {
+        uint32_t bits = 0;
+        std::memcpy(&bits, &positionM[i], sizeof bits);
+        seed = lowbias32(seed ^ bits);
+    }
+    return seed;
+}
+
+// A uniform number in [0, 1) from a hash: its top 24 bits.
+float unitFromHash(uint32_t hash) { return float(hash >> 8) * (1.0f / 16777216.0f); }
+
+// `p` shifted by `shift` modulo 1 (Cranley & Patterson 1976): a stratified set
+// stays stratified and each point becomes uniform.
+glm::vec2 shiftedModuloOne(const glm::vec2& p, const glm::vec2& shift) {
+    constexpr float kBelowOne = 0x1.fffffep-1f;
+    glm::vec2 q = p + shift;
+    for (int i = 0; i < 2; ++i) q[i] = std::min(q[i] >= 1.0f ? q[i] - 1.0f : q[i], kBelowOne);
+    return q;
 }
 
 // A unit direction within the cone of half-angle asin(sinRadius) around `axis`,
 // for the disc point `p`: uniform in solid angle when `p` is uniform over the
 // disc, as cos(theta) = 1 - |p|^2 (1 - cos(radius)).
 glm::vec3 coneDirection(const glm::vec3& axis, float sinRadius, const glm::vec2& p) {
-    const glm::vec3 t = glm::normalize(glm::cross(axis, std::fabs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
-    const glm::vec3 b = glm::cross(axis, t);
+    glm::vec3 t, b;
+    tangentFrame(axis, t, b);
     const double sinR = sinRadius;
     const double oneMinusCosR = sinR * sinR / (1.0 + std::sqrt(std::max(0.0, 1.0 - sinR * sinR)));
     const double r2 = double(glm::dot(p, p));
@@ -62,12 +109,36 @@ glm::vec3 coneDirection(const glm::vec3& axis, float sinRadius, const glm::vec2&
 
 }  // namespace
 
-ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders)
+Result<ReferenceLighting> ReferenceLighting::create(const Scene& scene, const Bvh& occluders, int environmentSamples) {
+    if (environmentSamples < kMinEnvironmentSamples || environmentSamples > kMaxEnvironmentSamples) {
+        return makeError("reference", "the environment samples must be from " + std::to_string(kMinEnvironmentSamples) +
+                                          " to " + std::to_string(kMaxEnvironmentSamples) + " (got " +
+                                          std::to_string(environmentSamples) + ")");
+    }
+    Image environmentMap;
+    if (scene.environment.enabled()) {
+        auto loaded = loadEnvironmentSource(scene.environment);
+        if (!loaded.ok()) return loaded.error();
+        environmentMap = std::move(*loaded);
+    }
+    return ReferenceLighting(scene, occluders, std::move(environmentMap), environmentSamples);
+}
+
+ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders, Image environmentMap,
+                                     int environmentSamples)
     : mOccluders(&occluders),
       mDiscSamples(discSamples(kAreaLightSamples)),
       mAmbient(scene.settings.ambient),
       mEnergyConservation(scene.settings.energyConservation),
-      mEnergyTable(makeEnergyTable(kEnergyTableSize)) {
+      mEnergyTable(makeEnergyTable(kEnergyTableSize)),
+      mEnvironment(std::move(environmentMap)),
+      mEnvironmentIntensity(scene.environment.intensity),
+      // The reference renders scene time 0, as it poses animated characters.
+      mWorldFromMap(scene.environment.worldFromMap(0.0f)) {
+    const int samples = std::clamp(environmentSamples, kMinEnvironmentSamples, kMaxEnvironmentSamples);
+    const int mapSamples = mEnvironment.canSample() ? samples / 2 : 0;
+    mMapSquareSamples = hammersleySquare(mapSamples);
+    mCosineSquareSamples = hammersleySquare(samples - mapSamples);
     const size_t count = std::min<size_t>(scene.lights.size(), DERMIS_MAX_LIGHTS);
     int shadowedCount = 0;
     for (size_t i = 0; i < count; ++i) {
@@ -134,14 +205,58 @@ glm::vec3 ReferenceLighting::irradiance(const SurfacePoint& point, LightVisibili
         const float share = mEnergyConservation ? energyLeftForDiffuse(nDotL, point.roughness, point.rhoS) : 1.0f;
         e += radiance * (nDotL * share);
     }
-    return e;
+    return e + environmentIrradiance(point);
+}
+
+glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point) const {
+    if (mEnvironment.empty() || !(mEnvironmentIntensity > 0.0f)) return glm::vec3(0.0f);
+    const glm::vec3& n = point.shadingNormal;
+    const float mapCount = float(mMapSquareSamples.size());
+    const float cosineCount = float(mCosineSquareSamples.size());
+    // One term of the multi-sample estimator with the power heuristic, exponent 2
+    // (Veach 1997 eq. 9.12 with 9.15): for a direction drawn by technique t,
+    //   w_t f / (n_t p_t) = f n_t p_t / ((n_map p_map)^2 + (n_cos p_cos)^2),
+    // p_cos = max(N.omega, 0) / pi.
+    auto term = [&](const glm::vec3& omega, const glm::vec3& radiance, float mapPdfPerSr, bool fromMap) {
+        const float cosTheta = glm::dot(n, omega);
+        if (!(cosTheta > 0.0f) || radiance == glm::vec3(0.0f)) return glm::vec3(0.0f);
+        const float mapDensity = mapCount * mapPdfPerSr;
+        const float cosineDensity = cosineCount * cosTheta * glm::one_over_pi<float>();
+        const float density =
+            (mapDensity * mapDensity + cosineDensity * cosineDensity) / (fromMap ? mapDensity : cosineDensity);
+        if (mOccluders->anyHit(Ray{rayOrigin(point, omega), omega}, 0.0f, std::numeric_limits<float>::infinity())) {
+            return glm::vec3(0.0f);
+        }
+        const float share = mEnergyConservation ? energyLeftForDiffuse(cosTheta, point.roughness, point.rhoS) : 1.0f;
+        return radiance * (cosTheta * share / density);
+    };
+    const uint32_t seed = positionSeed(point.positionM);
+    const glm::vec2 mapShift(unitFromHash(lowbias32(seed + 1u)), unitFromHash(lowbias32(seed + 2u)));
+    const glm::vec2 cosineShift(unitFromHash(lowbias32(seed + 3u)), unitFromHash(lowbias32(seed + 4u)));
+    glm::dvec3 sum(0.0);
+    for (const glm::vec2& square : mMapSquareSamples) {
+        const EnvironmentSample sample = mEnvironment.sample(shiftedModuloOne(square, mapShift));
+        sum += glm::dvec3(term(mWorldFromMap * sample.direction, sample.radiance, sample.pdfPerSr, true));
+    }
+    glm::vec3 t, b;
+    tangentFrame(n, t, b);
+    for (const glm::vec2& square : mCosineSquareSamples) {
+        // Malley's method: a uniform disc point lifted onto the hemisphere is cosine-distributed
+        // (Pharr, Jakob & Humphreys 2016 §13.6.3).
+        const glm::vec2 u = shiftedModuloOne(square, cosineShift);
+        const glm::vec2 disc = raytrace::concentricDisc(u);
+        const float up = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));
+        const glm::vec3 omega = glm::normalize(disc.x * t + disc.y * b + up * n);
+        const glm::vec3 mapDirection = glm::transpose(mWorldFromMap) * omega;
+        sum += glm::dvec3(term(omega, mEnvironment.radiance(mapDirection), mEnvironment.pdfPerSr(mapDirection), false));
+    }
+    return glm::vec3(sum) * mEnvironmentIntensity;
 }
 
 float ReferenceLighting::lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
                                          LightVisibility* visibility) const {
     const PreparedLight& light = mLights[index];
-    const float side = glm::dot(point.geometricNormal, l) >= 0.0f ? 1.0f : -1.0f;
-    const glm::vec3 origin = point.positionM + point.geometricNormal * (side * kShadowOffsetM);
+    const glm::vec3 origin = rayOrigin(point, l);
     // The light's angular radius seen from the point; a sphere around the point is a delta light.
     float sinRadius = light.sinAngularRadius;
     if (light.type != DERMIS_LIGHT_DIRECTIONAL) sinRadius = light.radiusM < distanceM ? light.radiusM / distanceM : 0.0f;

@@ -18,10 +18,25 @@
 //   (a cone for a directional light, the visible disc of the sphere for spot and
 //   point lights) that nothing blocks; radiance, N.L and the spot fade stay those
 //   of the light's centre, as in the renderer. A delta light casts one ray.
+// - the environment (Scene::environment, when it has a source) adds
+//     E_env = intensity x integral over the sphere of L_map(R^T omega) V(omega) max(N.omega, 0)
+//             x (1 - rho_s rho_dt(N.omega, m)) d omega,
+//   R = worldFromMap(0), V exact visibility through the occluders, the last
+//   factor only with settings.energyConservation: the true quantity the
+//   renderer's SH irradiance with transfer approximates. It is estimated by
+//   multiple importance sampling (Veach 1997 §9.2, the balance heuristic) of the
+//   map's luminance (EnvironmentSampling.h) and the cosine-weighted hemisphere,
+//   environmentSamples rays per point, with a stratified set that a hash of the
+//   point's position shifts (deterministic, independent of threads). The
+//   renderer's environment occlusion, specular and SH band settings do not
+//   change it: they are its approximations.
 // Transmittance (back-lit light through thin parts) is not part of E.
 
+#include "core/Image.h"
+#include "core/Result.h"
 #include "raytrace/Bvh.h"
 #include "reference/CharacterSurface.h"
+#include "reference/EnvironmentSampling.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -40,6 +55,12 @@ namespace dermis::reference {
 // Shadow rays per sized light: 1/64 steps of visibility across a penumbra.
 constexpr int kAreaLightSamples = 64;
 
+// Environment rays per shading point by default (half from the map's
+// distribution, half cosine-weighted): docs/reference.md gives the noise and cost.
+constexpr int kEnvironmentSamples = 128;
+constexpr int kMinEnvironmentSamples = 2;  // one per technique
+constexpr int kMaxEnvironmentSamples = 65536;
+
 // Which lights a sample tested with shadow rays, which of those it saw whole
 // (every ray unblocked) and which not at all (every ray blocked). Two samples
 // that tested the same light and differ in either lie on either side of a
@@ -57,11 +78,22 @@ struct LightVisibility {
 
 class ReferenceLighting {
 public:
-    // `occluders` must outlive this object.
-    ReferenceLighting(const Scene& scene, const Bvh& occluders);
+    // Loads the scene's environment map (loadEnvironmentSource) when it has one:
+    // its errors, and an environmentSamples outside [kMinEnvironmentSamples,
+    // kMaxEnvironmentSamples], are returned.
+    static Result<ReferenceLighting> create(const Scene& scene, const Bvh& occluders,
+                                            int environmentSamples = kEnvironmentSamples);
+    // `occluders` must outlive this object. `environmentMap`: the radiance map of
+    // scene.environment in map space (the scene's source is not read here), empty
+    // for none; the environment's intensity and rotation apply to it.
+    // `environmentSamples` is clamped to [kMinEnvironmentSamples, kMaxEnvironmentSamples].
+    ReferenceLighting(const Scene& scene, const Bvh& occluders, Image environmentMap = Image{},
+                      int environmentSamples = kEnvironmentSamples);
 
     // E at the point (energy conservation on the way in included).
     glm::vec3 irradiance(const SurfacePoint& point, LightVisibility* visibility = nullptr) const;
+    // E_env alone (0 without an environment).
+    glm::vec3 environmentIrradiance(const SurfacePoint& point) const;
     // The fraction of light `index` that reaches the point (1 for an unshadowed
     // light), with the light's centre towards `l`; sets its bits in `visibility`.
     float lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
@@ -90,6 +122,11 @@ private:
     glm::vec3 mAmbient{0.0f};
     bool mEnergyConservation = true;
     std::vector<float> mEnergyTable;  // row-major, row = m (engine/brdf/EnergyTable.h)
+    EnvironmentDistribution mEnvironment;  // empty: no environment light
+    float mEnvironmentIntensity = 0.0f;
+    glm::mat3 mWorldFromMap{1.0f};
+    std::vector<glm::vec2> mMapSquareSamples;     // unit-square points for the map's technique
+    std::vector<glm::vec2> mCosineSquareSamples;  // and for the cosine-weighted one
 };
 
 }  // namespace dermis::reference

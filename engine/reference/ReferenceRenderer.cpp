@@ -80,7 +80,9 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     }
     renderer.mFirstTriangle.push_back(static_cast<uint32_t>(corners.size() / 3));
     renderer.mBvh = std::make_unique<Bvh>(Bvh::build(corners));
-    renderer.mLighting = std::make_unique<ReferenceLighting>(renderer.mScene, *renderer.mBvh);
+    auto lighting = ReferenceLighting::create(renderer.mScene, *renderer.mBvh, options.environmentSamples);
+    if (!lighting.ok()) return lighting.error();
+    renderer.mLighting = std::make_unique<ReferenceLighting>(std::move(*lighting));
     renderer.mStats.triangles = renderer.mBvh->triangleCount();
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         renderer.mExactValues.push_back(

@@ -5,7 +5,8 @@
 //              integral over the character of R(|x_o - x_i|) E(x_i) albedo^mix(x_i) dA_i,
 // the outgoing energy factor only with settings.energyConservation, exactly as
 // the renderer's composite applies it (shaders/include/OutgoingDiffuse.glsl).
-// E is ReferenceLighting's (lights, shadow rays, ambient with AO = 1; no
+// E is ReferenceLighting's (lights, shadow rays, the environment by multiple
+// importance sampling with visibility rays, ambient with AO = 1; no
 // transmittance). Characters without a profile, and every character when
 // settings.sss.enabled is false, are local: L_d = E(x_o) x albedo(x_o) x the
 // outgoing factor. R is the character's profile with settings.sss.widthScale
@@ -59,6 +60,9 @@ constexpr int kDefaultSamplesPerPixel = 4;
 struct ReferenceOptions {
     QuadratureSettings quadrature;  // density: samples per s^2 for every Gaussian of standard deviation s (> 0)
     int samplesPerPixel = kDefaultSamplesPerPixel;  // a perfect square n^2, 1 to kMaxSamplesPerPixel
+    // rays per shading point for the environment's light (ReferenceLighting.h), kMinEnvironmentSamples
+    // to kMaxEnvironmentSamples; unused without an environment
+    int environmentSamples = kEnvironmentSamples;
     // per character (scene order); an empty Image = this character uses the exact lighting
     std::vector<Image> engineIrradiance;   // empty: none at all (EngineIrradiance.h for the layout)
     int threads = 0;            // 0: one per hardware thread

@@ -1,0 +1,59 @@
+#pragma once
+// Importance sampling of a lat-long environment map (env/SphericalHarmonics.h
+// gives the layout), after Pharr, Jakob & Humphreys 2016 §13.6.7 and §14.2.4:
+// a piecewise-constant 2-D distribution over the texels, proportional to
+// luminance x texel solid angle, drawn as a marginal over rows and a
+// conditional over the columns of the chosen row. Inside the chosen texel the
+// direction is uniform in (phi, cos theta), which is uniform in solid angle,
+// so the density is constant over a texel:
+//   pdf(omega) = luminance(texel) / sum over texels of luminance x solid angle   (per steradian).
+// The map is taken as piecewise constant too (each texel's radiance over its
+// whole patch of the sphere), the function whose integral the SH projection
+// (projectLatLong) sums. Black texels have density 0: a caller must cover them
+// with another technique (multiple importance sampling) if they matter.
+// Directions are in map space; the caller rotates them.
+
+#include "core/Image.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace dermis::reference {
+
+struct EnvironmentSample {
+    glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit, map space
+    float pdfPerSr = 0.0f;
+    glm::vec3 radiance{0.0f};  // the map's texel there
+};
+
+class EnvironmentDistribution {
+public:
+    EnvironmentDistribution() = default;
+    // `map`: linear RGB radiance, lat-long, width = 2 height (checkEnvironmentMap's maps).
+    explicit EnvironmentDistribution(Image map);
+
+    bool empty() const { return mMap.empty(); }
+    // False when every texel is black: sample() cannot be used then.
+    bool canSample() const { return mTotalWeight > 0.0; }
+
+    // A direction for the uniform numbers `u` in [0, 1)^2; the first picks the row,
+    // the second the column, and what remains of each places it inside the texel.
+    EnvironmentSample sample(const glm::vec2& u) const;
+    // The density sample() draws `direction` (unit, map space) with, per steradian.
+    float pdfPerSr(const glm::vec3& direction) const;
+    // The map's radiance towards `direction` (unit, map space), piecewise constant.
+    glm::vec3 radiance(const glm::vec3& direction) const;
+
+private:
+    glm::ivec2 texelOf(const glm::vec3& direction) const;
+    float pdfOfTexel(const glm::ivec2& texel) const;
+
+    Image mMap;
+    std::vector<float> mLuminance;        // per texel, row-major
+    std::vector<double> mRowCdf;          // height + 1 entries, 0 .. 1
+    std::vector<double> mColumnCdfs;      // per row, width + 1 entries each, 0 .. 1
+    double mTotalWeight = 0.0;            // sum of luminance x texel solid angle
+};
+
+}  // namespace dermis::reference
