@@ -88,6 +88,30 @@ TEST(View, BatchScreenshotUnderXvfb) {
     EXPECT_GT(glm::length(panel.mean - scene.mean), 0.05f) << "the panel and scene areas look the same";
 }
 
+// A scene with the built-in sky as its environment, panels hidden: where the
+// head does not cover the frame the map shows, pale blue sky above the horizon
+// and ground below it, not the scene's flat, near-black background colour.
+TEST(View, EnvironmentShowsBehindTheHeadUnderXvfb) {
+    if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt-get install xvfb): dermis view needs a display";
+    TempDir dir;
+    const std::string png = dir.file("sky.png");
+    const ProcessResult r = runProcess("xvfb-run -a -s \"-screen 0 1280x800x24\" " + kDermis + " view " + defaultScene() +
+                                       " --set 'environment={\"source\":\"sky\"}' --no-panels --frames 3 --screenshot " +
+                                       png + " --size 640x360");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto image = dermis::loadImage(png, dermis::ColourSpace::Linear);
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    ASSERT_EQ(image->width, 640);
+    ASSERT_EQ(image->height, 360);
+
+    // The head is in the middle; the left edge shows the map: sky at the top, ground at the bottom.
+    const RegionStats sky = stats(*image, 0, 0, 120, 60);
+    const RegionStats ground = stats(*image, 0, 300, 120, 360);
+    EXPECT_GT(sky.lumaMin, 0.3f) << "the top left is not sky (the background colour is near black)";
+    EXPECT_GT(sky.mean.b, sky.mean.r) << "the sky is not blue";
+    EXPECT_GT(glm::length(sky.mean - ground.mean), 0.1f) << "sky and ground look the same: a flat background";
+}
+
 TEST(View, MissingSceneFails) {
     TempDir dir;
     const ProcessResult r = runProcess(kDermis + " view " + dir.file("no-such-scene.json") + " --frames 1 --screenshot " +

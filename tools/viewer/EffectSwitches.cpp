@@ -14,6 +14,7 @@ void applySwitches(const Scene& edited, const EffectSwitches& switches, Scene& r
     rendered.path = edited.path;
     rendered.camera = edited.camera;
     rendered.background = edited.background;
+    rendered.environment = edited.environment;
     rendered.settings = edited.settings;
     for (size_t i = 0; i < rendered.characters.size() && i < edited.characters.size(); ++i) {
         rendered.characters[i] = edited.characters[i];

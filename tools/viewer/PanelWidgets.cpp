@@ -7,15 +7,18 @@
 
 namespace dermis::viewer::widgets {
 
-bool comboString(const char* label, std::string& value, const std::vector<std::string>& options) {
+bool comboString(const char* label, std::string& value, const std::vector<std::string>& options,
+                 const std::vector<std::string>& tooltips) {
     bool changed = false;
     if (ImGui::BeginCombo(label, value.c_str())) {
-        for (const std::string& option : options) {
+        for (size_t i = 0; i < options.size(); ++i) {
+            const std::string& option = options[i];
             const bool selected = option == value;
             if (ImGui::Selectable(option.c_str(), selected) && !selected) {
                 value = option;
                 changed = true;
             }
+            if (i < tooltips.size() && !tooltips[i].empty()) hoverTooltip(tooltips[i].c_str());
             if (selected) ImGui::SetItemDefaultFocus();
         }
         ImGui::EndCombo();
@@ -62,16 +65,19 @@ bool direction(const char* label, glm::vec3& dir) {
     return true;
 }
 
+void hoverTooltip(const char* text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 void help(const char* text) {
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(text);
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
+    hoverTooltip(text);
 }
 
 }  // namespace dermis::viewer::widgets

@@ -13,12 +13,18 @@
 
 namespace dermis::viewer::widgets {
 
-bool comboString(const char* label, std::string& value, const std::vector<std::string>& options);
-// One value of a closed set, shown by its name from `table`.
+// `tooltips`, when given, holds one line per option (empty: none), shown while
+// the option is hovered.
+bool comboString(const char* label, std::string& value, const std::vector<std::string>& options,
+                 const std::vector<std::string>& tooltips = {});
+// One value of a closed set, shown by its name from `table`, each entry with
+// its description as a tooltip.
 template <typename E, size_t N>
 bool comboEnum(const char* label, const EnumTable<E, N>& table, E& value) {
     std::string name(table.name(value));
-    if (!comboString(label, name, table.names())) return false;
+    std::vector<std::string> descriptions;
+    for (const EnumEntry<E>& entry : table) descriptions.emplace_back(entry.description);
+    if (!comboString(label, name, table.names(), descriptions)) return false;
     value = table.parse(name).value_or(value);
     return true;
 }
@@ -33,5 +39,7 @@ bool colourLinear(const char* label, glm::vec3& colour, bool hdr);
 bool direction(const char* label, glm::vec3& direction);
 // "(?)" with a tooltip.
 void help(const char* text);
+// `text` in a tooltip while the last item is hovered.
+void hoverTooltip(const char* text);
 
 }  // namespace dermis::viewer::widgets

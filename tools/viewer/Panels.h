@@ -29,6 +29,11 @@ bool framePanel(Scene& scene);  // exposure, ambient, background, energy conserv
 bool otherSettingsPanel(Scene& scene, std::string& error);
 bool hasOtherSettings(const Scene& scene);
 
+// The environment light's source, intensity, rotation, background, occlusion,
+// specular and SH bands (EnvironmentPanel.cpp). `edit` holds the map file being
+// typed and the latest refusal (Variant::takeRefusedEnvironment).
+bool environmentPanel(Scene& scene, EnvironmentEdit& edit);
+
 // Play / pause, the frame time and each animated character's clip (AnimationPanel.cpp).
 // `geometry` is the rendered scene's (null before its first frame).
 bool animationPanel(ViewerState& state, Scene& scene, const SceneGeometry* geometry);

@@ -15,10 +15,24 @@ Status Variant::render(const FrameRequest& request, const EffectSwitches& switch
         }
         mRenderer = std::move(*renderer);
     }
-    if (const Status status = mRenderer->renderFrame(request); !status.ok()) return status;
+    Status status = mRenderer->renderFrame(request);
+    if (!status.ok() && mRenderedSource && *mRenderedSource != mEdited.environment.source) {
+        mRefusedEnvironment = status.error();
+        mEdited.environment.source = *mRenderedSource;
+        applySwitches(mEdited, switches, *mRendered);
+        status = mRenderer->renderFrame(request);
+    }
+    if (!status.ok()) return status;
+    mRenderedSource = mEdited.environment.source;
     mHistory.update(mRenderer->timings().summary());
     mRenderer->resetTimings();
     return success();
+}
+
+std::optional<Error> Variant::takeRefusedEnvironment() {
+    std::optional<Error> refused;
+    std::swap(refused, mRefusedEnvironment);
+    return refused;
 }
 
 Status Variant::reloadShaders() {

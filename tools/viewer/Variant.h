@@ -26,8 +26,12 @@ public:
     const Scene& edited() const { return mEdited; }
 
     // Applies the switches, creates the renderer when there is none yet, renders
-    // and folds the frame's timings into history().
+    // and folds the frame's timings into history(). An edited environment
+    // source that fails to load is undone (the renderer keeps the map it had)
+    // and the frame rendered again; takeRefusedEnvironment() then says why.
     Status render(const FrameRequest& request, const EffectSwitches& switches);
+    // The latest refused environment source, once; none when there was none since the last call.
+    std::optional<Error> takeRefusedEnvironment();
     bool hasRenderer() const { return mRenderer != nullptr; }
     GLuint outputTexture() const { return mRenderer ? mRenderer->outputTexture() : 0; }
     // The rendered scene's meshes and rigs; null before the renderer exists.
@@ -44,6 +48,8 @@ private:
     std::unique_ptr<Scene> mRendered;
     std::unique_ptr<Renderer> mRenderer;
     std::optional<Error> mCreateError;  // a renderer that failed to load is not retried every frame
+    std::optional<std::string> mRenderedSource;  // the environment source of the latest frame rendered
+    std::optional<Error> mRefusedEnvironment;
     PassHistory mHistory;
 };
 

@@ -66,6 +66,7 @@ private:
     void carryOutRequests();
     void reloadShaders();
     Status renderScene(const UiRect& area);
+    void reportRefusedEnvironments();
     void present(const UiRect& area);
 
     // Declared first: destroyed last, after every GL object below.
@@ -121,6 +122,7 @@ void Viewer::settingsWindow() {
         changed |= otherSettingsPanel(scene, refused);
     }
     if (ImGui::CollapsingHeader("Lights")) changed |= lightsPanel(scene);
+    if (ImGui::CollapsingHeader("Environment")) changed |= environmentPanel(scene, mState.environment);
     if (ImGui::CollapsingHeader("Shadows")) changed |= shadowPanel(scene, refused);
     if (ImGui::CollapsingHeader("SSS", ImGuiTreeNodeFlags_DefaultOpen)) changed |= sssPanel(scene, refused);
     if (ImGui::CollapsingHeader("Transmittance")) changed |= transmittancePanel(scene.settings.transmittance);
@@ -239,6 +241,16 @@ Status Viewer::renderScene(const UiRect& area) {
     return success();
 }
 
+void Viewer::reportRefusedEnvironments() {
+    for (Variant* variant : {&mA, &mB}) {
+        if (const std::optional<Error> refused = variant->takeRefusedEnvironment()) {
+            mState.environment.error = refused->message();
+            mState.report("render error: " + refused->message() + " (the previous environment stays)", true);
+            log::error(refused->message());
+        }
+    }
+}
+
 void Viewer::present(const UiRect& area) {
     const glm::ivec2 framebuffer = mWindow->framebufferSize();
     const float scale = mWindow->uiScale();
@@ -277,6 +289,7 @@ Status Viewer::run() {
         mB.edited().camera = mView;
 
         const Status rendered = renderScene(area);
+        reportRefusedEnvironments();
         if (!rendered.ok() && batch()) return rendered;
         mState.renderError = rendered.ok() ? "" : rendered.error().message();
         present(area);

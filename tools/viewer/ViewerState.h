@@ -26,6 +26,14 @@ struct ViewerRequests {
     bool quit = false;
 };
 
+// The Environment panel's own fields: the map file being typed, and why the
+// latest source was not loaded.
+struct EnvironmentEdit {
+    bool fileChosen = false;  // "file..." picked in the source combo: the source changes on Enter
+    std::string file;         // as typed; a relative path is from the current directory
+    std::string error;        // the latest refused source; cleared by the next one applied
+};
+
 struct ViewerState {
     ViewMode mode = ViewMode::Single;
     EditTarget editTarget = EditTarget::A;
@@ -49,6 +57,7 @@ struct ViewerState {
     std::chrono::steady_clock::time_point messageTime;
     std::string shaderError;  // the latest failed shader reload; empty once they compile again
     std::string renderError;  // the latest failed frame
+    EnvironmentEdit environment;
 
     ViewerRequests requests;
 
