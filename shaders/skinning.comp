@@ -22,17 +22,13 @@
 #define DERMIS_USE_SKINNING_BLOCK
 #include "UniformBlocks.glsl"
 
+#include "SkinBlend.glsl"
+
 layout(local_size_x = DERMIS_SKINNING_GROUP_SIZE) in;
 
-struct Influence {
-    uvec4 joints;
-    vec4 weights;
-};
 
 layout(std430, binding = DERMIS_BINDING_SKIN_SOURCE) readonly buffer SkinSource { float sourceFloats[]; };
-layout(std430, binding = DERMIS_BINDING_SKIN_INFLUENCES) readonly buffer SkinInfluences { Influence influences[]; };
 layout(std430, binding = DERMIS_BINDING_SKIN_MORPHS) readonly buffer SkinMorphs { float morphDeltas[]; };
-layout(std430, binding = DERMIS_BINDING_SKIN_PALETTE) readonly buffer SkinPalette { mat4 palette[]; };
 layout(std430, binding = DERMIS_BINDING_SKIN_MORPH_WEIGHTS) readonly buffer SkinMorphWeights { float morphWeights[]; };
 layout(std430, binding = DERMIS_BINDING_SKIN_OUTPUT) writeonly buffer SkinOutput { float outputFloats[]; };
 layout(std430, binding = DERMIS_BINDING_SKIN_DERIVATIVES) writeonly buffer SkinDerivatives { float derivativeFloats[]; };
@@ -63,12 +59,7 @@ void main() {
         normal = normalizeOrKeep(normal);
         tangent.xyz = normalizeOrKeep(tangent.xyz);
     }
-    const uvec2 packedJoints = influences[v].joints.xy;
-    const uint joint[4] = uint[4](packedJoints.x & 0xFFFFu, packedJoints.x >> 16, packedJoints.y & 0xFFFFu, packedJoints.y >> 16);
-    const vec4 weight = influences[v].weights;
-    mat4 m = mat4(0.0);
-    for (int i = 0; i < 4; ++i)
-        if (weight[i] != 0.0) m += weight[i] * palette[joint[i]];
+    const mat4 m = blendedSkinningMatrix(v);
     const mat3 linear = mat3(m);
     position = (m * vec4(position, 1.0)).xyz;
     normal = normalizeOrKeep(transpose(inverse(linear)) * normal);

@@ -165,4 +165,6 @@ Result<Image> Renderer::readOutput() {
     return image;
 }
 
+const GpuEnvironment& Renderer::gpuEnvironment() const { return mResources->environment(); }
+
 }  // namespace dermis

@@ -76,6 +76,8 @@ public:
     std::vector<CharacterReport> characterReports() const;
     void resetTimings() { mTimings = FrameTimings{}; }
     GpuScene& gpuScene() { return mGpuScene; }
+    // The environment's GPU side: its map, block and per-character transfer buffers.
+    const GpuEnvironment& gpuEnvironment() const;
     // The CPU side of the scene's meshes: bounds, UV layouts, rigs and their clips.
     const SceneGeometry& geometry() const { return mGeometry; }
     // The render graph's pooled transient targets (gl/TexturePool.h), in bytes.

@@ -32,6 +32,14 @@ void skin(const FrameContext& frame, size_t index) {
     const auto groups = static_cast<GLuint>((rig.vertexCount + DERMIS_SKINNING_GROUP_SIZE - 1) / DERMIS_SKINNING_GROUP_SIZE);
     // The passes after it read the buffer as vertex attributes.
     frame.gl->dispatchCompute(groups, GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    // The environment's transfer turns with the skinning (shaders/transfer_rotate.comp).
+    const GLuint posedTransfer = frame.gl->environment ? frame.gl->environment->posedTransfer(index) : 0;
+    if (frame.plan.environment.transfer && posedTransfer != 0) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DERMIS_BINDING_SKIN_SOURCE, frame.gl->environment->restTransfer(index));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DERMIS_BINDING_SKIN_OUTPUT, posedTransfer);
+        glUseProgram(frame.gl->programs->transferRotate.get());
+        frame.gl->dispatchCompute(groups, GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    }
 }
 
 // Some pass draws the character this frame: the G-buffer (it is on screen) or

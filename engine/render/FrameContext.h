@@ -8,6 +8,7 @@
 #include "gl/FramebufferCache.h"
 #include "gl/GlObjects.h"
 #include "render/FramePlan.h"
+#include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
 #include "render/TsMeshes.h"
@@ -28,6 +29,7 @@ struct FrameServices {
     const Programs* programs = nullptr;
     gl::FramebufferCache* framebuffers = nullptr;
     const TsMeshes* tsMeshes = nullptr;  // the texture-space meshes of the characters in FramePlan::ts
+    const GpuEnvironment* environment = nullptr;  // the environment's map, block and transfer buffers
     GLuint objectUniforms = 0;  // ObjectBlock, rewritten per draw
     GLuint passUniforms = 0;    // the per-pass block at DERMIS_BINDING_PASS, rewritten per pass
     GLuint regionUniforms = 0;  // ScreenRegionsBlock, rewritten by drawRegions

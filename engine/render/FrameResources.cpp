@@ -50,6 +50,7 @@ FrameResources::FrameResources(const GpuScene& gpuScene, const Programs& program
     mServices.programs = &programs;
     mServices.framebuffers = &framebuffers;
     mServices.tsMeshes = &mTsMeshes;
+    mServices.environment = &mEnvironment;
     mServices.objectUniforms = mObjectUniforms.get();
     mServices.passUniforms = mPassUniforms.get();
     mServices.regionUniforms = mRegionUniforms.get();
@@ -71,15 +72,16 @@ Status FrameResources::prepare(const FramePlan& plan, SceneGeometry& geometry) {
     mEnvironment.prepare(plan.environment, *plan.scene);
     if (plan.environment.transfer) {
         for (size_t c = 0; c < plan.characters.size(); ++c) {
-            if (const Status made = mEnvironment.prepareTransfer(c, geometry.mesh(c)); !made.ok()) return made;
-            GpuEnvironment::attachTransfer(mGpuScene.characters()[c].mesh.vertexArray.get(), mEnvironment.transferBuffer(c));
+            const bool animated = !mGpuScene.characters()[c].rig.empty();
+            if (const Status made = mEnvironment.prepareTransfer(c, geometry.mesh(c), animated); !made.ok()) return made;
+            GpuEnvironment::attachTransfer(mGpuScene.characters()[c].mesh.vertexArray.get(), mEnvironment.drawnTransfer(c));
         }
     }
     for (const TsCharacterPlan& character : plan.ts.characters) {
         const auto index = static_cast<size_t>(character.character);
         mTsMeshes.prepare(index, mGpuScene.characters()[index], geometry.uvLayout(index));
         if (plan.environment.transfer) {
-            GpuEnvironment::attachTransfer(mTsMeshes.get(index).vertexArray.get(), mEnvironment.transferBuffer(index));
+            GpuEnvironment::attachTransfer(mTsMeshes.get(index).vertexArray.get(), mEnvironment.drawnTransfer(index));
         }
     }
     return success();

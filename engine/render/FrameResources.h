@@ -39,6 +39,7 @@ public:
     // What the frame imports and executes with, as prepared.
     FrameInputs inputs() const;
     GLuint output() const { return mOutput.get(); }
+    const GpuEnvironment& environment() const { return mEnvironment; }
     const graph::TextureDesc& outputDesc() const { return mOutputDesc; }
 
 private:

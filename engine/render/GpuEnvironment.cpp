@@ -67,15 +67,21 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
     glBindTextureUnit(DERMIS_UNIT_ENVIRONMENT, mMap.get());
 }
 
-Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh) {
-    if (character < mTransfers.size() && mTransfers[character].isValid()) return success();
+Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, bool animated) {
+    if (character < mTransfers.size() && mTransfers[character].rest.isValid()) return success();
     auto loaded = loadOrComputeShTransfer(mesh);
     if (!loaded.ok()) return loaded.error();
     if (mTransfers.size() <= character) mTransfers.resize(character + 1);
     const std::vector<ShScalar9>& perVertex = loaded->transfer.perVertex;
-    gl::Buffer buffer = gl::createBuffer();
-    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(perVertex.size() * sizeof(ShScalar9)), perVertex.data(), 0);
-    mTransfers[character] = std::move(buffer);
+    const auto bytes = static_cast<GLsizeiptr>(perVertex.size() * sizeof(ShScalar9));
+    Transfer& transfer = mTransfers[character];
+    transfer.rest = gl::createBuffer();
+    glNamedBufferStorage(transfer.rest.get(), bytes, perVertex.data(), 0);
+    if (animated) {
+        // The rest pose's until the skinning pass turns it (PoseCache re-skins once the transfer exists).
+        transfer.posed = gl::createBuffer();
+        glNamedBufferStorage(transfer.posed.get(), bytes, perVertex.data(), 0);
+    }
     return success();
 }
 

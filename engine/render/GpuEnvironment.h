@@ -8,8 +8,9 @@
 //   - each character's per-vertex SH transfer (env/ShTransferCache.h: computed
 //     once, then read from the disk cache), a vertex buffer attached to its
 //     vertex arrays at DERMIS_LOCATION_TRANSFER, only when the occlusion is
-//     "transfer". An animated character's transfer is its rest pose's
-//     (docs/environment.md, "Animated characters").
+//     "transfer". An animated character has a second, posed buffer that the
+//     skinning pass fills by turning the rest pose's transfer with each
+//     vertex's skinning (shaders/transfer_rotate.comp); that one is attached.
 
 #include "core/Result.h"
 #include "gl/GlObjects.h"
@@ -28,10 +29,18 @@ public:
 
     // Uploads the block, and the map when its source changed. Binds both.
     void prepare(const EnvironmentPlan& plan, const Scene& scene);
-    // The character's transfer buffer, made on first need (0 before).
-    Status prepareTransfer(size_t character, const MeshData& mesh);
-    GLuint transferBuffer(size_t character) const {
-        return character < mTransfers.size() ? mTransfers[character].get() : 0;
+    // The character's transfer buffers, made on first need (0 before): the
+    // rest pose's, and for an animated character the posed one.
+    Status prepareTransfer(size_t character, const MeshData& mesh, bool animated);
+    GLuint restTransfer(size_t character) const {
+        return character < mTransfers.size() ? mTransfers[character].rest.get() : 0;
+    }
+    GLuint posedTransfer(size_t character) const {
+        return character < mTransfers.size() ? mTransfers[character].posed.get() : 0;
+    }
+    // What the character's vertex arrays read: the posed buffer if any, else the rest pose's.
+    GLuint drawnTransfer(size_t character) const {
+        return posedTransfer(character) != 0 ? posedTransfer(character) : restTransfer(character);
     }
     // Attaches a transfer buffer (three vec3 per vertex) to a vertex array.
     static void attachTransfer(GLuint vertexArray, GLuint buffer);
@@ -41,7 +50,11 @@ private:
     gl::Texture mMap;
     std::shared_ptr<const EnvironmentLight> mMapLight;  // what mMap was made from
     int mMapLevels = 0;
-    std::vector<gl::Buffer> mTransfers;
+    struct Transfer {
+        gl::Buffer rest;
+        gl::Buffer posed;  // animated characters only
+    };
+    std::vector<Transfer> mTransfers;
     std::vector<float> mAverageAlbedo;  // DERMIS_AVERAGE_ALBEDO_SIZE values of m
 };
 

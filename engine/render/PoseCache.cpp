@@ -9,7 +9,8 @@ void PoseCache::markCurrent(FramePlan& plan) const {
         const Written& written = mWritten[c];
         placement.poseCurrent = !written.pose.palette.empty() && written.pose.palette == placement.pose.palette &&
                                 written.pose.morphWeights == placement.pose.morphWeights &&
-                                (written.derivatives || !textureSpaceDraws(plan, c));
+                                (written.derivatives || !textureSpaceDraws(plan, c)) &&
+                                (written.transfer || !plan.environment.transfer);
     }
 }
 
@@ -18,7 +19,7 @@ void PoseCache::record(const FramePlan& plan, const graph::RenderGraph& graph) {
     for (size_t c = 0; c < plan.characters.size(); ++c) {
         const CharacterPlacement& placement = plan.characters[c];
         if (placement.animated && graph.wasExecuted(placement.skinPassName))
-            mWritten[c] = {placement.pose, textureSpaceDraws(plan, c)};
+            mWritten[c] = {placement.pose, textureSpaceDraws(plan, c), plan.environment.transfer};
     }
 }
 

@@ -23,6 +23,7 @@ private:
     struct Written {
         RigPose pose;  // an empty palette = nothing written yet
         bool derivatives = false;
+        bool transfer = false;  // the environment's transfer was turned with it
     };
     std::vector<Written> mWritten;  // per character
 };

@@ -39,9 +39,12 @@ Result<Programs> Programs::build() {
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }
-    auto skinning = gl::buildProgram({"", "", defines, "skinning.comp"});
-    if (!skinning.ok()) return skinning.error();
-    programs.skinning = std::move(*skinning);
+    for (const auto& [member, compute] : {std::pair{&Programs::skinning, "skinning.comp"},
+                                          std::pair{&Programs::transferRotate, "transfer_rotate.comp"}}) {
+        auto program = gl::buildProgram({"", "", defines, compute});
+        if (!program.ok()) return program.error();
+        programs.*member = std::move(*program);
+    }
     // Variants of shaders by a define: the LEAN variants (render/SssVariant.h)
     // with their LEAN outputs, the LEAN specular pass, the G-buffer with the
     // environment transfer, and the skybox (a full-screen triangle on the far

@@ -26,6 +26,7 @@ struct Programs {
     gl::Program tsBlur;
     gl::Program tsGather;
     gl::Program skinning;      // passes/SkinningPass.cpp (compute)
+    gl::Program transferRotate;  // passes/SkinningPass.cpp: the environment transfer turned with the skinning (compute)
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
     gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha

@@ -3,6 +3,7 @@
 #include "AnimatedCrowdBenchmarks.h"
 #include "BenchContext.h"
 #include "CrowdBenchmarks.h"
+#include "EnvironmentBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "TsBenchmarks.h"
 
@@ -57,5 +58,6 @@ int main(int argc, char** argv) {
     dermis::bench::printLeanSummary();
     dermis::bench::printCrowdSummary();
     dermis::bench::printAnimatedCrowdSummary();
+    dermis::bench::printEnvironmentSummary();
     return 0;
 }
