@@ -27,12 +27,16 @@ def environment(source, occlusion, intensity=1.0):
     return [f'environment={{"source": "{source}", "intensity": {intensity}, "occlusion": "{occlusion}"}}']
 
 
+OCCLUSIONS = ("none", "ssao", "transfer")
+DIFFERENCE_SCALE = 4
+
+
 def panels(scene):
     """(label, overrides) per panel: two environments, occlusion off / SSAO / transfer."""
     rows = []
-    for source, intensity in (("sky", 0.6), ("studio", 1.0)):
+    for source, intensity in (("sky", 0.2), ("studio", 0.3)):
         rows.append([(f"{source}, occlusion {occlusion}", ONLY_ENVIRONMENT + environment(source, occlusion, intensity))
-                     for occlusion in ("none", "ssao", "transfer")])
+                     for occlusion in OCCLUSIONS])
     return rows
 
 
@@ -46,15 +50,23 @@ def render(scene, overrides, out):
 
 def figure(scene, out, title):
     grid = panels(scene)
-    fig, axes = plt.subplots(len(grid), len(grid[0]), figsize=(3.2 * len(grid[0]), 2.0 * len(grid)), dpi=100)
+    columns = len(grid[0]) + 1  # the last: what the transfer darkens, |none - transfer| x DIFFERENCE_SCALE
+    fig, axes = plt.subplots(len(grid), columns, figsize=(3.2 * columns, 2.0 * len(grid)), dpi=100)
     with tempfile.TemporaryDirectory() as tmp:
         for r, row in enumerate(grid):
+            images = []
             for c, (label, overrides) in enumerate(row):
                 path = os.path.join(tmp, f"{r}_{c}.png")
                 render(scene, overrides, path)
-                axes[r][c].imshow(mpimg.imread(path))
+                images.append(mpimg.imread(path)[:, :, :3])
+                axes[r][c].imshow(images[-1])
                 axes[r][c].set_title(label, fontsize=9)
                 axes[r][c].axis("off")
+            none, transfer = images[OCCLUSIONS.index("none")], images[OCCLUSIONS.index("transfer")]
+            darkened = ((none - transfer).max(axis=2) * DIFFERENCE_SCALE).clip(0.0, 1.0)
+            axes[r][-1].imshow(darkened, cmap="gray", vmin=0.0, vmax=1.0)
+            axes[r][-1].set_title(f"none - transfer, x{DIFFERENCE_SCALE}", fontsize=9)
+            axes[r][-1].axis("off")
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(out)
