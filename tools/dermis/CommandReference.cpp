@@ -51,7 +51,7 @@ const char* const kHelp =
     "                      sqrt(N) x sqrt(N) grid; 1 is the pixel centre (default 4); the time\n"
     "                      grows about as N\n"
     "  --env-samples N     rays per shading point for the environment's light, 2 to 65536 (half\n"
-    "                      drawn from the map's brightness, half cosine-weighted; default 128);\n"
+    "                      drawn from the map's brightness, half cosine-weighted; default 16);\n"
     "                      the noise falls about as 1/sqrt(N), the time grows about as N\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable (as in\n"
     "                      dermis render: --set sss.mix=0.5 --set camera.position_m=[0,0.1,0.5])\n"
