@@ -180,6 +180,27 @@ TEST(Cli, TruncatedImageFails) {
                        dir.file("x.png"), {"cut.png"});
 }
 
+// A bad environment map: one line naming the map and the problem, nothing written
+// (env/EnvironmentMap.h; non-finite texels are covered by EnvironmentMap.* unit tests).
+TEST(Cli, BadEnvironmentMapFails) {
+    TempDir dir;
+    const ProcessResult square = runProcess(kDermis + " render " + defaultScene() +
+                                            " --size 32x32 --frames 1 --quiet --out " + dir.file("square.png"));
+    ASSERT_EQ(square.exitCode, 0) << square.err;
+    struct Case {
+        std::string source;
+        std::string mention;
+    };
+    const Case cases[] = {{dir.file("missing.hdr"), "missing.hdr"},
+                          {dir.file("square.png"), "width must be twice its height"}};
+    for (const Case& c : cases) {
+        const ProcessResult r = runProcess(kDermis + " render " + defaultScene() + " --size 32x32 --frames 1 --out " +
+                                           dir.file("x.png") + " --set 'environment={\"source\": \"" + c.source + "\"}'");
+        expectCleanFailure(r, dir.file("x.png"), {c.mention});
+        EXPECT_EQ(r.exitCode, 1) << c.source;
+    }
+}
+
 TEST(Cli, ZeroAndHugeSizesFail) {
     TempDir dir;
     for (const char* size : {"0x0", "100000x100000", "640", "-5x10", "axb"}) {

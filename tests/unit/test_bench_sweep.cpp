@@ -73,6 +73,8 @@ TEST(SweepSpec, BadSpecsAreErrorsNamingTheAxis) {
         {"sss.taps=5,,9", "--sweep sss.taps=5,,9", "empty value"},
         {"mode=ss,ts", "--sweep mode=ss,ts", "prefix"},
         {"camera.near_m=0.1", "--sweep camera.near_m=0.1", "settings only"},
+        // The environment's source changes the picture the one reference shows.
+        {"environment.source=sky", "--sweep environment.source=sky", "settings only"},
         {"scale=0", "--sweep scale=0", "scale must be"},
         {"scale=fast", "--sweep scale=fast", "scale must be"},
         {"scale+sss.taps=1", "--sweep scale+sss.taps=1", "cannot be joined"},
@@ -84,6 +86,14 @@ TEST(SweepSpec, BadSpecsAreErrorsNamingTheAxis) {
         EXPECT_EQ(axes.error().where, c.where) << c.spec;
         EXPECT_NE(axes.error().what.find(c.what), std::string::npos) << c.spec << ": " << axes.error().what;
     }
+}
+
+TEST(SweepSpec, EnvironmentQualityKeysAreSwept) {
+    auto axes = parseSweepSpec("ss:environment.sh_bands=1,3;ss:environment.occlusion=none,transfer");
+    ASSERT_TRUE(axes) << axes.error().message();
+    auto configs = expandSweep(*axes);
+    ASSERT_TRUE(configs) << configs.error().message();
+    EXPECT_EQ(configs->size(), 4u);
 }
 
 TEST(SweepSpec, TooManyConfigurationsIsAnError) {

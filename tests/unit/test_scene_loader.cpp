@@ -1013,5 +1013,57 @@ TEST(SceneTransform, TranslationIsNotScaledAndDirectionsIgnoreIt) {
     EXPECT_VEC3_NEAR(glm::vec3(m * glm::vec4(0, 0, 50, 0)), glm::vec3(0, 0, 1), 1e-6);
 }
 
+TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
+    const Result<Scene> scene = parseScene(R"({"environment": {"source": "maps/sky.hdr", "intensity": 2.5,
+        "rotation": {"axis": [0, 0, 2], "angle_deg": 30, "speed_deg_per_s": -5},
+        "background": false, "occlusion": "ssao", "specular": "sh", "sh_bands": 2}})",
+                                           "/scenes/x.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    const Environment& e = scene->environment;
+    EXPECT_EQ(e.source, "/scenes/maps/sky.hdr");  // resolved from the scene file's folder
+    EXPECT_EQ(e.intensity, 2.5f);
+    EXPECT_EQ(e.rotation.axis, glm::vec3(0, 0, 1));  // normalised
+    EXPECT_EQ(e.rotation.angleDeg, 30.0f);
+    EXPECT_EQ(e.rotation.speedDegPerS, -5.0f);
+    EXPECT_FALSE(e.background);
+    EXPECT_EQ(e.occlusion, EnvironmentOcclusion::Ssao);
+    EXPECT_EQ(e.specular, EnvironmentSpecular::Sh);
+    EXPECT_EQ(e.shBands, 2);
+    // The angle grows with time: 30 + (-5) x 2 = 20 degrees about +Z turns +X to (cos 20, sin 20, 0).
+    const glm::vec3 turned = e.worldFromMap(2.0f) * glm::vec3(1, 0, 0);
+    EXPECT_NEAR(turned.x, std::cos(glm::radians(20.0f)), 1e-6f);
+    EXPECT_NEAR(turned.y, std::sin(glm::radians(20.0f)), 1e-6f);
+
+    const Result<Scene> reread = parseScene(sceneToJson(*scene), scene->path);
+    ASSERT_TRUE(reread.ok()) << reread.error().message();
+    const Environment& r = reread->environment;
+    EXPECT_EQ(r.source, e.source);
+    EXPECT_EQ(r.intensity, e.intensity);
+    EXPECT_EQ(r.rotation.axis, e.rotation.axis);
+    EXPECT_EQ(r.rotation.angleDeg, e.rotation.angleDeg);
+    EXPECT_EQ(r.background, e.background);
+    EXPECT_EQ(r.occlusion, e.occlusion);
+    EXPECT_EQ(r.specular, e.specular);
+    EXPECT_EQ(r.shBands, e.shBands);
+
+    const Result<Scene> builtIn = parseScene(R"({"environment": {"source": "studio"}})", "/scenes/x.json");
+    ASSERT_TRUE(builtIn.ok());
+    EXPECT_EQ(builtIn->environment.source, "studio");  // a built-in name is not a path
+    EXPECT_FALSE(parseScene("{}", "x.json")->environment.enabled());
+}
+
+TEST(SceneLoader, BadEnvironmentsNameTheKey) {
+    EXPECT_EQ(errorOf(R"({"environment": {"intensity": 1}})"),
+              "/environment/source: is required: a built-in environment (sky, studio or uniform) or a lat-long map file");
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "rotation": {"axis": [0, 0, 0]}}})"),
+              "/environment/rotation/axis: must not be the zero vector");
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "sh_bands": 4}})").rfind("/environment/sh_bands:", 0), 0u);
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "occlusion": "ambient"}})")
+                  .rfind("/environment/occlusion: unknown environment occlusion", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "intensity": -1}})").rfind("/environment/intensity:", 0), 0u);
+    EXPECT_EQ(errorOf(R"({"environment": {"source": ""}})").rfind("/environment/source:", 0), 0u);
+}
+
 }  // namespace
 }  // namespace dermis

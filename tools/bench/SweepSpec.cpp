@@ -61,8 +61,15 @@ Status checkKey(const std::string& where, const std::string& key) {
         return makeError(where, "the mode is not a key: prefix an axis with " + modePrefixes() + " instead");
     auto change = parseSceneOverride(key + "=0");
     if (!change.ok()) return makeError(where, "'" + key + "' is not a settings path");
-    if (change->path.empty() || change->path.front() != "settings")
-        return makeError(where, "'" + key + "' is not under settings: the bench sweeps settings only");
+    // The environment's approximations are quality knobs too; its source,
+    // intensity and rotation change the picture, which the one reference fixes.
+    const std::vector<std::string>& path = change->path;
+    const bool environmentKnob = path.size() == 2 && path[0] == "environment" &&
+                                 (path[1] == "occlusion" || path[1] == "specular" || path[1] == "sh_bands");
+    if (!environmentKnob && (path.empty() || path.front() != "settings"))
+        return makeError(where, "'" + key +
+                                    "' is not under settings: the bench sweeps settings only, and the environment's "
+                                    "occlusion, specular and sh_bands");
     return success();
 }
 

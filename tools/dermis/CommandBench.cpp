@@ -236,6 +236,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
     for (size_t i = 0; i < planned->size(); ++i) {
         const PlannedConfig& config = (*planned)[i];
         session->scene->settings = config.scene.settings;
+        session->scene->environment = config.scene.environment;  // its quality keys may be swept (SweepSpec.cpp)
         const int w = std::max(1, static_cast<int>(std::lround(width * config.sweep.scale)));
         const int h = std::max(1, static_cast<int>(std::lround(height * config.sweep.scale)));
         // The first configuration also warms up the process (first use of every
