@@ -171,3 +171,36 @@ TEST_F(EnvironmentFrame, SkyboxRunsOnlyWhereTheEnvironmentIsDrawnBehind) {
     const PassSummary* skybox = pass("skybox");
     EXPECT_TRUE(skybox == nullptr || !skybox->executed);
 }
+
+// The LEAN variants give the environment's specular of characters with LEAN
+// maps through the blurred LEAN lobe (include/LeanLights.glsl), the variant c
+// through the KS lobe in the lighting pass. Under a uniform environment the
+// split sum is rho_s rho_dt(N.V, m) L in both, so the two specular AOVs of
+// the head (which has LEAN maps) must agree on average, the LEAN lobe's
+// width (base m plus the normal map's slope variance) aside. 5% (measured
+// 0.979); leaving the environment out of the LEAN lobe makes the LEAN
+// pixels' specular 0 and fails it by 100%.
+TEST_F(EnvironmentFrame, LeanVariantsCarryTheEnvironmentsSpecular) {
+    const std::vector<std::string> common = {"lights=[]", "ambient=[0,0,0]", "ssao.enabled=false",
+                                             R"(environment={"source": "uniform", "occlusion": "none"})"};
+    std::vector<std::string> c = common;
+    c.push_back("sss.variant=c");
+    load("default.json", c);
+    const Image ks = render(Aov::Specular, 160, 90);
+    std::vector<std::string> lbb = common;
+    lbb.push_back("sss.variant=lbb");
+    load("default.json", lbb);
+    const Image lean = render(Aov::Specular, 160, 90);
+    double ksSum = 0.0, leanSum = 0.0;
+    int pixels = 0;
+    for (size_t i = 0; i < ks.texels.size(); ++i) {
+        if (ks.texels[i].g <= 0.0f) continue;
+        ksSum += ks.texels[i].g;
+        leanSum += lean.texels[i].g;
+        ++pixels;
+    }
+    ASSERT_GT(pixels, 1000);
+    const double ratio = leanSum / ksSum;
+    std::printf("environment specular, lbb / c over %d pixels: %.4f\n", pixels, ratio);
+    EXPECT_NEAR(ratio, 1.0, 0.05);
+}
