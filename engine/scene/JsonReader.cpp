@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
@@ -333,7 +334,13 @@ bool JsonObject::readFloat(const json& value, const std::string& where, const Ra
     }
     // Range-check the float that is stored, not the double that was written.
     const auto f = static_cast<float>(x);
-    if (!mContext.check(range.contains(double(f)), where, range.describe() + ", got " + formatNumberForMessage(x))) {
+    if (!range.contains(double(f))) {
+        // A bound such as 1e20 is not a float: say why its own value is refused.
+        char stored[48];
+        std::snprintf(stored, sizeof stored, "%.9g", double(f));
+        const std::string rounding =
+            range.contains(x) ? std::string(" (") + stored + " as a 32-bit float)" : std::string();
+        mContext.check(false, where, range.describe() + ", got " + formatNumberForMessage(x) + rounding);
         return false;
     }
     out = f;

@@ -1052,6 +1052,15 @@ TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
     EXPECT_FALSE(parseScene("{}", "x.json")->environment.enabled());
 }
 
+// The stored float is range-checked: a bound that is not a float (1e20 rounds
+// up to 1.00000002e20) refuses its own value, and the message says why.
+TEST(SceneLoader, BoundThatIsNotAFloatSaysWhyItIsRefused) {
+    EXPECT_EQ(errorOf(R"({"background": {"colour": [1e20, 0, 0]}})"),
+              "/background/colour/0: must be in [0, 1e+20], got 1e+20 (1.00000002e+20 as a 32-bit float)");
+    EXPECT_EQ(errorOf(R"({"background": {"colour": [2e20, 0, 0]}})"),
+              "/background/colour/0: must be in [0, 1e+20], got 2e+20");
+}
+
 TEST(SceneLoader, BadEnvironmentsNameTheKey) {
     EXPECT_EQ(errorOf(R"({"environment": {"intensity": 1}})"),
               "/environment/source: is required: a built-in environment (sky, studio or uniform) or a lat-long map file");
