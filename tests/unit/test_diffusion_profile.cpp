@@ -1,6 +1,8 @@
 // The diffusion profile (docs/screen-space.md, "Diffusion profiles"; Chappuis 2011 §2.1.3-2.1.4).
 #include "sss/DiffusionProfile.h"
 
+#include "Quadrature.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,13 +15,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Composite Simpson's rule on [a, b] with an even number of intervals.
-double simpson(const std::function<double(double)>& f, double a, double b, int intervals) {
-    const double h = (b - a) / intervals;
-    double sum = f(a) + f(b);
-    for (int i = 1; i < intervals; ++i) sum += f(a + i * h) * (i % 2 == 1 ? 4.0 : 2.0);
-    return sum * h / 3.0;
-}
+using quadrature::simpson;
 
 // The integral of R over the plane per channel, 2 pi r R(r) dr with r = e^t (the profiles span
 // variances from 0.0064 to 42 mm^2, so a log grid resolves all of them).
