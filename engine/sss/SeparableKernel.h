@@ -1,7 +1,7 @@
 #pragma once
 // The single pre-integrated 1-D kernel of Separable Subsurface Scattering
-// (Jimenez et al. 2015), computed on the CPU from any diffusion profile as the
-// authors' SeparableSSS.h does, for one horizontal and one vertical pass.
+// (Jimenez et al. 2015), computed on the CPU from any diffusion profile (as the
+// authors' SeparableSSS code does) for one horizontal and one vertical pass.
 //
 // The 1-D kernel is the marginal of the 2-D radial profile R (its line
 // integral across the blur direction), K(x) = integral R(sqrt(x^2 + y^2)) dy.
@@ -11,11 +11,14 @@
 // docs/screen-space.md, "Separable kernel", has its measured error for skin.
 //
 // Taps (ascending offsets, symmetric about 0, centre tap in the middle) are
-// placed by the power law of SeparableSSS.h, x_k = range sign(t_k) |t_k|^2
-// with t_k uniform in [-1, 1], which packs them near 0, where K is large. Each tap's
-// RGB weight is K integrated exactly over its cell (midpoint to midpoint; the
+// placed by the power law of the authors' SeparableSSS code, x_k = range
+// sign(t_k) |t_k|^2 with t_k uniform in [-1, 1], which packs them near 0 where
+// K is large; not by inverting the marginal's CDF, because the three channels,
+// whose marginals differ in width, share one set of offsets. Each tap's RGB
+// weight is K integrated exactly over its cell (midpoint to midpoint; the
 // outer cells reach to +-infinity so no energy is lost), normalised per
-// channel to sum to 1.
+// channel to sum to 1. (The authors' code weights a tap by the profile at the
+// tap times its interval instead.)
 
 #include "core/Result.h"
 #include "sss/DiffusionProfile.h"
@@ -30,7 +33,7 @@ constexpr int kMinSeparableSamples = 7;
 constexpr int kMaxSeparableSamples = 33;
 // The default range in standard deviations of the profile's widest Gaussian.
 constexpr float kSeparableRangeStdDevs = 3.0f;
-// The power law's exponent (SeparableSSS.h's EXPONENT).
+// The power law's exponent (EXPONENT in the authors' SeparableSSS code).
 constexpr float kSeparableOffsetExponent = 2.0f;
 
 struct SeparableTap {

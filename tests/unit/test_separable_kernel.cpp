@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 using namespace dermis;
 
@@ -105,8 +107,8 @@ double misplacedEnergy(const DiffusionProfile& profile, const SeparableKernel& k
 }  // namespace
 
 // Bound 1e-6 per channel (float weights; the double sum before rounding is 1 to 1e-15). Broken on
-// purpose by dropping the per-channel normalisation and truncating the outer cells at +-range:
-// skin at 7 samples then sums to (0.9808, 0.99998, 1.0000) and fails.
+// purpose by ending the outer cells at +-range and dropping the normalisation: skin's red then sums
+// to 0.99958 at every count and fails.
 TEST(SeparableKernel, WeightsSumToOnePerChannel) {
     for (const DiffusionProfile* profile : {&skinProfile(), &marbleProfile()})
         for (int samples = kMinSeparableSamples; samples <= kMaxSeparableSamples; samples += 2) {
@@ -122,8 +124,9 @@ TEST(SeparableKernel, WeightsSumToOnePerChannel) {
 }
 
 // Exact: offsets and weights are mirrored bit for bit, ascending, the centre tap at 0 and the
-// outer taps at +-range. Broken on purpose by computing the right half's weights from upper-tail
-// CDFs instead of mirroring: skin at 17 samples then differs by up to 6e-8 and fails.
+// outer taps at +-range. Broken on purpose by taking every weight from the CDF walked left to right
+// instead of mirroring the left half: 18 taps differ (by an ulp near the centre; right-tail weights
+// of -1e-9 or 0 against 1e-24) and this test fails (WeightsSumToOnePerChannel too, on the sign).
 TEST(SeparableKernel, Symmetric) {
     for (int samples : {7, 17, 33}) {
         const SeparableKernel kernel = kernelOf(skinProfile(), samples);
@@ -146,8 +149,9 @@ TEST(SeparableKernel, Symmetric) {
 // - range 4 sigma: +0.21% / -0.025% / -0.011%, shrinking with the sample count (bounds 0.3%, 0.04%, 0.02%);
 // - the default range, 3 sigma: -1.06% / -0.40% / -0.47% (bounds 1.2%, 0.5%, 0.5%): a floor of about
 //   -0.4%, because the outer cells' tails (beyond 2.8 sigma at 33 samples) are moved in to 3 sigma.
-// Broken on purpose with SeparableSSS.h's weights (the profile at the tap times the tap's interval)
-// in place of the integrals: MOMENTBREAK
+// Broken on purpose with the authors' SeparableSSS weights (the profile at the tap times the tap's interval)
+// in place of the integrals: -16.7% / -4.7% / -3.2% at 3 sigma and -5.2% / -1.9% / -0.55% at
+// 4 sigma, failing every case.
 TEST(SeparableKernel, SingleGaussianSecondMomentMatchesVariance) {
     struct Case {
         float rangeStdDevs;
@@ -172,7 +176,9 @@ TEST(SeparableKernel, SingleGaussianSecondMomentMatchesVariance) {
 // The 1-D step response against skin's closed-form edgeResponse (Chappuis 2011 fig. 2.7), per
 // channel, at the default range (8.17 mm):
 // - at the midpoints between taps the weights are the marginal's integrals, so S = F (bound 1e-6,
-//   float rounding). Broken on purpose with SeparableSSS.h's weights: STEPBREAK
+//   float rounding). Broken on purpose with the authors' SeparableSSS weights (the 2-D profile R at the tap
+//   times the tap's interval, which over-weights the narrow Gaussians against the marginal K):
+//   (0.20, 0.052, 0.020) at 17 samples, (0.21, 0.075, 0.037) at 33, failing;
 // - the supremum over x, half the heaviest cell's weight at most, measured (0.096, 0.181, 0.226) at
 //   17 samples and (0.065, 0.122, 0.150) at 33 (bounds 0.10, 0.19, 0.23 and 0.07, 0.13, 0.16): large
 //   because blue and green put 65% and 46% of their light in a Gaussian of 0.08 mm standard
@@ -196,6 +202,27 @@ TEST(SeparableKernel, SkinStepResponseMatchesEdgeResponse) {
     }
 }
 
+// K is the line integral of R: separableMarginal against a midpoint-rule integral of radialProfile
+// over y in [-40, 40] mm (2e5 steps of 4e-4 mm, far finer than skin's narrowest 0.08 mm Gaussian);
+// relative bound 1e-5. Broken on purpose by giving separableMarginal the 2-D normalisation
+// 1 / (2 pi v): off by a factor sqrt(2 pi v), failing.
+TEST(SeparableKernel, MarginalIsTheLineIntegralOfTheProfile) {
+    constexpr int kSteps = 200000;
+    constexpr double kHalfWidthMm = 40.0;
+    const double dy = 2.0 * kHalfWidthMm / kSteps;
+    for (float xMm : {0.0f, 0.05f, 0.3f, 1.0f, 4.0f}) {
+        glm::dvec3 integral(0.0);
+        for (int k = 0; k < kSteps; ++k) {
+            const double y = -kHalfWidthMm + (k + 0.5) * dy;
+            integral += glm::dvec3(skinProfile().radialProfile(float(std::sqrt(double(xMm) * xMm + y * y)))) * dy;
+        }
+        const glm::dvec3 marginal(separableMarginal(skinProfile(), xMm));
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(marginal[ch] / integral[ch], 1.0, 1e-5) << "x = " << xMm << " mm, channel " << ch;
+    }
+}
+
+// Even counts, counts outside [7, 33] and bad ranges are errors; the message names the count. Broken
+// on purpose by dropping the odd check: 8 and 16 are accepted and this fails.
 TEST(SeparableKernel, InvalidSampleCountsAreErrorsNamingTheCount) {
     for (int samples : {-7, 0, 5, 8, 16, 34, 35}) {
         Result<SeparableKernel> kernel = makeSeparableKernel(skinProfile(), samples);
@@ -215,7 +242,8 @@ TEST(SeparableKernel, InvalidSampleCountsAreErrorsNamingTheCount) {
 // a 3000^2 sinh-spaced grid quadrature, which also gives half the L1 difference, the fraction of the
 // light that lands in the wrong place: (0.280, 0.156, 0.097)); the discrete cell-wise version of that
 // fraction at 33 samples (0.2733, 0.1246, 0.0752), bounds (0.28, 0.13, 0.08). Broken on purpose with
-// SeparableSSS.h's weights: RANKBREAK
+// the authors' SeparableSSS weights: the single Gaussian's misplaced light is 0.056 / 0.012 / 0.0067 at
+// 7 / 17 / 33 samples and skin's 33-sample red 0.49, failing.
 TEST(SeparableKernel, SkinRank1Error) {
     const DiffusionProfile single = singleGaussian(0.5f);
     EXPECT_LT(rank1RelativeL2(single, 0), 1e-6);
