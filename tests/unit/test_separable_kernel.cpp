@@ -179,10 +179,11 @@ TEST(SeparableKernel, SingleGaussianSecondMomentMatchesVariance) {
 //   float rounding). Broken on purpose with the authors' SeparableSSS weights (the 2-D profile R at the tap
 //   times the tap's interval, which over-weights the narrow Gaussians against the marginal K):
 //   (0.20, 0.052, 0.020) at 17 samples, (0.21, 0.075, 0.037) at 33, failing;
-// - the supremum over x, half the heaviest cell's weight at most, measured (0.096, 0.181, 0.226) at
-//   17 samples and (0.065, 0.122, 0.150) at 33 (bounds 0.10, 0.19, 0.23 and 0.07, 0.13, 0.16): large
-//   because blue and green put 65% and 46% of their light in a Gaussian of 0.08 mm standard
-//   deviation, narrower than the cells near 0 until 33 samples;
+// - the supremum over x (at most the heaviest cell's weight, S jumping by it at the tap), measured
+//   (0.096, 0.181, 0.226) at 17 samples and (0.065, 0.122, 0.150) at 33 (bounds 0.10, 0.19, 0.23
+//   and 0.07, 0.13, 0.16): large because blue and green put 65% and 46% of their light in a
+//   Gaussian of 0.08 mm standard deviation, so the cells near 0 (the centre one spans +-0.064 mm at
+//   17 samples, +-0.016 mm at 33) carry much of it;
 // - at the taps (printed only), which does not shrink monotonically with the sample count.
 TEST(SeparableKernel, SkinStepResponseMatchesEdgeResponse) {
     struct Case {
