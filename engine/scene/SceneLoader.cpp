@@ -1,6 +1,7 @@
 #include "scene/SceneLoader.h"
 
 #include "procedural/Procedural.h"
+#include "sss/BurleyProfile.h"
 #include "sss/DiffusionProfile.h"
 
 #include "core/Limits.h"
@@ -20,6 +21,10 @@ namespace dermis {
 namespace {
 
 using nlohmann::json;
+
+// Gaussians of a scene's Burley profile: as many as the built-in skin profile,
+// so that the d'Eon chain and texture space blur it alike.
+constexpr int kBurleySceneGaussians = 6;
 
 // A direction within this of unit length is kept as written, so that a
 // direction the loader normalised reads back bit-identical (normalising twice
@@ -236,9 +241,33 @@ void readMaterialOverrides(JsonObject& parent, const std::string& sceneFile, con
 // variances > 0 and increasing, RGB weights >= 0 summing to 1 per channel.
 constexpr double kProfileWeightSumTolerance = 1e-3;
 
+// A profile given as Burley's normalized diffusion (Christensen & Burley 2015):
+// its six-Gaussian fit (sss/BurleyProfile.h), which every technique uses.
+void readBurleyProfile(JsonObject& object, const std::string& name, std::vector<DiffusionProfile>& out) {
+    JsonContext& context = object.context();
+    JsonObject burley(context, *object.member("burley"), object.pointer("burley"), {"albedo", "mean_free_path_mm"});
+    if (!context.check(burley.has("albedo") && burley.has("mean_free_path_mm"), object.pointer("burley"),
+                       "needs \"albedo\" and \"mean_free_path_mm\"")) {
+        return;
+    }
+    glm::vec3 albedo(0.0f), meanFreePathMm(0.0f);
+    burley.vec3("albedo", albedo, Range::closed(0.0, 1.0));
+    burley.vec3("mean_free_path_mm", meanFreePathMm, Range::above(0.0));
+    if (context.failed()) return;
+    auto profile = fitBurleyGaussians({albedo, meanFreePathMm}, kBurleySceneGaussians, name);
+    if (!context.check(profile.ok(), object.pointer("burley"), profile.ok() ? "" : profile.error().what)) return;
+    out.push_back(std::move(*profile));
+}
+
 void readProfile(JsonContext& context, const json& value, const std::string& pointer, const std::string& name,
                  std::vector<DiffusionProfile>& out) {
-    JsonObject object(context, value, pointer, {"gaussians"});
+    JsonObject object(context, value, pointer, {"gaussians", "burley"});
+    if (object.has("burley")) {
+        if (context.check(!object.has("gaussians"), pointer, "give \"gaussians\" or \"burley\", not both")) {
+            readBurleyProfile(object, name, out);
+        }
+        return;
+    }
     const json* list = object.array("gaussians", kMaxProfileGaussians, "Gaussians");
     if (context.failed()) return;
     if (!context.check(list != nullptr && !list->empty(), object.pointer("gaussians"),

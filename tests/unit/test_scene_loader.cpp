@@ -3,6 +3,7 @@
 // transform.
 
 #include "scene/SceneLoader.h"
+#include "sss/BurleyProfile.h"
 
 #include "FuzzSupport.h"
 
@@ -1050,6 +1051,35 @@ TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
     ASSERT_TRUE(builtIn.ok());
     EXPECT_EQ(builtIn->environment.source, "studio");  // a built-in name is not a path
     EXPECT_FALSE(parseScene("{}", "x.json")->environment.enabled());
+}
+
+// A user profile given as Burley's normalized diffusion becomes its six-Gaussian
+// fit. Checked against Burley's closed-form plane CDF (Christensen & Burley
+// 2015; sss/BurleyProfile.h): 0.02, the fit's own bound (Burley* tests). Scaling
+// the mean free path by 1.05 in the loader fails 3 of the radii.
+TEST(SceneLoader, BurleyProfileIsFittedWithGaussians) {
+    const Result<Scene> scene = parseScene(R"({"profiles": {"soft": {"burley": {"albedo": [0.8, 0.6, 0.5],
+        "mean_free_path_mm": [1.0, 0.4, 0.25]}}}})",
+                                           "x.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    ASSERT_EQ(scene->profiles.size(), 1u);
+    const DiffusionProfile& profile = scene->profiles[0];
+    EXPECT_EQ(profile.name(), "soft");
+    EXPECT_EQ(profile.size(), 6u);
+    const BurleyParameters parameters{{0.8f, 0.6f, 0.5f}, {1.0f, 0.4f, 0.25f}};
+    for (double r : {0.05, 0.2, 0.5, 1.0, 2.0, 5.0}) {
+        const glm::dvec3 expected = burleyRadialCdf(parameters, r);
+        const glm::dvec3 fitted = gaussianRadialCdf(profile, r);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(fitted[c], expected[c], 0.02) << "r " << r << " channel " << c;
+    }
+    EXPECT_EQ(errorOf(R"({"profiles": {"soft": {"burley": {"albedo": [0.8, 0.6, 0.5]}}}})"),
+              "/profiles/soft/burley: needs \"albedo\" and \"mean_free_path_mm\"");
+    EXPECT_EQ(errorOf(R"({"profiles": {"soft": {"burley": {"albedo": [0.8, 0.6, 0.5], "mean_free_path_mm": [1, 0, 1]}}}})")
+                  .rfind("/profiles/soft/burley/mean_free_path_mm/1:", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"profiles": {"soft": {"burley": {"albedo": [1, 1, 1], "mean_free_path_mm": [1, 1, 1]},
+        "gaussians": [{"variance_mm2": 1, "weights": [1, 1, 1]}]}}})"),
+              "/profiles/soft: give \"gaussians\" or \"burley\", not both");
 }
 
 // The stored float is range-checked: a bound that is not a float (1e20 rounds
