@@ -8,23 +8,19 @@
 // The rotation is the blended matrix's polar factor (Higham 1986: X <- (X +
 // X^-T) / 2 until it stops changing), as env/ShTransfer.h's
 // skinningRotation. A rotated function is f'(w) = f(R^T w): band 0 is kept,
-// band 1 is a vector a (the coefficients in (y, z, x) order over 0.488603)
+// band 1 is a vector a (the coefficients in (y, z, x) order over kShBand1)
 // with a' = R a, and band 2 a traceless symmetric quadratic form Q,
 // f(w) = w^T Q w, with Q' = R Q R^T; the basis is that of
 // engine/env/SphericalHarmonics.h.
 #define DERMIS_USE_SKINNING_BLOCK
 #include "UniformBlocks.glsl"
 #include "SkinBlend.glsl"
+#include "ShBasis.glsl"
 
 layout(local_size_x = DERMIS_SKINNING_GROUP_SIZE) in;
 
 layout(std430, binding = DERMIS_BINDING_SKIN_SOURCE) readonly buffer RestTransfer { float restTransfer[]; };
 layout(std430, binding = DERMIS_BINDING_SKIN_OUTPUT) writeonly buffer PosedTransfer { float posedTransfer[]; };
-
-const float kB1 = 0.488603;   // band 1: Y = kB1 (y, z, x)
-const float kB2xy = 1.092548;  // Y2-2 = kB2xy xy, Y2-1 = kB2xy yz, Y21 = kB2xy xz
-const float kB20 = 0.315392;  // Y20 = kB20 (3 z^2 - 1) = kB20 (2 z^2 - x^2 - y^2) on the sphere
-const float kB22 = 0.546274;  // Y22 = kB22 (x^2 - y^2)
 
 mat3 polarRotation(mat3 x) {
     if (abs(determinant(x)) <= 0.0) return mat3(1.0);
@@ -44,17 +40,17 @@ void main() {
     for (uint i = 0u; i < 9u; ++i) c[i] = restTransfer[v * 9u + i];
     const mat3 R = polarRotation(mat3(blendedSkinningMatrix(v)));
 
-    vec3 a = R * vec3(c[3], c[1], c[2]);  // (x, y, z) components, each over kB1
+    vec3 a = R * vec3(c[3], c[1], c[2]);  // (x, y, z) components, each over kShBand1
     mat3 Q = mat3(0.0);                    // symmetric; Q[column][row]
-    Q[0][1] = Q[1][0] = 0.5 * kB2xy * c[4];
-    Q[1][2] = Q[2][1] = 0.5 * kB2xy * c[5];
-    Q[0][2] = Q[2][0] = 0.5 * kB2xy * c[7];
-    Q[0][0] = -kB20 * c[6] + kB22 * c[8];
-    Q[1][1] = -kB20 * c[6] - kB22 * c[8];
-    Q[2][2] = 2.0 * kB20 * c[6];
+    Q[0][1] = Q[1][0] = 0.5 * kShBand2xy * c[4];
+    Q[1][2] = Q[2][1] = 0.5 * kShBand2xy * c[5];
+    Q[0][2] = Q[2][0] = 0.5 * kShBand2xy * c[7];
+    Q[0][0] = -kShBand20 * c[6] + kShBand22 * c[8];
+    Q[1][1] = -kShBand20 * c[6] - kShBand22 * c[8];
+    Q[2][2] = 2.0 * kShBand20 * c[6];
     const mat3 turned = R * Q * transpose(R);
-    const float c6 = turned[2][2] / (2.0 * kB20);
-    const float out9[9] = float[9](c[0], a.y, a.z, a.x, 2.0 * turned[0][1] / kB2xy, 2.0 * turned[1][2] / kB2xy, c6,
-                                   2.0 * turned[0][2] / kB2xy, (turned[0][0] + kB20 * c6) / kB22);
+    const float c6 = turned[2][2] / (2.0 * kShBand20);
+    const float out9[9] = float[9](c[0], a.y, a.z, a.x, 2.0 * turned[0][1] / kShBand2xy, 2.0 * turned[1][2] / kShBand2xy, c6,
+                                   2.0 * turned[0][2] / kShBand2xy, (turned[0][0] + kShBand20 * c6) / kShBand22);
     for (uint i = 0u; i < 9u; ++i) posedTransfer[v * 9u + i] = out9[i];
 }

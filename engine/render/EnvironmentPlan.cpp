@@ -32,14 +32,15 @@ EnvironmentPlan planEnvironment(const Environment& environment, std::shared_ptr<
     Sh9 world = rotateSh(keepShBands(plan.light->mapSh, environment.shBands), plan.worldFromMap);
     for (glm::vec3& c : world.coefficients) c *= environment.intensity;
     plan.worldSh = world;
+    plan.transfer = environment.occlusion == EnvironmentOcclusion::Transfer;
+    plan.skybox = environment.background && drawsColour;
+    if (!plan.transfer) return plan;  // only the vertices' transfer reads the object-space light
     for (const glm::mat4& m : worldFromObject) {
         // The rotation of a uniformly scaled transform: its columns over their length.
         const glm::mat3 linear(m);
         const glm::mat3 rotation(glm::normalize(linear[0]), glm::normalize(linear[1]), glm::normalize(linear[2]));
         plan.objectSh.push_back(rotateSh(world, glm::transpose(rotation)));
     }
-    plan.transfer = environment.occlusion == EnvironmentOcclusion::Transfer;
-    plan.skybox = environment.background && drawsColour;
     return plan;
 }
 

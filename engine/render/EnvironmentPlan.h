@@ -32,7 +32,7 @@ struct EnvironmentPlan {
     std::shared_ptr<const EnvironmentLight> light;  // null: the frame has no environment
     glm::mat3 worldFromMap{1.0f};
     Sh9 worldSh;                 // radiance x intensity, world space, 0 past the scene's sh_bands
-    std::vector<Sh9> objectSh;   // per character: worldSh in its object space
+    std::vector<Sh9> objectSh;   // per character: worldSh in its object space; empty unless `transfer`
     bool transfer = false;       // occlusion "transfer": the vertices carry SH transfer, the G-buffer its L.T
     bool skybox = false;         // the skybox pass draws the map behind everything
 

@@ -21,6 +21,7 @@
 
 #include "EnergyConservation.glsl"
 #include "EnvironmentSpecular.glsl"
+#include "ShBasis.glsl"
 
 layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
 
@@ -32,29 +33,13 @@ bool environmentLit() { return uEnvironment.params.x > 0.5; }
 int environmentOcclusion() { return int(uEnvironment.params.y + 0.5); }
 int environmentSpecularMode() { return int(uEnvironment.params.z + 0.5); }
 
-// The real SH basis of bands 0-2 at a unit direction, in the order of
-// engine/env/SphericalHarmonics.h (index l^2 + l + m).
-void shBasis9(vec3 d, out float basis[9]) {
-    basis[0] = 0.282095;
-    basis[1] = 0.488603 * d.y;
-    basis[2] = 0.488603 * d.z;
-    basis[3] = 0.488603 * d.x;
-    basis[4] = 1.092548 * d.x * d.y;
-    basis[5] = 1.092548 * d.y * d.z;
-    basis[6] = 0.315392 * (3.0 * d.z * d.z - 1.0);
-    basis[7] = 1.092548 * d.x * d.z;
-    basis[8] = 0.546274 * (d.x * d.x - d.y * d.y);
-}
-
 // Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
 // 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
 vec3 environmentIrradiance(vec3 N) {
     float basis[9];
     shBasis9(N, basis);
-    const float kA[9] = float[9](3.141593, 2.094395, 2.094395, 2.094395, 0.785398, 0.785398, 0.785398, 0.785398,
-                                 0.785398);
     vec3 irradiance = vec3(0.0);
-    for (int i = 0; i < 9; ++i) irradiance += uEnvironment.sh[i].rgb * (kA[i] * basis[i]);
+    for (int i = 0; i < 9; ++i) irradiance += uEnvironment.sh[i].rgb * (kShClampedCosine[i] * basis[i]);
     return max(irradiance, vec3(0.0));
 }
 
