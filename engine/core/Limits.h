@@ -12,6 +12,15 @@ constexpr int kMinBlurTaps = DERMIS_MIN_BLUR_TAPS;
 constexpr int kMaxBlurTaps = DERMIS_MAX_BLUR_TAPS;
 static_assert(kMinBlurTaps % 2 == 1 && kMaxBlurTaps % 2 == 1, "tap counts are odd");
 
+// Samples per direction of the Separable SSS kernel, odd (sss.separable_samples).
+constexpr int kMinSeparableSamples = DERMIS_MIN_SEPARABLE_SAMPLES;
+constexpr int kMaxSeparableSamples = DERMIS_MAX_SEPARABLE_SAMPLES;
+static_assert(kMinSeparableSamples % 2 == 1 && kMaxSeparableSamples % 2 == 1, "sample counts are odd");
+
+// Samples per pixel of the disk-sampled Burley technique (sss.disk_samples).
+constexpr int kMinDiskSamples = DERMIS_MIN_DISK_SAMPLES;
+constexpr int kMaxDiskSamples = DERMIS_MAX_DISK_SAMPLES;
+
 // Gaussians per diffusion profile (sss.gaussians: use at most this many).
 constexpr int kMaxProfileGaussians = DERMIS_MAX_PROFILE_GAUSSIANS;
 

@@ -146,8 +146,8 @@ ScopedSssState::~ScopedSssState() {
     glDepthMask(GL_TRUE);
 }
 
-SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
+SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                    graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
     const auto w = static_cast<uint32_t>(frame.plan.width);
     const auto h = static_cast<uint32_t>(frame.plan.height);
     // Float: each of the six blended additions would otherwise round the sum to fp16 (up to
@@ -156,7 +156,8 @@ SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const
     const bool anyVisible = frame.plan.sss.anyVisible();
     assert(extras.empty() || extras.size() == kLeanSssTargets);
     const bool packed = !extras.empty();  // the chain carries colour and moments as halves (SssBlur.glsl)
-    const graph::TextureDesc chainDesc{w, h, packed ? graph::TextureFormat::Rgba32UI : graph::TextureFormat::Rgba16F};
+    SssStart start;
+    start.chainDesc = {w, h, packed ? graph::TextureFormat::Rgba32UI : graph::TextureFormat::Rgba16F};
 
     const InitData& init = graph.addPass<InitData>(
         "sss init",
@@ -171,7 +172,7 @@ SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const
                     builder.create(graph.textureName(extra) + " accumulated", builder.desc(extra)));
                 builder.passThrough(d.extrasAccumulated.back(), extra);
             }
-            if (packed) d.chain = builder.create("sss chain", chainDesc);
+            if (packed) d.chain = builder.create("sss chain", start.chainDesc);
             builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
             builder.skipIf(!anyVisible, "no SSS pixel on screen");
         },
@@ -184,8 +185,19 @@ SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const
             runFullscreenPass(frame, resources, {{d.accumulated, d.extrasAccumulated[0], d.chain}},
                               programs.sssInitLean.get(), {d.irradiance, d.depthKey, d.extras[0]});
         });
-    SssChain chain{init.accumulated, init.extrasAccumulated};
-    const graph::TextureHandle chainStart = packed ? init.chain : irradiance;
+    start.accumulated = SssChain{init.accumulated, init.extrasAccumulated};
+    start.chain = packed ? init.chain : irradiance;
+    start.packed = packed;
+    return start;
+}
+
+SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                             graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
+    const SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
+    SssChain chain = start.accumulated;
+    const graph::TextureHandle chainStart = start.chain;
+    const bool packed = start.packed;
+    const graph::TextureDesc chainDesc = start.chainDesc;
 
     for (const SssSlotPlan& slot : frame.plan.sss.slots) {
         graph::TextureHandle current = chainStart;
@@ -209,6 +221,16 @@ SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const
         }
     }
     return chain;
+}
+
+SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
+    switch (frame.plan.scene->settings.sss.technique) {
+        case SssTechnique::Separable: return addSeparableSss(graph, frame, gbuffer, irradiance, extras);
+        case SssTechnique::Disk: return addDiskSss(graph, frame, gbuffer, irradiance, extras);
+        case SssTechnique::Gaussians: break;
+    }
+    return addSssGaussianChain(graph, frame, gbuffer, irradiance, extras);
 }
 
 }  // namespace dermis

@@ -27,7 +27,30 @@ struct SssChain {
     std::vector<graph::TextureHandle> extras;   // accumulated extra targets, in the order given
 };
 
-// The same chain with extra targets (none, or the kLeanSssTargets LEAN
+// Screen-space SSS by the scene's technique (settings.sss.technique): the
+// d'Eon chain below, Separable SSS or the disk. Every technique keeps this
+// contract: the returned targets hold the scattered irradiance (and extras)
+// on the SSS pixels it blurs and the inputs' values everywhere else; with
+// SSS disabled or no SSS pixel on screen its passes are culled and readers
+// get the inputs themselves.
+SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+
+// What `sss init` starts: the accumulations (colour, extras) and the chain
+// the first blur reads (the irradiance itself, or the packed chain).
+struct SssStart {
+    SssChain accumulated;
+    graph::TextureHandle chain;
+    graph::TextureDesc chainDesc;
+    bool packed = false;
+};
+// The `sss init` pass: SSS pixels start their accumulation at the profile's
+// identity weight x the irradiance (a technique that overwrites every SSS
+// pixel of its slot may ignore that), every other pixel keeps its input.
+SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                    graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+
+// The d'Eon chain (technique "gaussians"): the same chain with extra targets (none, or the kLeanSssTargets LEAN
 // moments) blurred in the same passes with the same taps: the chain packs
 // irradiance and moments as halves in one RGBA32UI texture ("sss chain",
 // started by sss init) and the accumulations are float targets written
@@ -35,8 +58,15 @@ struct SssChain {
 // Gaussian (include/SssBlur.glsl, "EXTRA TARGETS AND ALPHA", "PACKING").
 // Pixels no blur touches keep their values; with nothing to blur, readers
 // get the inputs themselves.
-SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                             graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+
+// Separable SSS (Jimenez et al. 2015), passes/SssSeparablePasses.cpp.
+SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                         graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+// The profile sampled on a disk in one pass, passes/SssDiskPass.cpp.
+SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                    graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 
 constexpr int kAnySssPixel = -1;
 

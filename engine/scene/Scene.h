@@ -146,10 +146,13 @@ struct SssSettings {
     bool enabled = true;
     SssVariant variant = SssVariant::Lbb;  // Vila Verde 2015 §5.1 (kSssVariants; render/SssVariant.h)
     SssBlur blur = SssBlur::Variant;        // edge handling (kSssBlurs)
-    int taps = 9;                        // taps per direction, odd, kMinBlurTaps..kMaxBlurTaps
+    SssTechnique technique = SssTechnique::Gaussians;  // kSssTechniques
+    int separableSamples = 17;           // separable: samples per direction, odd, kMinSeparableSamples..kMaxSeparableSamples
+    int diskSamples = 40;                // disk: samples per pixel, kMinDiskSamples..kMaxDiskSamples
+    int taps = 9;                        // gaussians: taps per direction, odd, kMinBlurTaps..kMaxBlurTaps
     float bilateralDepthMm = 1.0f;       // std dev of the Gaussian in tap-to-centre depth difference (mm)
     float controlDepthScalePerMm = 0.5f;  // control: lerp to centre by min(1, scale * |depth difference| in mm)
-    int gaussians = 6;                   // use at most this many of each profile's Gaussians (the widest are dropped)
+    int gaussians = 6;                   // gaussians: use at most this many of each profile's Gaussians (the widest are dropped)
     float widthScale = 1.0f;             // multiplies every profile's widths (1 = physical)
     float minWidthPx = 0.5f;             // skip a Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel
     float mix = 0.5f;                    // pre-/post-scatter albedo mix (Chappuis 2011 §2.2.4): albedo^mix before the blur

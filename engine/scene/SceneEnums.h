@@ -26,6 +26,23 @@ inline constexpr EnumTable<SssMode, 2> kSssModes{
     {{{SssMode::ScreenSpace, "ss", "screen-space SSS chain (Jimenez et al. 2009)"},
       {SssMode::TextureSpace, "ts", "texture-space SSS (d'Eon & Luebke 2007)"}}}};
 
+// The screen-space SSS technique (settings.sss.technique): how the
+// irradiance is spread by the profile. Each has its own passes
+// (engine/passes/SssPasses.h dispatches) and its own settings.
+enum class SssTechnique {
+    Gaussians = DERMIS_SSS_TECHNIQUE_GAUSSIANS,
+    Separable = DERMIS_SSS_TECHNIQUE_SEPARABLE,
+    Disk = DERMIS_SSS_TECHNIQUE_DISK,
+};
+
+inline constexpr EnumTable<SssTechnique, 3> kSssTechniques{
+    "SSS technique",
+    {{{SssTechnique::Gaussians, "gaussians",
+       "d'Eon & Luebke 2007's sum of Gaussians, one separable pair each (sss.taps, sss.gaussians)"},
+      {SssTechnique::Separable, "separable",
+       "Jimenez et al. 2015's one pre-integrated separable pair (sss.separable_samples)"},
+      {SssTechnique::Disk, "disk", "the profile sampled on a disk in one pass (sss.disk_samples)"}}}};
+
 // Vila Verde 2015 §5.1's three versions of the screen-space frame (render/SssVariant.h).
 enum class SssVariant { C, Lcb, Lbb };
 
@@ -90,7 +107,7 @@ inline constexpr EnumTable<EnvironmentSpecular, 3> kEnvironmentSpeculars{
 static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne(),
               "every value and every name appears once");
 
-static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssVariants.isOneToOne() &&
+static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssTechniques.isOneToOne() && kSssVariants.isOneToOne() &&
                   kSssBlurs.isOneToOne() && kShadowFilters.isOneToOne(),
               "every value and every name appears once");
 

@@ -9,6 +9,16 @@ const IntegerRule& blurTapsRule() {
     return kRule;
 }
 
+const IntegerRule& separableSamplesRule() {
+    static const IntegerRule kRule{
+        [](int samples) {
+            return samples >= kMinSeparableSamples && samples <= kMaxSeparableSamples && samples % 2 == 1;
+        },
+        "must be an odd number of samples in [" + std::to_string(kMinSeparableSamples) + ", " +
+            std::to_string(kMaxSeparableSamples) + "]"};
+    return kRule;
+}
+
 const IntegerRule& tsSizeRule() {
     static const IntegerRule kRule{
         [](int size) { return size >= kMinTsSize && size <= kMaxTsSize && (size & (size - 1)) == 0; },

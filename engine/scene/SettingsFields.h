@@ -28,7 +28,8 @@ struct IntegerRule {
 };
 
 const IntegerRule& blurTapsRule();  // odd, in [kMinBlurTaps, kMaxBlurTaps]
-const IntegerRule& tsSizeRule();    // a power of two in [kMinTsSize, kMaxTsSize]
+const IntegerRule& tsSizeRule();
+const IntegerRule& separableSamplesRule();  // odd, in [kMinSeparableSamples, kMaxSeparableSamples]    // a power of two in [kMinTsSize, kMaxTsSize]
 
 template <typename S, typename V>
 void visitShadowFields(S& s, V& v) {
@@ -43,6 +44,9 @@ void visitSssFields(S& s, V& v) {
     v.boolean("enabled", s.enabled);
     v.choice("variant", kSssVariants, s.variant);
     v.choice("blur", kSssBlurs, s.blur);
+    v.choice("technique", kSssTechniques, s.technique);
+    v.rule("separable_samples", s.separableSamples, separableSamplesRule());
+    v.integer("disk_samples", s.diskSamples, Range::closed(kMinDiskSamples, kMaxDiskSamples));
     v.rule("taps", s.taps, blurTapsRule());
     v.number("bilateral_depth_mm", s.bilateralDepthMm, Range::above(0.0));
     v.number("control_depth_scale_per_mm", s.controlDepthScalePerMm, Range::atLeast(0.0));

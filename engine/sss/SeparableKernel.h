@@ -20,6 +20,7 @@
 // channel to sum to 1. (The authors' code weights a tap by the profile at the
 // tap times its interval instead.)
 
+#include "core/Limits.h"
 #include "core/Result.h"
 #include "sss/DiffusionProfile.h"
 
@@ -29,8 +30,6 @@
 
 namespace dermis {
 
-constexpr int kMinSeparableSamples = 7;
-constexpr int kMaxSeparableSamples = 33;
 // The default range in standard deviations of the profile's widest Gaussian.
 constexpr float kSeparableRangeStdDevs = 3.0f;
 // The power law's exponent (EXPONENT in the authors' SeparableSSS code).

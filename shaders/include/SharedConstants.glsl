@@ -20,6 +20,12 @@
 // Taps per direction of a separable blur kernel (odd counts from 3 up to this).
 #define DERMIS_MIN_BLUR_TAPS 3
 #define DERMIS_MAX_BLUR_TAPS 33
+// Samples per direction of the Separable SSS kernel (Jimenez et al. 2015), odd.
+#define DERMIS_MIN_SEPARABLE_SAMPLES 7
+#define DERMIS_MAX_SEPARABLE_SAMPLES 33
+// Samples per pixel of the disk-sampled Burley technique (Christensen & Burley 2015).
+#define DERMIS_MIN_DISK_SAMPLES 8
+#define DERMIS_MAX_DISK_SAMPLES 128
 #define DERMIS_MAX_SCREEN_REGIONS 64     // rectangles one fullscreen draw may cover (engine/render/ScreenRegions.h)
 
 // Light types (GpuLight::positionType.w); C++: LightType.
@@ -37,6 +43,11 @@
 #define DERMIS_PCSS_FILTER_SAMPLES 64
 // The widest PCSS search and filter radius, in shadow-map texels.
 #define DERMIS_PCSS_MAX_RADIUS_TEXELS 256
+
+// Screen-space SSS techniques (settings.sss.technique); C++: SssTechnique.
+#define DERMIS_SSS_TECHNIQUE_GAUSSIANS 0
+#define DERMIS_SSS_TECHNIQUE_SEPARABLE 1
+#define DERMIS_SSS_TECHNIQUE_DISK 2
 
 // Edge handling of the screen-space SSS blur (SssBlurBlock::edges.x); C++:
 // SssBlur. Bilateral: depth-weighted taps; control: Jimenez et al. 2009's lerp
