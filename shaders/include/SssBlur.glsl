@@ -73,22 +73,10 @@
 //   character's metres_per_unit is already in z. The centre pixel's depth
 //   sets the width, as in Jimenez's SeparableSSS.
 //
-// EDGES
-//   Taps read the depth key (profile slot + view depth, UniformBlocks.glsl),
-//   so one test rejects taps across silhouettes, on the background, on
-//   opaque objects and on other profiles.
-//   - bilateral (Vila Verde 2015 §4.3.2, the default): each tap's kernel weight is
-//     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
-//     SSS_BILATERAL default below or the block's value, and the sum is
-//     renormalised. No light crosses an edge: no halo, no background bleed.
-//   - control (Jimenez, Vila Verde 2015 §3.2.2): a tap's colour is lerped back to
-//     the centre's by min(1, k * d); weights are not renormalised.
-//   - fetch-only (benchmarks): the same fetches of colour and key per tap,
-//     summed with the kernel weights and nothing else: the bandwidth floor
-//     the blur's cost is compared with.
-//   Taps that land on another profile or the background are replaced by the
-//   centre (control) or dropped (bilateral) by selection, not by a multiply,
-//   so a non-finite value outside the mask can never leak in.
+// EDGES (include/SssEdges.glsl, shared with the other techniques)
+//   bilateral (the default of lbb), control (c, lcb) or fetch-only (the
+//   benchmarks' bandwidth floor: the same fetches of colour and key per tap,
+//   summed with the kernel weights and nothing else).
 //
 // SAMPLING AND WEIGHTS (per pixel, from its own width in pixels sigma_px)
 //   Taps fetch whole texels (texelFetch): a bilinear fetch at a silhouette
@@ -118,6 +106,8 @@
 //                      usampler2D.
 #ifndef DERMIS_SSS_BLUR_GLSL
 #define DERMIS_SSS_BLUR_GLSL
+
+#include "SssEdges.glsl"
 
 #ifndef SSS_EXTRA_TARGETS
 #define SSS_EXTRA_TARGETS 0
@@ -206,10 +196,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float halfWeights[kSssMaxHalfTaps + 1];
     float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.source.x > 0.5, halfWeights);
     int edges = int(uSssBlur.edges.x + 0.5);
-    bool bilateral = edges == DERMIS_BLUR_EDGES_BILATERAL;
     bool fetchOnly = edges == DERMIS_BLUR_EDGES_FETCH_ONLY;
-    float inverseTwoSigmaSquared = 1.0 / (2.0 * uSssBlur.edges.y * uSssBlur.edges.y);
-    float controlScale = uSssBlur.edges.z;
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -224,24 +211,17 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
             weightSum += weight;
             continue;
         }
-        float distanceMm = keyDistanceMm(centreKey, texelFetch(depthKey, tapPixel, 0).r);
-        bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
-        if (bilateral) {
-            if (!sameProfile) continue;
-            weight *= exp(-distanceMm * distanceMm * inverseTwoSigmaSquared);
+        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges, uSssBlur.edges.y,
+                                     uSssBlur.edges.z);
+        if (edge.weight <= 0.0) continue;
+        weight *= edge.weight;
+        if (edge.toCentre < 1.0) {
             SssValues tap = sssFetch(colour, tapPixel);
-            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * tap.v[k];
-            weightSum += weight;
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * mix(tap.v[k], centre.v[k], edge.toCentre);
         } else {
-            float toCentre = min(controlScale * distanceMm, 1.0);
-            if (sameProfile && toCentre < 1.0) {
-                SssValues tap = sssFetch(colour, tapPixel);
-                for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * mix(tap.v[k], centre.v[k], toCentre);
-            } else {
-                for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * centre.v[k];
-            }
-            weightSum += weight;
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * centre.v[k];
         }
+        weightSum += weight;
     }
     if (!(weightSum > 0.0)) return centre;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] /= weightSum;

@@ -1,0 +1,43 @@
+// SssEdges.glsl: how one tap of a screen-space SSS kernel counts at a depth
+// edge, shared by every screen-space technique (the d'Eon chain in
+// SssBlur.glsl, Separable SSS, the disk) so that they stop light at the same
+// silhouettes.
+//
+// Taps read the depth key (profile slot + view depth, UniformBlocks.glsl), so
+// one test rejects taps across silhouettes, on the background, on opaque
+// objects and on other profiles:
+//   - bilateral (Vila Verde 2015 §4.3.2): the tap's kernel weight is
+//     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
+//     bilateralDepthMm, and the caller renormalises by the weights' sum. No
+//     light crosses an edge: no halo, no background bleed. A tap on another
+//     profile or the background gets weight 0.
+//   - control (Jimenez et al. 2009, Vila Verde 2015 §3.2.2): the tap's value
+//     is lerped back to the centre's by min(1, k d), k = controlScalePerMm;
+//     its weight stays. A tap on another profile is the centre.
+//   - fetch-only: weight 1, no lerp (a benchmark floor, not a blur).
+// A tap whose toCentre is 1 must not be fetched at all (selection, not a
+// multiply), so a non-finite value outside the mask can never leak in.
+#ifndef DERMIS_SSS_EDGES_GLSL
+#define DERMIS_SSS_EDGES_GLSL
+
+#include "Common.glsl"
+
+struct SssEdgeTap {
+    float weight;    // multiplies the kernel's weight (0: drop the tap)
+    float toCentre;  // the tap's value is mix(tap, centre, toCentre)
+};
+
+SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, int edges, float bilateralDepthMm, float controlScalePerMm) {
+    SssEdgeTap result = SssEdgeTap(1.0, 0.0);
+    if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) return result;
+    float distanceMm = keyDistanceMm(centreKey, tapKey);
+    bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
+    if (edges == DERMIS_BLUR_EDGES_BILATERAL) {
+        result.weight = sameProfile ? exp(-distanceMm * distanceMm / (2.0 * bilateralDepthMm * bilateralDepthMm)) : 0.0;
+    } else {
+        result.toCentre = sameProfile ? min(controlScalePerMm * distanceMm, 1.0) : 1.0;
+    }
+    return result;
+}
+
+#endif
