@@ -75,14 +75,14 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
                 d.extrasAccumulatedOut.push_back(builder.write(accumulated));
             }
         },
-        [frame, step = blur.step, slot = blur.slot->slot, scissor = blur.slot->scissor, regions = blur.slot->regions,
+        [frame, step = blur.step, slot = blur.slot->slot, kernel = blur.slot->gaussianKernel, scissor = blur.slot->scissor, regions = blur.slot->regions,
          horizontal = blur.horizontal, packed = blur.packed](const graph::PassResources& resources, const BlurData& d) {
             std::vector<graph::TextureHandle> targets = {d.out, d.accumulatedOut};
             targets.insert(targets.end(), d.extrasAccumulatedOut.begin(), d.extrasAccumulatedOut.end());
             const Programs& programs = *frame.gl->programs;
             beginFullscreenPass(frame, resources, {targets, d.stencil},
                                 packed ? programs.sssBlurLean.get() : programs.sssBlur.get(), {d.colour, d.depthKey});
-            const gpu::SssBlurBlock block = blurBlock(frame, frame.plan.sssKernel, step, slot, horizontal);
+            const gpu::SssBlurBlock block = blurBlock(frame, kernel, step, slot, horizontal);
             frame.gl->uploadPassBlock(&block, sizeof block);
             const ScopedSssState state(frame, scissor, slot);
             if (horizontal) {
@@ -192,14 +192,13 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 }
 
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                             graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    const SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
-    SssChain chain = start.accumulated;
+                             const SssStart& start, SssChain chain, SssTechnique technique) {
     const graph::TextureHandle chainStart = start.chain;
     const bool packed = start.packed;
     const graph::TextureDesc chainDesc = start.chainDesc;
 
     for (const SssSlotPlan& slot : frame.plan.sss.slots) {
+        if (slot.choice.technique != technique) continue;
         graph::TextureHandle current = chainStart;
         for (const SssGaussianStep& step : slot.steps) {
             BlurStep blur;
@@ -225,12 +224,12 @@ SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& fram
 
 SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                      graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    switch (frame.plan.scene->settings.sss.technique) {
-        case SssTechnique::Separable: return addSeparableSss(graph, frame, gbuffer, irradiance, extras);
-        case SssTechnique::Disk: return addDiskSss(graph, frame, gbuffer, irradiance, extras);
-        case SssTechnique::Gaussians: break;
-    }
-    return addSssGaussianChain(graph, frame, gbuffer, irradiance, extras);
+    const SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
+    SssChain chain = start.accumulated;
+    chain = addSssGaussianChain(graph, frame, gbuffer, start, chain, SssTechnique::Gaussians);
+    chain = addSeparableSss(graph, frame, gbuffer, start, chain);
+    chain = addDiskSss(graph, frame, gbuffer, start, chain);
+    return chain;
 }
 
 }  // namespace dermis

@@ -27,12 +27,12 @@ struct SssChain {
     std::vector<graph::TextureHandle> extras;   // accumulated extra targets, in the order given
 };
 
-// Screen-space SSS by the scene's technique (settings.sss.technique): the
-// d'Eon chain below, Separable SSS or the disk. Every technique keeps this
-// contract: the returned targets hold the scattered irradiance (and extras)
-// on the SSS pixels it blurs and the inputs' values everywhere else; with
-// SSS disabled or no SSS pixel on screen its passes are culled and readers
-// get the inputs themselves.
+// Screen-space SSS: `sss init`, then each technique's passes for the slots
+// whose choice (render/SssPlan.h, SssChoice) is that technique: the d'Eon
+// chain, Separable SSS, the disk. The returned targets hold the scattered
+// irradiance (and extras) on the SSS pixels and the inputs' values
+// everywhere else; with SSS disabled or no SSS pixel on screen every pass is
+// culled and readers get the inputs themselves.
 SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                      graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 
@@ -50,23 +50,28 @@ struct SssStart {
 SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
 
-// The d'Eon chain (technique "gaussians"): the same chain with extra targets (none, or the kLeanSssTargets LEAN
-// moments) blurred in the same passes with the same taps: the chain packs
-// irradiance and moments as halves in one RGBA32UI texture ("sss chain",
-// started by sss init) and the accumulations are float targets written
-// through multiple render targets, the moments' with one scalar weight per
-// Gaussian (include/SssBlur.glsl, "EXTRA TARGETS AND ALPHA", "PACKING").
-// Pixels no blur touches keep their values; with nothing to blur, readers
-// get the inputs themselves.
+// Each technique's passes for the slots whose choice is that technique
+// (others are left alone), reading the chain start and adding into `chain`,
+// which it returns: a technique's last pass either adds w x its result into
+// the accumulations by blending (after sss init's identity weight, as the
+// d'Eon chain does) or overwrites every pixel of its slot.
+//
+// The d'Eon chain (technique "gaussians", or `technique`'s slots until that
+// technique has its own passes): one blur pair per Gaussian, with extra
+// targets (none, or the kLeanSssTargets LEAN moments) blurred in the same
+// passes with the same taps: the chain packs irradiance and moments as halves
+// in one RGBA32UI texture ("sss chain", started by sss init) and the
+// accumulations are float targets written through multiple render targets,
+// the moments' with one scalar weight per Gaussian (include/SssBlur.glsl,
+// "EXTRA TARGETS AND ALPHA", "PACKING").
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                             graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
-
+                             const SssStart& start, SssChain chain, SssTechnique technique);
 // Separable SSS (Jimenez et al. 2015), passes/SssSeparablePasses.cpp.
 SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                         graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+                         const SssStart& start, SssChain chain);
 // The profile sampled on a disk in one pass, passes/SssDiskPass.cpp.
 SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                    graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+                    const SssStart& start, SssChain chain);
 
 constexpr int kAnySssPixel = -1;
 

@@ -2,10 +2,10 @@
 
 namespace dermis {
 
-// Not yet written: the separable technique runs the d'Eon chain until its passes land.
-SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                        graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    return addSssGaussianChain(graph, frame, gbuffer, irradiance, extras);
+// Not yet written: the separable technique's slots run the d'Eon chain until its passes land.
+SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer, const SssStart& start,
+                        SssChain chain) {
+    return addSssGaussianChain(graph, frame, gbuffer, start, chain, SssTechnique::Separable);
 }
 
 }  // namespace dermis

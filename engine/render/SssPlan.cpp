@@ -25,7 +25,7 @@ glm::ivec4 unionRect(const glm::ivec4& a, const glm::ivec4& b) {
 void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMetreAtUnitDepth) {
     const float widthScale2 = plan.widthScale * plan.widthScale;
     const auto& gaussians = plan.profile->gaussians();
-    const int used = std::clamp(settings.gaussians, 1, static_cast<int>(gaussians.size()));
+    const int used = std::clamp(plan.choice.gaussians, 1, static_cast<int>(gaussians.size()));
     std::vector<glm::vec3> weights;
     for (int i = 0; i < used; ++i) weights.push_back(gaussians[static_cast<size_t>(i)].weight);
     for (size_t i = static_cast<size_t>(used); i < gaussians.size(); ++i) weights.back() += gaussians[i].weight;
@@ -55,7 +55,25 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
     }
 }
 
+// The choice for one character's SSS submeshes.
+SssChoice chooseSss(const Scene& scene) { return SssChoice::fromSettings(scene.settings.sss); }
+
 }  // namespace
+
+SssChoice SssChoice::fromSettings(const SssSettings& settings) {
+    SssChoice choice;
+    choice.technique = settings.technique;
+    choice.taps = settings.taps;
+    choice.gaussians = settings.gaussians;
+    choice.separableSamples = settings.separableSamples;
+    choice.diskSamples = settings.diskSamples;
+    return choice;
+}
+
+bool SssChoice::operator==(const SssChoice& other) const {
+    return technique == other.technique && taps == other.taps && gaussians == other.gaussians &&
+           separableSamples == other.separableSamples && diskSamples == other.diskSamples;
+}
 
 bool SssPlan::anyVisible() const {
     return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) { return s.visible; });
@@ -85,24 +103,29 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
         if (!submeshes.ok()) return submeshes.error();
         ScreenFootprint fp;
         if (scene.settings.sss.enabled && c < characterBounds.size()) fp = screenFootprint(characterBounds[c], view);
+        const SssChoice choice = chooseSss(scene);
         for (const SubmeshScattering& submesh : *submeshes) {
             if (submesh.profile == nullptr) {
                 plan.slotsOfCharacter[c].push_back(0);
                 continue;
             }
             auto existing = std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
-                return s.profile == submesh.profile && s.widthScale == submesh.widthScale;
+                return s.profile == submesh.profile && s.widthScale == submesh.widthScale && s.choice == choice;
             });
             if (existing == plan.slots.end()) {
                 if (plan.slots.size() >= DERMIS_MAX_PROFILES) {
                     return makeError("character '" + character.name + "'",
                                      "more than " + std::to_string(DERMIS_MAX_PROFILES) +
-                                         " (diffusion profile, width scale) pairs in one scene");
+                                         " (diffusion profile, width scale, SSS choice) combinations in one frame");
                 }
                 SssSlotPlan slot;
                 slot.slot = static_cast<int>(plan.slots.size()) + 1;
                 slot.profile = submesh.profile;
                 slot.widthScale = submesh.widthScale;
+                slot.choice = choice;
+                auto kernel = makeGaussianKernel(choice.taps);
+                if (!kernel.ok()) return kernel.error();
+                slot.gaussianKernel = *kernel;
                 plan.slots.push_back(slot);
                 existing = plan.slots.end() - 1;
             }

@@ -18,6 +18,7 @@
 
 #include "mesh/Mesh.h"
 #include "scene/Scene.h"
+#include "sss/BlurKernel.h"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
@@ -36,10 +37,27 @@ struct SssGaussianStep {
     bool skipped = false;
 };
 
+// The screen-space technique and its sample counts for one slot: the scene's
+// settings.sss, or (under an error budget) the quality table's choice for
+// the characters of the slot. Characters whose choices differ get different
+// slots, so each slot runs one technique.
+struct SssChoice {
+    SssTechnique technique = SssTechnique::Gaussians;
+    int taps = 9;               // gaussians: taps per direction
+    int gaussians = 6;          // gaussians: at most this many of the profile's
+    int separableSamples = 17;  // separable: samples per direction
+    int diskSamples = 40;       // disk: samples per pixel
+    static SssChoice fromSettings(const SssSettings& settings);
+    bool operator==(const SssChoice& other) const;
+    bool operator!=(const SssChoice& other) const { return !(*this == other); }
+};
+
 struct SssSlotPlan {
     int slot = 0;  // 1..DERMIS_MAX_PROFILES
     const DiffusionProfile* profile = nullptr;
     float widthScale = 1.0f;  // settings.sss.widthScale x the material's width_scale
+    SssChoice choice;
+    BlurKernel gaussianKernel;  // gaussians: the unit kernel of choice.taps taps
     glm::vec3 initWeight{0.0f};  // accumulation = initWeight x irradiance before the first step
     std::vector<SssGaussianStep> steps;  // one per Gaussian used, from the narrowest
     bool visible = false;            // some character with this profile may cover a pixel
