@@ -4,7 +4,8 @@ DIR/summary.json, which the bench writes, and draws
 
   DIR/pareto.png  two panels, total error (against the full reference) and
                   scatter error (against the matched-irradiance reference),
-                  over frame GPU ms, one colour per mode, each mode's Pareto
+                  over frame GPU ms, one colour per front group (each
+                  screen-space technique, texture space), each group's Pareto
                   front joined by a line, the shipped defaults ringed;
   DIR/regions.png the shipped defaults' relative RMSE by cause and region;
   DIR/errors.md   the same as a Markdown table (for docs/bench.md);
@@ -24,6 +25,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MODE_STYLE = {"ss": ("tab:blue", "screen space"), "ts": ("tab:red", "texture space")}
+# One Pareto front per screen-space technique (results.csv's technique column; BenchReport.h paretoGroup).
+GROUP_STYLE = {"ss gaussians": ("tab:blue", "ss gaussians"), "ss separable": ("tab:green", "ss separable"),
+               "ss disk": ("tab:purple", "ss disk"), "ts": ("tab:red", "texture space")}
+
+
+def front_group(row):
+    return f"{row['mode']} {row['technique']}" if row.get("technique") else row["mode"]
 
 # Pass names (render/Renderer and passes/*) grouped so that a bar has a few
 # readable layers instead of forty: the first prefix that matches wins.
@@ -87,10 +95,10 @@ PARETO_PANELS = [
 
 def plot_front(axes, rows, error_key, front_key):
     fronts = []
-    # The modes as the bench wrote them (its table of modes); a mode without a style gets the next colour.
-    for index, mode in enumerate(dict.fromkeys(r["mode"] for r in rows)):
-        colour, name = MODE_STYLE.get(mode, (f"C{index + 2}", mode))
-        mine = [r for r in rows if r["mode"] == mode and r[error_key] == r[error_key]]
+    # The front groups as the bench wrote them; a group without a style gets the next colour.
+    for index, group in enumerate(dict.fromkeys(front_group(r) for r in rows)):
+        colour, name = GROUP_STYLE.get(group, (f"C{index + 4}", group))
+        mine = [r for r in rows if front_group(r) == group and r[error_key] == r[error_key]]
         if not mine:
             continue
         axes.scatter([r["frame_gpu_ms"] for r in mine], [100 * r[error_key] for r in mine], s=18,
@@ -126,8 +134,8 @@ def plot_pareto(rows, summary, path):
     figure.suptitle(f"{summary['scene']} at {summary['width']}x{summary['height']}: run time against error "
                     f"(set in every configuration, as in the reference: {fixed})", fontsize=10)
     # The fronts' configurations, by the id written beside each point.
-    key = "\n".join(f"{r['id']:>3}  {r['mode']} {r['label']}" for r in sorted(fronts.values(), key=lambda r: int(r["id"])))
-    figure.text(0.755, 0.5, "Pareto fronts (id, mode, swept values):\n" + key, fontsize=6, family="monospace",
+    key = "\n".join(f"{r['id']:>3}  {front_group(r)} {r['label']}" for r in sorted(fronts.values(), key=lambda r: int(r["id"])))
+    figure.text(0.755, 0.5, "Pareto fronts (id, mode and technique, swept values):\n" + key, fontsize=6, family="monospace",
                 va="center")
     figure.tight_layout(rect=(0, 0, 0.75, 0.95))
     save(figure, path)

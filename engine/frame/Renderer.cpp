@@ -129,6 +129,13 @@ std::vector<CharacterReport> Renderer::characterReports() const {
             report.textureSpaceSize = ts.runs() ? ts.size : 0;
             report.textureSpaceFallback = ts.fallback;
         }
+        if (!mPlan->textureSpace && c < mPlan->sss.characterChoices.size()) {
+            const CharacterSssChoice& sss = mPlan->sss.characterChoices[c];
+            report.hasSss = sss.hasSss;
+            report.sssChoice = sss.choice;
+            report.pixelsPerMm = sss.pixelsPerMm;
+            report.sssChoiceSource = sss.source;
+        }
         reports.push_back(std::move(report));
     }
     return reports;

@@ -117,6 +117,13 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
                                        {"clip_time_s", c.clipTimeS},
                                        {"texture_space_size", c.textureSpaceSize},
                                        {"texture_space_fallback", c.textureSpaceFallback}});
+            nlohmann::ordered_json sss;  // null
+            if (c.hasSss) {
+                sss = sssChoiceJson(c.sssChoice);
+                sss["pixels_per_mm"] = c.pixelsPerMm;
+                sss["source"] = c.sssChoiceSource;
+            }
+            j["characters"].back()["sss"] = std::move(sss);
         }
     }
     return j.dump(2) + "\n";

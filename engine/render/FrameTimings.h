@@ -8,7 +8,11 @@
 //   "frames": N, "scene": "...",
 //   "passes": [ {"name": "...", "executed": true, "executed_frames": 10, "culled_because": "",
 //                "gpu_ms": 1.2, "cpu_ms": 0.1}, ... ],
-//   "frame": {"gpu_ms": ..., "cpu_ms": ..., "wall_ms": ...} }
+//   "frame": {"gpu_ms": ..., "cpu_ms": ..., "wall_ms": ...},
+//   "characters": [ {"name": "...", ..., "sss": {"technique": "gaussians", "taps": 9, "gaussians": 6,
+//                    "separable_samples": 17, "disk_samples": 40, "pixels_per_mm": 2.1,
+//                    "source": "settings" | "table" | "finest" | "merged"}}, ... ] }
+// "sss" is null for a character without SSS and in texture space.
 // `executed` is true when the pass ran in at least one frame; a cached pass
 // (a shadow map) runs in the first frame only. `culled_because` says why it
 // was culled in the last frame it did not run. gpu_ms and cpu_ms are medians
@@ -18,6 +22,7 @@
 #include "core/Result.h"
 #include "gl/GpuProfiler.h"
 #include "graph/RenderGraph.h"
+#include "scene/QualityTable.h"
 
 #include <map>
 #include <string>
@@ -46,6 +51,11 @@ struct CharacterReport {
     float clipTimeS = 0.0f;
     int textureSpaceSize = 0;      // irradiance texture side; 0 when texture space does not draw it
     std::string textureSpaceFallback;
+    // Screen space: the SSS choice it renders with (render/SssPlan.h CharacterSssChoice); absent when it has no SSS.
+    bool hasSss = false;
+    SssChoice sssChoice;
+    float pixelsPerMm = 0.0f;
+    std::string sssChoiceSource;
 };
 
 struct RunInfo {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace dermis {
 namespace {
@@ -55,25 +56,33 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
     }
 }
 
-// The choice for one character's SSS submeshes.
-SssChoice chooseSss(const Scene& scene) { return SssChoice::fromSettings(scene.settings.sss); }
+// The choice for one character's SSS submeshes and its fineness rank among
+// this frame's choices: the table row's index, rows.size() for the finest
+// (ranks compare only under a budget; without one every choice is the same).
+struct RankedChoice {
+    SssChoice choice;
+    size_t rank = 0;
+    const char* source = "settings";
+};
+
+RankedChoice chooseSss(const Scene& scene, float pixelsPerMm) {
+    const QualitySettings& quality = scene.settings.quality;
+    if (quality.errorBudget <= 0.0f || quality.loaded.empty()) {
+        return {SssChoice::fromSettings(scene.settings.sss), 0, "settings"};
+    }
+    const size_t row = quality.loaded.rowFor(pixelsPerMm);
+    return {quality.loaded.choiceAt(row), row, row < quality.loaded.rows.size() ? "table" : "finest"};
+}
+
+Status setChoice(SssSlotPlan& slot, const SssChoice& choice) {
+    auto kernel = makeGaussianKernel(choice.taps);
+    if (!kernel.ok()) return kernel.error();
+    slot.choice = choice;
+    slot.gaussianKernel = *kernel;
+    return success();
+}
 
 }  // namespace
-
-SssChoice SssChoice::fromSettings(const SssSettings& settings) {
-    SssChoice choice;
-    choice.technique = settings.technique;
-    choice.taps = settings.taps;
-    choice.gaussians = settings.gaussians;
-    choice.separableSamples = settings.separableSamples;
-    choice.diskSamples = settings.diskSamples;
-    return choice;
-}
-
-bool SssChoice::operator==(const SssChoice& other) const {
-    return technique == other.technique && taps == other.taps && gaussians == other.gaussians &&
-           separableSamples == other.separableSamples && diskSamples == other.diskSamples;
-}
 
 bool SssPlan::anyVisible() const {
     return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) { return s.visible; });
@@ -95,7 +104,10 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
                         const std::vector<std::vector<std::string>>& submeshMaterials) {
     SssPlan plan;
     plan.slotsOfCharacter.resize(scene.characters.size());
+    plan.characterChoices.resize(scene.characters.size());
+    std::vector<size_t> slotRanks;
     std::vector<std::vector<glm::ivec4>> characterRects;  // per slot
+    const bool budgeted = scene.settings.quality.errorBudget > 0.0f && !scene.settings.quality.loaded.empty();
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
         auto submeshes = submeshScattering(scene, c, c < submeshMaterials.size() ? submeshMaterials[c]
@@ -103,15 +115,42 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
         if (!submeshes.ok()) return submeshes.error();
         ScreenFootprint fp;
         if (scene.settings.sss.enabled && c < characterBounds.size()) fp = screenFootprint(characterBounds[c], view);
-        const SssChoice choice = chooseSss(scene);
+        const float pixelsPerMm = fp.visible ? view.pixelsPerMetreAtUnitDepth() * 1e-3f / fp.nearestViewDepthM : 0.0f;
+        const RankedChoice ranked = chooseSss(scene, pixelsPerMm);
+        CharacterSssChoice& report = plan.characterChoices[c];
+        report.pixelsPerMm = pixelsPerMm;
+        report.source = ranked.source;
         for (const SubmeshScattering& submesh : *submeshes) {
             if (submesh.profile == nullptr) {
                 plan.slotsOfCharacter[c].push_back(0);
                 continue;
             }
+            auto sameScattering = [&](const SssSlotPlan& s) {
+                return s.profile == submesh.profile && s.widthScale == submesh.widthScale;
+            };
             auto existing = std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
-                return s.profile == submesh.profile && s.widthScale == submesh.widthScale && s.choice == choice;
+                return sameScattering(s) && s.choice == ranked.choice;
             });
+            // Under a budget an unseen character may share any slot of its scattering: it covers no pixel.
+            if (existing == plan.slots.end() && budgeted && !fp.visible) {
+                existing = std::find_if(plan.slots.begin(), plan.slots.end(), sameScattering);
+            }
+            if (existing == plan.slots.end() && plan.slots.size() >= DERMIS_MAX_PROFILES && budgeted) {
+                // Join the nearest finer slot; else make the finest coarser one as fine as this choice.
+                std::optional<size_t> finer;
+                std::optional<size_t> coarser;
+                for (size_t s = 0; s < plan.slots.size(); ++s) {
+                    if (!sameScattering(plan.slots[s])) continue;
+                    if (slotRanks[s] >= ranked.rank && (!finer || slotRanks[s] < slotRanks[*finer])) finer = s;
+                    if (slotRanks[s] < ranked.rank && (!coarser || slotRanks[s] > slotRanks[*coarser])) coarser = s;
+                }
+                if (!finer && coarser) {
+                    if (Status set = setChoice(plan.slots[*coarser], ranked.choice); !set.ok()) return set.error();
+                    slotRanks[*coarser] = ranked.rank;
+                    finer = coarser;
+                }
+                if (finer) existing = plan.slots.begin() + static_cast<std::ptrdiff_t>(*finer);
+            }
             if (existing == plan.slots.end()) {
                 if (plan.slots.size() >= DERMIS_MAX_PROFILES) {
                     return makeError("character '" + character.name + "'",
@@ -122,11 +161,9 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
                 slot.slot = static_cast<int>(plan.slots.size()) + 1;
                 slot.profile = submesh.profile;
                 slot.widthScale = submesh.widthScale;
-                slot.choice = choice;
-                auto kernel = makeGaussianKernel(choice.taps);
-                if (!kernel.ok()) return kernel.error();
-                slot.gaussianKernel = *kernel;
+                if (Status set = setChoice(slot, ranked.choice); !set.ok()) return set.error();
                 plan.slots.push_back(slot);
+                slotRanks.push_back(ranked.rank);
                 existing = plan.slots.end() - 1;
             }
             plan.slotsOfCharacter[c].push_back(existing->slot);
@@ -141,6 +178,20 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
     }
     for (size_t s = 0; s < characterRects.size(); ++s) plan.slots[s].regions = disjointCover(characterRects[s]);
     for (SssSlotPlan& slot : plan.slots) planSteps(slot, scene.settings.sss, view.pixelsPerMetreAtUnitDepth());
+    // Slots may have become finer after a character joined them: report what each renders with.
+    for (size_t c = 0; c < scene.characters.size(); ++c) {
+        CharacterSssChoice& report = plan.characterChoices[c];
+        for (int slot : plan.slotsOfCharacter[c]) {
+            if (slot == 0) continue;
+            const SssChoice& used = plan.slots[static_cast<size_t>(slot - 1)].choice;
+            if (report.pixelsPerMm > 0.0f && budgeted && used != chooseSss(scene, report.pixelsPerMm).choice) {
+                report.source = "merged";
+            }
+            report.hasSss = true;
+            report.choice = used;
+            break;
+        }
+    }
     return plan;
 }
 

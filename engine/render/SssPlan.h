@@ -17,6 +17,7 @@
 // kept.
 
 #include "mesh/Mesh.h"
+#include "scene/QualityTable.h"
 #include "scene/Scene.h"
 #include "sss/BlurKernel.h"
 #include "sss/DiffusionProfile.h"
@@ -37,21 +38,6 @@ struct SssGaussianStep {
     bool skipped = false;
 };
 
-// The screen-space technique and its sample counts for one slot: the scene's
-// settings.sss, or (under an error budget) the quality table's choice for
-// the characters of the slot. Characters whose choices differ get different
-// slots, so each slot runs one technique.
-struct SssChoice {
-    SssTechnique technique = SssTechnique::Gaussians;
-    int taps = 9;               // gaussians: taps per direction
-    int gaussians = 6;          // gaussians: at most this many of the profile's
-    int separableSamples = 17;  // separable: samples per direction
-    int diskSamples = 40;       // disk: samples per pixel
-    static SssChoice fromSettings(const SssSettings& settings);
-    bool operator==(const SssChoice& other) const;
-    bool operator!=(const SssChoice& other) const { return !(*this == other); }
-};
-
 struct SssSlotPlan {
     int slot = 0;  // 1..DERMIS_MAX_PROFILES
     const DiffusionProfile* profile = nullptr;
@@ -68,8 +54,20 @@ struct SssSlotPlan {
     std::vector<glm::ivec4> regions;
 };
 
+// The choice a character's SSS submeshes render with, for reports.
+struct CharacterSssChoice {
+    bool hasSss = false;      // some submesh has a diffusion profile
+    SssChoice choice;         // its first SSS submesh's slot's choice
+    float pixelsPerMm = 0.0f;  // at its nearest visible depth; 0 when not visible
+    // "settings" (no error budget), "table" (the quality table's row for its
+    // scale), "finest" (above the table's largest scale) or "merged" (more
+    // distinct choices than slots: it shares a finer slot).
+    std::string source = "settings";
+};
+
 struct SssPlan {
     std::vector<SssSlotPlan> slots;
+    std::vector<CharacterSssChoice> characterChoices;  // per scene character
     std::vector<std::vector<int>> slotsOfCharacter;  // per scene character, per submesh; 0 = opaque (no SSS)
     bool anyVisible() const;
     bool hasSss(size_t character) const;  // some submesh of it has a slot
@@ -90,7 +88,12 @@ struct ViewParams {
 // characterBounds are world-space bounds, one per scene character;
 // submeshMaterials the glTF material names of each character's submeshes
 // (a missing or empty entry: one submesh with the character's material).
-// Errors for an unknown profile name or more profiles than slots.
+// With settings.quality.error_budget > 0 each character's choice comes from
+// the quality table by its pixels per mm at its nearest visible depth
+// (QualityTable.h: the rule); when the distinct choices outgrow the slots, a
+// character joins the slot of the same profile with the nearest finer choice
+// (or makes the coarsest such slot finer), never a coarser one.
+// Errors for an unknown profile name or more (profile, width scale) pairs than slots.
 Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view,
                         const std::vector<std::vector<std::string>>& submeshMaterials = {});
 

@@ -7,6 +7,7 @@
 #include "core/Limits.h"
 #include "core/Result.h"
 #include "scene/SceneEnums.h"
+#include "scene/QualityTable.h"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
@@ -192,6 +193,14 @@ struct TextureSpaceSettings {
                                // this many of its standard deviations (0 = never)
 };
 
+// An error budget for the screen-space SSS (docs/quality.md): each character
+// gets the cheapest choice a quality table lists for its on-screen scale.
+struct QualitySettings {
+    float errorBudget = 0.0f;  // 0: off (every character uses settings.sss); else a fraction, e.g. 0.01
+    std::string table;         // resolved path of the quality table (scene/QualityTable.h)
+    QualityTable loaded;       // read at scene load when errorBudget > 0; not a field of the file
+};
+
 // Settings of the frame itself.
 struct RenderSettings {
     SssMode mode = SssMode::ScreenSpace;  // kSssModes
@@ -203,6 +212,7 @@ struct RenderSettings {
     TransmittanceSettings transmittance;
     SsaoSettings ssao;
     TextureSpaceSettings ts;
+    QualitySettings quality;
 };
 
 struct Scene {

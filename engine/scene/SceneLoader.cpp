@@ -440,7 +440,7 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
 // Reads the fields a visit lists (SettingsFields.h) from one JSON object.
 class FieldReader {
 public:
-    explicit FieldReader(JsonObject& object) : mObject(object) {}
+    FieldReader(JsonObject& object, const std::string& sceneFile) : mObject(object), mSceneFile(sceneFile) {}
 
     void number(const char* key, float& out, const Range& range) { mObject.number(key, out, range); }
     void integer(const char* key, int& out, const Range& range) { mObject.integer(key, out, range); }
@@ -449,6 +449,11 @@ public:
     }
     void boolean(const char* key, bool& out) { mObject.boolean(key, out); }
     void vec3(const char* key, glm::vec3& out, const Range& range) { mObject.vec3(key, out, range); }
+    void path(const char* key, std::string& out) {
+        std::string value = out;
+        mObject.string(key, value);
+        out = resolveScenePath(mSceneFile, value);
+    }
     template <typename E, size_t N>
     void choice(const char* key, const EnumTable<E, N>& table, E& out) {
         dermis::choice(mObject, key, table, out);
@@ -461,22 +466,48 @@ public:
             return;
         }
         JsonObject object(mObject.context(), *value, mObject.pointer(key), fieldKeys(out, visit));
-        FieldReader reader(object);
+        FieldReader reader(object, mSceneFile);
         visit(out, reader);
     }
 
 private:
     JsonObject& mObject;
+    const std::string& mSceneFile;
 };
 
-void readSettings(JsonObject& root, RenderSettings& settings) {
+// With a budget, the table is read now, so a missing or bad file or a table
+// tuned for another budget fails the scene load.
+void readQualityTable(JsonObject& settingsObject, QualitySettings& quality) {
+    JsonContext& context = settingsObject.context();
+    const std::string pointer = settingsObject.pointer("quality");
+    if (quality.errorBudget <= 0.0f) return;
+    if (!context.check(!quality.table.empty(), pointer + "/table",
+                       "is required when error_budget > 0 (a quality table made by dermis tune)")) {
+        return;
+    }
+    auto table = loadQualityTable(quality.table);
+    if (!table.ok()) {
+        context.fail(pointer + "/table", "the quality table " + table.error().where + ": " + table.error().what);
+        return;
+    }
+    if (!context.check(static_cast<float>(table->budget) == quality.errorBudget, pointer + "/error_budget",
+                       "is " + formatNumberForMessage(quality.errorBudget) + " but the quality table " + quality.table +
+                           " was tuned for an error budget of " + formatNumberForMessage(static_cast<float>(table->budget)) +
+                           " (make one with dermis tune SCENE --budget " +
+                           formatNumberForMessage(quality.errorBudget) + ")")) {
+        return;
+    }
+    quality.loaded = std::move(*table);
+}
+
+void readSettings(JsonObject& root, const std::string& sceneFile, RenderSettings& settings) {
     const json* value = root.member("settings");
     if (value == nullptr) {
         return;
     }
     const auto visit = [](auto& s, auto& v) { visitSettingsFields(s, v); };
     JsonObject object(root.context(), *value, root.pointer("settings"), fieldKeys(settings, visit));
-    FieldReader reader(object);
+    FieldReader reader(object, sceneFile);
     visit(settings, reader);
     JsonContext& context = root.context();
     if (context.failed()) {
@@ -485,6 +516,7 @@ void readSettings(JsonObject& root, RenderSettings& settings) {
     const TextureSpaceSettings& ts = settings.ts;
     context.check(ts.minSize <= ts.maxSize, object.pointer("ts") + "/min_size",
                   "must be <= max_size (" + std::to_string(ts.maxSize) + "), got " + std::to_string(ts.minSize));
+    readQualityTable(object, settings.quality);
 }
 
 }  // namespace
@@ -516,7 +548,7 @@ Result<Scene> readSceneDocument(const json& document, const std::string& pathFor
     }
     readBackground(root, scene.background);
     readEnvironment(root, pathForMessages, scene.environment);
-    readSettings(root, scene.settings);
+    readSettings(root, pathForMessages, scene.settings);
 
     if (context.failed()) {
         return context.error();

@@ -121,13 +121,14 @@ Json characterJson(const Character& character, const std::string& sceneFile) {
 // Writes the fields a visit lists (SettingsFields.h) into one JSON object.
 class FieldWriter {
 public:
-    explicit FieldWriter(Json& out) : mOut(out) {}
+    FieldWriter(Json& out, const std::string& sceneFile) : mOut(out), mSceneFile(sceneFile) {}
 
     void number(const char* key, float value, const Range&) { mOut[key] = dermis::number(value); }
     void integer(const char* key, int value, const Range&) { mOut[key] = value; }
     void rule(const char* key, int value, const IntegerRule&) { mOut[key] = value; }
     void boolean(const char* key, bool value) { mOut[key] = value; }
     void vec3(const char* key, const glm::vec3& value, const Range&) { mOut[key] = dermis::vec3(value); }
+    void path(const char* key, const std::string& value) { mOut[key] = relativeScenePath(mSceneFile, value); }
     template <typename E, size_t N>
     void choice(const char* key, const EnumTable<E, N>& table, E value) {
         mOut[key] = name(table, value);
@@ -135,13 +136,14 @@ public:
     template <typename G, typename Visit>
     void group(const char* key, const G& group, Visit&& visit) {
         Json object;
-        FieldWriter writer(object);
+        FieldWriter writer(object, mSceneFile);
         visit(group, writer);
         mOut[key] = std::move(object);
     }
 
 private:
     Json& mOut;
+    const std::string& mSceneFile;
 };
 
 Json environmentJson(const Environment& e, const std::string& sceneFile) {
@@ -157,9 +159,9 @@ Json environmentJson(const Environment& e, const std::string& sceneFile) {
                 {"sh_bands", e.shBands}};
 }
 
-Json settingsJson(const RenderSettings& settings) {
+Json settingsJson(const RenderSettings& settings, const std::string& sceneFile) {
     Json j;
-    FieldWriter writer(j);
+    FieldWriter writer(j, sceneFile);
     visitSettingsFields(settings, writer);
     return j;
 }
@@ -222,7 +224,7 @@ std::string sceneToJson(const Scene& scene) {
     }
     root["background"] = Json{{"colour", vec3(scene.background.colour)}};
     if (scene.environment.enabled()) root["environment"] = environmentJson(scene.environment, scene.path);
-    root["settings"] = settingsJson(scene.settings);
+    root["settings"] = settingsJson(scene.settings, scene.path);
     // Replace, not throw, on invalid UTF-8 in names or paths.
     return collapseNumberArrays(root.dump(2, ' ', false, Json::error_handler_t::replace)) + "\n";
 }

@@ -10,6 +10,7 @@
 //   rule(key, int&, IntegerRule)    boolean(key, bool&)
 //   vec3(key, glm::vec3&, Range)    choice(key, EnumTable, E&)
 //   group(key, G&, visit)           visit(G&, V&) lists the group's fields
+//   path(key, std::string&)         a file path, relative to the scene file in the file, resolved in memory
 // S is a settings struct, const when writing.
 
 #include "core/Limits.h"
@@ -83,6 +84,13 @@ void visitTextureSpaceFields(S& s, V& v) {
     v.number("seam_blend", s.seamBlend, Range::atLeast(0.0));
 }
 
+// The table is read and checked by the loader after the fields (QualityTable.h).
+template <typename S, typename V>
+void visitQualityFields(S& s, V& v) {
+    v.number("error_budget", s.errorBudget, Range::rightOpen(0.0, 1.0));
+    v.path("table", s.table);
+}
+
 template <typename S, typename V>
 void visitSettingsFields(S& s, V& v) {
     v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
@@ -94,6 +102,7 @@ void visitSettingsFields(S& s, V& v) {
     v.group("transmittance", s.transmittance, [](auto& g, auto& w) { visitTransmittanceFields(g, w); });
     v.group("ssao", s.ssao, [](auto& g, auto& w) { visitSsaoFields(g, w); });
     v.group("ts", s.ts, [](auto& g, auto& w) { visitTextureSpaceFields(g, w); });
+    v.group("quality", s.quality, [](auto& g, auto& w) { visitQualityFields(g, w); });
 }
 
 // The keys a group's visit lists, in order: the loader's known keys.
@@ -113,6 +122,8 @@ public:
     void choice(const char* key, const Table&, T&) { mKeys.emplace_back(key); }
     template <typename G, typename Visit>
     void group(const char* key, G&, Visit&&) { mKeys.emplace_back(key); }
+    template <typename T>
+    void path(const char* key, T&) { mKeys.emplace_back(key); }
 
     const std::vector<std::string>& keys() const { return mKeys; }
 

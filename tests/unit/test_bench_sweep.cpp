@@ -1,7 +1,9 @@
 // `dermis bench`'s sweep specification, Pareto fronts and report files.
 #include "bench/BenchReport.h"
 #include "bench/ParetoFront.h"
+#include "bench/SweepPlan.h"
 #include "bench/SweepSpec.h"
+#include "TestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -166,4 +168,28 @@ TEST(BenchReport, CsvQuotesFieldsWithCommasAndQuotes) {
                  isSssPass("lighting") || isSssPass("composite") || isSssPass("tonemap") || isSssPass("aov"));
     // A technique added later counts without being listed.
     EXPECT_TRUE(isSssPass("unblurred"));
+}
+
+// The technique x samples sweep of docs/bench.md: 3 x 2 x 2 = 12 configurations
+// but 5 distinct renders (gaussians once, the shipped default; separable 7
+// and 17; disk 16 and 64), counted by hand. Without the canonicalisation
+// (broken on purpose) the plan had 13: every gaussians configuration apart.
+TEST(BenchSweep, TechniqueSweepMeasuresEachDistinctRenderOnce) {
+    auto axes = parseSweepSpec("ss:sss.technique=gaussians,separable,disk;ss:sss.separable_samples=7,17;"
+                               "ss:sss.disk_samples=16,64");
+    ASSERT_TRUE(axes.ok()) << axes.error().message();
+    auto configs = expandSweep(*axes);
+    ASSERT_TRUE(configs.ok());
+    ASSERT_EQ(configs->size(), 12u);
+    auto planned = planConfigs(dermis::test::contentScene("default.json"), {}, *configs);
+    ASSERT_TRUE(planned.ok()) << planned.error().message();
+    std::vector<std::string> found;
+    for (const PlannedConfig& p : *planned) {
+        const dermis::SssSettings& sss = p.scene.settings.sss;
+        found.push_back(std::string(dermis::kSssTechniques.name(sss.technique)) + " " +
+                        std::to_string(sss.separableSamples) + " " + std::to_string(sss.diskSamples) +
+                        (p.isDefault ? " default" : ""));
+    }
+    EXPECT_EQ(found, (std::vector<std::string>{"gaussians 17 40 default", "separable 7 40", "separable 17 40",
+                                               "disk 17 16", "disk 17 64"}));
 }

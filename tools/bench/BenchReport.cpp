@@ -100,13 +100,20 @@ bool isSssPass(const std::string& passName) {
     return std::find(kFramePasses.begin(), kFramePasses.end(), passName) == kFramePasses.end();
 }
 
+std::string paretoGroup(const BenchRow& row) {
+    return row.technique.empty() ? row.mode : row.mode + " " + row.technique;
+}
+
 void markParetoFronts(std::vector<BenchRow>& rows) {
-    for (const EnumEntry<SssMode>& entry : kSssModes) {
-        const std::string mode(entry.name);
+    std::vector<std::string> groups;
+    for (const BenchRow& row : rows) {
+        if (std::find(groups.begin(), groups.end(), paretoGroup(row)) == groups.end()) groups.push_back(paretoGroup(row));
+    }
+    for (const std::string& group : groups) {
         std::vector<size_t> members;
         std::vector<CostError> total, scatter;
         for (size_t i = 0; i < rows.size(); ++i) {
-            if (rows[i].mode != mode) continue;
+            if (paretoGroup(rows[i]) != group) continue;
             members.push_back(i);
             total.push_back({rows[i].frameGpuMs, rows[i].relativeRmse});
             scatter.push_back({rows[i].frameGpuMs, rows[i].errors.relativeRmse(ErrorCause::Scatter)});
@@ -122,14 +129,14 @@ void markParetoFronts(std::vector<BenchRow>& rows) {
 
 std::string resultsCsv(const std::vector<BenchRow>& rows) {
     std::string csv =
-        "id,mode,label,default,pareto,pareto_scatter,width,height,frames,frame_gpu_ms,sss_gpu_ms,wall_ms,relative_rmse,"
+        "id,mode,technique,label,default,pareto,pareto_scatter,width,height,frames,frame_gpu_ms,sss_gpu_ms,wall_ms,relative_rmse,"
         "max_abs_difference,psnr_db";
     for (const EnumEntry<ErrorCause>& cause : kErrorCauses) {
         for (const EnumEntry<ErrorRegion>& region : kErrorRegions) csv += "," + errorColumn(cause, region);
     }
     csv += ",overrides\n";
     for (const BenchRow& row : rows) {
-        csv += std::to_string(row.id) + "," + row.mode + "," + csvField(row.label) + "," + (row.isDefault ? "1" : "0") +
+        csv += std::to_string(row.id) + "," + row.mode + "," + row.technique + "," + csvField(row.label) + "," + (row.isDefault ? "1" : "0") +
                "," + (row.onParetoFront ? "1" : "0") + "," + (row.onScatterParetoFront ? "1" : "0") + "," +
                std::to_string(row.width) + "," + std::to_string(row.height) + "," + std::to_string(row.frames) + "," +
                number(row.frameGpuMs) + "," + number(row.sssGpuMs) + "," + number(row.wallMs) + "," +

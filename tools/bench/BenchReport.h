@@ -18,10 +18,11 @@ namespace dermis::bench {
 struct BenchRow {
     int id = 0;
     std::string mode;   // a name from kSssModes
+    std::string technique;  // a name from kSssTechniques; screen space only, "" in texture space
     std::string label;  // the swept values, "default" for the shipped settings
     bool isDefault = false;
-    bool onParetoFront = false;         // within its mode, on total error
-    bool onScatterParetoFront = false;  // within its mode, on scatter error
+    bool onParetoFront = false;         // within its front group (paretoGroup), on total error
+    bool onScatterParetoFront = false;  // within its front group, on scatter error
     int width = 0;
     int height = 0;
     int frames = 0;
@@ -41,8 +42,12 @@ struct BenchRow {
 // lighting, composite, tone mapping, the AOV and the LEAN specular).
 bool isSssPass(const std::string& passName);
 
+// The rows one Pareto front compares: "ss gaussians", "ss separable",
+// "ss disk" (one front per screen-space technique) and "ts".
+std::string paretoGroup(const BenchRow& row);
+
 // Marks each row's onParetoFront and onScatterParetoFront (frame GPU ms
-// against the total and the scatter relative RMSE, per mode).
+// against the total and the scatter relative RMSE, per paretoGroup).
 void markParetoFronts(std::vector<BenchRow>& rows);
 
 // The accuracy goal on the technique's own error: 1% relative RMSE.

@@ -9,6 +9,7 @@
 #include "Session.h"
 
 #include "bench/BenchReport.h"
+#include "bench/SweepPlan.h"
 #include "bench/SweepSpec.h"
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
@@ -56,8 +57,9 @@ const char* const kHelp =
     "  reference.exr, reference_sss_off.exr, thickness.exr, scatter_change_H.exr\n"
     "                  the CPU images (each with a .json note of what it was computed\n"
     "                  from; a later run into DIR reuses those that still match)\n"
-    "  results.csv     one row per configuration: mode, swept values, whether it is the\n"
-    "                  shipped default and on its mode's Pareto fronts (total, scatter),\n"
+    "  results.csv     one row per configuration: mode, SSS technique (screen space), swept\n"
+    "                  values, whether it is the shipped default and on its Pareto fronts\n"
+    "                  (total, scatter; one per technique in screen space, one for texture space),\n"
     "                  frame and SSS GPU ms, total relative RMSE, largest difference,\n"
     "                  PSNR, the relative RMSE of every cause and region, its --set overrides\n"
     "  passes.csv      the median GPU ms of every pass of every configuration\n"
@@ -95,53 +97,6 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene, a configuration, the reference, a write or\n"
     "the plotting fails, 2 for bad command-line usage. Every configuration is checked before\n"
     "anything is rendered.\n";
-
-struct PlannedConfig {
-    bench::SweepConfig sweep;
-    Scene scene;  // the scene file with the reference definition, --set and the configuration applied
-    bool isDefault = false;
-};
-
-// Loads every configuration (so a bad value fails before hours of work), adds
-// each swept mode's shipped defaults and drops configurations that are the same.
-Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, const std::vector<std::string>& base,
-                                               const std::vector<bench::SweepConfig>& sweep) {
-    std::vector<PlannedConfig> planned;
-    std::map<std::string, size_t> seen;  // settings JSON + scale -> index
-    auto add = [&](const bench::SweepConfig& config, bool isDefault) -> Status {
-        std::vector<std::string> overrides = base;
-        overrides.insert(overrides.end(), config.overrides.begin(), config.overrides.end());
-        auto scene = loadScene(scenePath, overrides);
-        if (!scene.ok()) {
-            return makeError(scene.error().where, scene.error().what + " (in the configuration " + config.mode + " " +
-                                                      config.label + ")");
-        }
-        const std::string identity = sceneToJson(*scene) + "@" + std::to_string(config.scale);
-        if (auto found = seen.find(identity); found != seen.end()) {
-            planned[found->second].isDefault = planned[found->second].isDefault || isDefault;
-            return success();
-        }
-        seen[identity] = planned.size();
-        planned.push_back({config, std::move(*scene), isDefault});
-        if (isDefault) planned.back().sweep.label = "default";
-        return success();
-    };
-    for (const EnumEntry<SssMode>& entry : kSssModes) {
-        const std::string mode(entry.name);
-        bool swept = false;
-        for (const auto& config : sweep) swept = swept || config.mode == mode;
-        if (!swept) continue;
-        bench::SweepConfig shipped;
-        shipped.mode = mode;
-        shipped.overrides = {"mode=" + mode};
-        if (Status ok = add(shipped, true); !ok.ok()) return ok.error();
-        for (const auto& config : sweep) {
-            if (config.mode != mode) continue;
-            if (Status ok = add(config, false); !ok.ok()) return ok.error();
-        }
-    }
-    return planned;
-}
 
 Status drawPlots(const std::filesystem::path& outDir) {
     const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_bench.py";
@@ -206,7 +161,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
 
     std::vector<std::string> base = kReferenceDefinition;
     for (const std::string& change : args->all("set")) base.push_back(change);
-    auto planned = planConfigs(scenePath, base, *sweep);
+    auto planned = bench::planConfigs(scenePath, base, *sweep);
     if (!planned.ok()) return failure(planned.error());
 
     std::error_code ec;
@@ -234,7 +189,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
               std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(*frames) + " frames each");
     std::vector<BenchRow> rows;
     for (size_t i = 0; i < planned->size(); ++i) {
-        const PlannedConfig& config = (*planned)[i];
+        const bench::PlannedConfig& config = (*planned)[i];
         session->scene->settings = config.scene.settings;
         session->scene->environment = config.scene.environment;  // its quality keys may be swept (SweepSpec.cpp)
         const int w = std::max(1, static_cast<int>(std::lround(width * config.sweep.scale)));
@@ -259,6 +214,9 @@ int runBench(const std::vector<std::string>& rawArgs) {
         BenchRow row;
         row.id = static_cast<int>(i);
         row.mode = config.sweep.mode;
+        if (config.scene.settings.mode == SssMode::ScreenSpace) {
+            row.technique = std::string(kSssTechniques.name(config.scene.settings.sss.technique));
+        }
         row.label = config.sweep.label.empty() ? "default" : config.sweep.label;
         row.isDefault = config.isDefault;
         row.width = w;

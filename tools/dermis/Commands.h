@@ -20,6 +20,7 @@ int runCompare(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 int runBakeLean(const std::vector<std::string>& args);
+int runTune(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();
 

@@ -17,6 +17,7 @@ const std::vector<Command>& commands() {
         {"compare", "render one frame in screen-space and texture-space SSS: images, heatmap, metrics", runCompare},
         {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},
         {"bench", "run time against error: sweep the quality knobs of both modes against the CPU reference", runBench},
+        {"tune", "the cheapest SSS choice within an error budget per on-screen scale: write a quality table", runTune},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };

@@ -4,6 +4,7 @@
 // it returns true when it changed something. Ranges follow the scene file
 // format (content/scenes/README.md).
 
+#include "render/FrameTimings.h"
 #include "render/SceneGeometry.h"
 #include "scene/Scene.h"
 #include "viewer/SceneJson.h"
@@ -21,7 +22,9 @@ bool cameraPanel(Camera& camera);
 // Panels that take `error` set a choice through the loader (JsonFields.h) and
 // report its refusal there.
 bool shadowPanel(Scene& scene, std::string& error);
-bool sssPanel(Scene& scene, std::string& error);  // the settings and each character's profile
+// The settings, each character's profile and (read-only, from `reports`, the
+// side's last frame) the SSS choice each character renders with.
+bool sssPanel(Scene& scene, const std::vector<CharacterReport>& reports, std::string& error);
 bool transmittancePanel(TransmittanceSettings& transmittance);
 bool ssaoPanel(Scene& scene);  // global and per character
 bool framePanel(Scene& scene);  // exposure, ambient, background, energy conservation

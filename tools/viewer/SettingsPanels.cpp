@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <filesystem>
 #include <string>
 
 namespace dermis::viewer {
@@ -48,7 +49,7 @@ bool shadowPanel(Scene& scene, std::string& error) {
     return changed;
 }
 
-bool sssPanel(Scene& scene, std::string& error) {
+bool sssPanel(Scene& scene, const std::vector<CharacterReport>& reports, std::string& error) {
     bool changed = false;
     changed |= ImGui::Checkbox("enabled", &scene.settings.sss.enabled);
     changed |= jsonChoice(scene, "/settings/sss/blur", "blur", error);
@@ -82,6 +83,18 @@ bool sssPanel(Scene& scene, std::string& error) {
         changed |= widgets::comboString(characterLabel(scene.characters[i], i).c_str(),
                                         scene.characters[i].material.profile, kProfiles);
         ImGui::PopID();
+    }
+    const QualitySettings& quality = scene.settings.quality;
+    sectionLabel(quality.errorBudget > 0.0f ? "choice per character (error budget)" : "choice per character");
+    if (quality.errorBudget > 0.0f) {
+        ImGui::Text("budget %.3g%%, table %s", 100.0 * quality.errorBudget,
+                    std::filesystem::path(quality.table).filename().string().c_str());
+        widgets::help("Each character gets the quality table's cheapest choice for its pixels per mm (docs/quality.md).");
+    }
+    for (const CharacterReport& report : reports) {
+        if (!report.hasSss) continue;
+        ImGui::TextDisabled("%s: %s, %.2f px/mm (%s)", report.name.c_str(), describeSssChoice(report.sssChoice).c_str(),
+                            report.pixelsPerMm, report.sssChoiceSource.c_str());
     }
     return changed;
 }

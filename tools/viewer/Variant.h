@@ -36,6 +36,10 @@ public:
     GLuint outputTexture() const { return mRenderer ? mRenderer->outputTexture() : 0; }
     // The rendered scene's meshes and rigs; null before the renderer exists.
     const SceneGeometry* geometry() const { return mRenderer ? &mRenderer->geometry() : nullptr; }
+    // Each character as its last frame planned it (empty before the first frame).
+    std::vector<CharacterReport> characterReports() const {
+        return mRenderer ? mRenderer->characterReports() : std::vector<CharacterReport>{};
+    }
     // Recompiles the shaders; a renderer not created yet will read them when it is.
     Status reloadShaders();
 

@@ -124,7 +124,10 @@ void Viewer::settingsWindow() {
     if (ImGui::CollapsingHeader("Lights")) changed |= lightsPanel(scene);
     if (ImGui::CollapsingHeader("Environment")) changed |= environmentPanel(scene, mState.environment);
     if (ImGui::CollapsingHeader("Shadows")) changed |= shadowPanel(scene, refused);
-    if (ImGui::CollapsingHeader("SSS", ImGuiTreeNodeFlags_DefaultOpen)) changed |= sssPanel(scene, refused);
+    if (ImGui::CollapsingHeader("SSS", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const Variant& side = mState.comparing() && mState.editTarget == EditTarget::B ? mB : mA;
+        changed |= sssPanel(scene, side.characterReports(), refused);
+    }
     if (ImGui::CollapsingHeader("Transmittance")) changed |= transmittancePanel(scene.settings.transmittance);
     if (ImGui::CollapsingHeader("SSAO")) changed |= ssaoPanel(scene);
     if (ImGui::CollapsingHeader("Materials")) changed |= materialsPanel(scene);

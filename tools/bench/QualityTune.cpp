@@ -1,0 +1,107 @@
+#include "bench/QualityTune.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace dermis::bench {
+
+const std::vector<SssChoice>& tuneCandidates() {
+    static const std::vector<SssChoice> kCandidates = [] {
+        std::vector<SssChoice> out;
+        for (int gaussians = 2; gaussians <= 6; ++gaussians) {
+            for (int taps : {5, 9, 17}) {
+                SssChoice choice;
+                choice.technique = SssTechnique::Gaussians;
+                choice.gaussians = gaussians;
+                choice.taps = taps;
+                out.push_back(choice.canonical());
+            }
+        }
+        for (int samples : {7, 11, 17, 25}) {
+            SssChoice choice;
+            choice.technique = SssTechnique::Separable;
+            choice.separableSamples = samples;
+            out.push_back(choice.canonical());
+        }
+        for (int samples : {8, 16, 32, 64}) {
+            SssChoice choice;
+            choice.technique = SssTechnique::Disk;
+            choice.diskSamples = samples;
+            out.push_back(choice.canonical());
+        }
+        return out;
+    }();
+    return kCandidates;
+}
+
+std::string describeTuneCandidates() {
+    std::string out;
+    SssTechnique current = SssTechnique::Gaussians;
+    bool first = true;
+    for (const SssChoice& choice : tuneCandidates()) {
+        if (first || choice.technique != current) {
+            out += std::string(first ? "" : "\n") + "  " + std::string(kSssTechniques.name(choice.technique)) + ":";
+            current = choice.technique;
+            first = false;
+        }
+        const std::string text = describeSssChoice(choice);
+        out += " " + text.substr(text.find(' ') + 1) + ";";
+    }
+    return out + "\n";
+}
+
+Result<double> parseBudget(const std::string& text) {
+    const bool percent = !text.empty() && text.back() == '%';
+    const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+    char* end = nullptr;
+    const double value = number.empty() ? NAN : std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value)) {
+        return makeError("--budget " + text, "expected a fraction (0.01) or a percentage (1%)");
+    }
+    const double budget = percent ? value / 100.0 : value;
+    if (!(budget > 0.0 && budget < 1.0)) {
+        return makeError("--budget " + text, "must be in (0, 1) as a fraction, (0%, 100%) as a percentage");
+    }
+    return budget;
+}
+
+QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>& measured, double budget,
+                          double finestSssMs) {
+    QualityRow row;
+    row.pixelsPerMm = pixelsPerMm;
+    row.choice = SssChoice::finest();
+    row.loss = 0.0;
+    row.sssMs = finestSssMs;
+    row.finestSssMs = finestSssMs;
+    for (const TuneMeasurement& m : measured) {
+        if (m.loss <= budget && m.sssMs < row.sssMs) {
+            row.choice = m.choice;
+            row.loss = m.loss;
+            row.sssMs = m.sssMs;
+        }
+    }
+    return row;
+}
+
+std::string qualityTableMarkdown(const QualityTable& table) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "Quality table: error budget %.3g%% (relative RMSE of the diffuse AOV over SSS pixels against the finest "
+                  "choice), tuned on %s at %dx%d.\n\n",
+                  100.0 * table.budget, table.tunedOn.c_str(), table.width, table.height);
+    std::string out = line;
+    out += "| pixels per mm (up to) | choice | loss | SSS GPU ms | finest SSS GPU ms | SSS cost / finest |\n";
+    out += "|---:|---|---:|---:|---:|---:|\n";
+    for (const QualityRow& row : table.rows) {
+        std::snprintf(line, sizeof line, "| %.3g | %s | %.2f%% | %.3f | %.3f | %.2f |\n", row.pixelsPerMm,
+                      describeSssChoice(row.choice).c_str(), 100.0 * row.loss, row.sssMs, row.finestSssMs,
+                      row.finestSssMs > 0.0 ? row.sssMs / row.finestSssMs : NAN);
+        out += line;
+    }
+    out += "\nAbove the largest scale a character uses the finest choice (" + describeSssChoice(SssChoice::finest()) +
+           "); between two scales, the row of the larger one (docs/quality.md).\n";
+    return out;
+}
+
+}  // namespace dermis::bench

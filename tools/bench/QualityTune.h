@@ -1,0 +1,42 @@
+#pragma once
+// What `dermis tune` decides, without GL: the candidate screen-space SSS
+// choices, the cheapest one within an error budget at one scale, the budget's
+// syntax and the Markdown form of a quality table (scene/QualityTable.h,
+// docs/quality.md).
+
+#include "core/Result.h"
+#include "scene/QualityTable.h"
+
+#include <string>
+#include <vector>
+
+namespace dermis::bench {
+
+// Every choice `dermis tune` measures at each distance (the finest,
+// SssChoice::finest(), is measured as the reference of every loss):
+//   gaussians: 2..6 Gaussians x 5, 9, 17 taps
+//   separable: 7, 11, 17, 25 samples per direction
+//   disk:      8, 16, 32, 64 samples per pixel
+const std::vector<SssChoice>& tuneCandidates();
+// The list above, one technique a line, for --help.
+std::string describeTuneCandidates();
+
+// "1%" or "0.01" -> 0.01; a fraction in (0, 1). Errors name --budget.
+Result<double> parseBudget(const std::string& text);
+
+struct TuneMeasurement {
+    SssChoice choice;
+    double loss = 0.0;   // relative RMSE of the diffuse AOV over SSS pixels against the finest
+    double sssMs = 0.0;  // median GPU ms of the SSS passes
+    double frameMs = 0.0;
+};
+
+// The cheapest measurement (by sssMs) whose loss is at most `budget`; the
+// finest (loss 0, finestSssMs) when none is.
+QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>& measured, double budget,
+                          double finestSssMs);
+
+// One line per row: scale, choice, loss, SSS ms, the finest's SSS ms, saving.
+std::string qualityTableMarkdown(const QualityTable& table);
+
+}  // namespace dermis::bench

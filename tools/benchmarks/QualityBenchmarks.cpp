@@ -1,0 +1,133 @@
+// The error budget (docs/quality.md) on content/scenes/crowd8_mixed.json:
+// eight procedural heads from 0.5 m to 5.5 m at 640x360, each character given
+// the cheapest choice of content/quality/default_1pct.json for its scale,
+// against the same crowd at the fixed default settings (settings.sss for
+// every head). The two renderers take turns within each iteration. Each one's
+// loss is measured once, before the timing, against the finest choice
+// (SssChoice::finest(), min_width_px 0) over the SSS pixels.
+#include "BenchContext.h"
+#include "QualityBenchmarks.h"
+
+#include "core/ImageMetrics.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dermis::bench {
+namespace {
+
+constexpr int kWidth = 640;
+constexpr int kHeight = 360;
+constexpr const char* kScene = "crowd8_mixed.json";
+constexpr double kCostGoal = 0.6;
+
+struct QualityCase {
+    std::string key;  // "quality/budget", "quality/fixed"
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<Renderer> renderer;
+    std::vector<double> frameMs;
+    std::vector<double> sssMs;
+};
+
+Result<std::unique_ptr<Renderer>> rendererFor(Scene& scene) { return Renderer::create(scene); }
+
+Image renderAov(Renderer& renderer, Aov aov) {
+    (void)renderer.renderFrame({kWidth, kHeight, aov});
+    auto image = renderer.readOutput();
+    return image.ok() ? std::move(*image) : Image{};
+}
+
+void errorBudget(benchmark::State& state) {
+    context();
+    const Scene& shipped = contentScene(kScene);
+    if (shipped.settings.quality.errorBudget <= 0.0f) {
+        state.SkipWithError("content/scenes/crowd8_mixed.json has no error budget");
+        return;
+    }
+    std::vector<QualityCase> cases(2);
+    cases[0].key = "quality/budget";
+    cases[0].scene = std::make_unique<Scene>(shipped);
+    cases[1].key = "quality/fixed";
+    cases[1].scene = std::make_unique<Scene>(shipped);
+    cases[1].scene->settings.quality.errorBudget = 0.0f;
+    Scene finestScene = shipped;
+    finestScene.settings.quality.errorBudget = 0.0f;
+    SssChoice::finest().applyTo(finestScene.settings.sss);
+    finestScene.settings.sss.minWidthPx = 0.0f;
+    auto finest = rendererFor(finestScene);
+    if (!finest.ok()) {
+        state.SkipWithError(finest.error().message().c_str());
+        return;
+    }
+    const Image reference = renderAov(**finest, Aov::Diffuse);
+    const Image ids = renderAov(**finest, Aov::Object);
+    std::vector<uint8_t> mask(ids.texels.size(), 0);
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = std::lround(ids.texels[i].r) >= 1 ? 1 : 0;  // every head is skin
+    for (QualityCase& c : cases) {
+        auto renderer = rendererFor(*c.scene);
+        if (!renderer.ok()) {
+            state.SkipWithError(renderer.error().message().c_str());
+            return;
+        }
+        c.renderer = std::move(*renderer);
+        (void)renderAov(*c.renderer, Aov::Final);  // warm-up: programs, shadow maps
+        auto loss = compareImages(reference, renderAov(*c.renderer, Aov::Diffuse), mask);
+        recorded()[c.key + "/loss"] = loss.ok() ? loss->relativeRmse : NAN;
+        size_t distinct = 0;
+        std::vector<SssChoice> seen;
+        for (const CharacterReport& report : c.renderer->characterReports()) {
+            bool known = false;
+            for (const SssChoice& s : seen) known = known || s == report.sssChoice;
+            if (!known) seen.push_back(report.sssChoice);
+        }
+        distinct = seen.size();
+        recorded()[c.key + "/choices"] = double(distinct);
+    }
+    for (auto _ : state) {
+        double total = 0.0;
+        for (QualityCase& c : cases) {
+            const std::vector<double> ms = renderAndTimeAt(*c.renderer, kWidth, kHeight, 0.0f, {"", "sss"});
+            c.frameMs.push_back(ms[0]);
+            c.sssMs.push_back(ms[1]);
+            total += ms[0];
+        }
+        state.SetIterationTime(total * 1e-3);
+    }
+    for (QualityCase& c : cases) {
+        recorded()[c.key + "/frame"] = median(c.frameMs);
+        recorded()[c.key + "/sss"] = median(c.sssMs);
+    }
+}
+
+}  // namespace
+
+void printQualitySummary() {
+    const auto& r = recorded();
+    if (r.count("quality/budget/frame") == 0) return;
+    const double budget = contentScene(kScene).settings.quality.errorBudget;
+    std::printf("\nError budget %.3g%% on %s, %dx%d (median ms; loss = relative RMSE of the diffuse AOV over SSS\n"
+                "pixels against the finest choice):\n",
+                100.0 * budget, kScene, kWidth, kHeight);
+    std::printf("| settings | frame ms | SSS passes ms | loss | distinct choices |\n| --- | ---: | ---: | ---: | ---: |\n");
+    for (const char* name : {"budget", "fixed"}) {
+        const std::string k = std::string("quality/") + name;
+        std::printf("| %s | %.2f | %.2f | %.3f%% | %.0f |\n",
+                    std::string(name) == "budget" ? "budget table" : "fixed defaults", r.at(k + "/frame"),
+                    r.at(k + "/sss"), 100.0 * r.at(k + "/loss"), r.at(k + "/choices"));
+    }
+    const double sssRatio = r.at("quality/budget/sss") / r.at("quality/fixed/sss");
+    const double frameRatio = r.at("quality/budget/frame") / r.at("quality/fixed/frame");
+    const double loss = r.at("quality/budget/loss");
+    std::printf("budget / fixed: SSS passes %.3fx%s, frame %.3fx; budget loss %.3f%%%s\n", sssRatio,
+                sssRatio <= kCostGoal ? " (within the 0.6 goal)" : " (OVER the 0.6 goal)", frameRatio, 100.0 * loss,
+                loss <= budget ? " (within the budget)" : " (OVER the budget)");
+}
+
+BENCHMARK(errorBudget)->UseManualTime()->Iterations(9)->Unit(benchmark::kMillisecond);
+
+}  // namespace dermis::bench

@@ -1,0 +1,229 @@
+// dermis tune: the cheapest screen-space SSS choice within an error budget,
+// per on-screen scale, written as a quality table (docs/quality.md).
+#include "Args.h"
+#include "Commands.h"
+#include "MeasuredRender.h"
+#include "Session.h"
+
+#include "bench/BenchReport.h"
+#include "bench/QualityTune.h"
+#include "core/ImageMetrics.h"
+#include "core/Log.h"
+#include "core/TextFile.h"
+#include "scene/QualityTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace dermis::cli {
+namespace {
+
+constexpr int kFirstWarmUpFrames = 3;
+constexpr size_t kMaxDistances = 16;
+constexpr double kMaxDistanceFactor = 1000.0;
+// Every measurement is of the screen-space chain, with the scene's own budget
+// off (the candidates are what is being chosen).
+const std::vector<std::string> kTuneDefinition = {"mode=ss", "quality.error_budget=0"};
+
+const char* const kHelp =
+    "usage: dermis tune SCENE --budget B --out FILE [options]\n"
+    "\n"
+    "The cheapest screen-space SSS choice within an error budget, per on-screen scale.\n"
+    "For each distance factor F the camera is dollied back along its view axis to F times\n"
+    "its distance from its target; the on-screen scale is the pixels per mm at the SSS\n"
+    "characters' nearest depth. At each distance every candidate choice is rendered and\n"
+    "measured: the median GPU ms of its SSS passes over N frames, and its LOSS, the\n"
+    "relative RMSE of the diffuse AOV over SSS pixels against the finest setting\n"
+    "(FINEST, min_width_px 0) at the same view. The cheapest candidate whose loss is\n"
+    "within the budget becomes that scale's row; the finest when none is.\n"
+    "Candidates:\n"
+    "CANDIDATES"
+    "Writes FILE (the quality table JSON a scene's settings.quality.table names) and\n"
+    "FILE with the extension .md (the same as a Markdown table). A character at scale s\n"
+    "uses the row tuned at the smallest scale >= s, the finest above the largest.\n"
+    "\n"
+    "options:\n"
+    "  --budget B         the error budget: a fraction (0.01) or a percentage (1%); required\n"
+    "  --out FILE         the quality table to write (.json); required\n"
+    "  --size WxH         the frame size (default 640x360)\n"
+    "  --distances LIST   distance factors, comma-separated, each > 0 (default 1,2,4,8)\n"
+    "  --frames N         timed frames per measurement, after one warm-up (default 3)\n"
+    "  --set PATH=VALUE   override a scene value for every measurement; repeatable\n"
+    "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
+    "  --quiet            no progress\n"
+    "  --help             this text\n"
+    "\n"
+    "Exit status: 0 on success, 1 when the scene, a render or a write fails or no SSS\n"
+    "pixel is seen at a distance, 2 for bad command-line usage. Nothing is written unless\n"
+    "every measurement succeeds.\n";
+
+Result<std::vector<double>> parseDistances(const std::string& text) {
+    std::vector<double> out;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        char* end = nullptr;
+        const double value = item.empty() ? NAN : std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !(value > 0.0 && value <= kMaxDistanceFactor)) {
+            return makeError("--distances " + text, "each factor must be a number in (0, " +
+                                                        std::to_string(int(kMaxDistanceFactor)) + "], got '" + item + "'");
+        }
+        if (std::find(out.begin(), out.end(), value) != out.end()) {
+            return makeError("--distances " + text, "the factor " + item + " is given twice");
+        }
+        out.push_back(value);
+    }
+    if (out.empty() || out.size() > kMaxDistances) {
+        return makeError("--distances " + text, "expected 1 to " + std::to_string(kMaxDistances) + " factors");
+    }
+    return out;
+}
+
+double sssGpuMs(const FrameTimings& timings) {
+    double total = 0.0;
+    for (const PassSummary& pass : timings.summary()) {
+        if (pass.executed && bench::isSssPass(pass.name)) total += pass.gpuMs;
+    }
+    return total;
+}
+
+// The largest pixels per mm of the characters with SSS in the last frame.
+float nearestPixelsPerMm(const Session& session) {
+    float best = 0.0f;
+    for (const CharacterReport& report : session.renderer->characterReports()) {
+        if (report.hasSss && report.visible) best = std::max(best, report.pixelsPerMm);
+    }
+    return best;
+}
+
+std::string markdownPath(const std::string& jsonPath) {
+    std::filesystem::path path(jsonPath);
+    path.replace_extension(".md");
+    return path.string();
+}
+
+}  // namespace
+
+int runTune(const std::vector<std::string>& rawArgs) {
+    auto args = parseArgs(rawArgs, {"budget", "out", "size", "distances", "frames", "set", "backend"}, {"quiet", "help"});
+    if (!args.ok()) return usageError(args.error());
+    if (args->flags.count("help")) {
+        std::string help = kHelp;
+        for (const auto& [word, text] :
+             {std::pair<std::string, std::string>{"CANDIDATES", bench::describeTuneCandidates()},
+              {"FINEST", describeSssChoice(SssChoice::finest())}}) {
+            help.replace(help.find(word), word.size(), text);
+        }
+        std::fputs(help.c_str(), stdout);
+        return 0;
+    }
+    if (args->positional.size() != 1) return usageError(makeError("tune", "expected exactly one SCENE file"));
+    if (!args->has("budget")) return usageError(makeError("tune", "--budget B is required (e.g. --budget 1%)"));
+    if (!args->has("out")) return usageError(makeError("tune", "--out FILE is required"));
+    auto budget = bench::parseBudget(args->get("budget", ""));
+    if (!budget.ok()) return usageError(budget.error());
+    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return usageError(size.error());
+    auto distances = parseDistances(args->get("distances", "1,2,4,8"));
+    if (!distances.ok()) return usageError(distances.error());
+    auto frames = parsePositiveInt("--frames", args->get("frames", "3"));
+    if (!frames.ok()) return usageError(frames.error());
+    auto backend = parseBackend(args->get("backend", "auto"));
+    if (!backend.ok()) return usageError(backend.error());
+    const std::string outPath = args->get("out", "");
+    if (std::filesystem::path(outPath).extension() != ".json") {
+        return usageError(makeError("--out " + outPath, "the quality table must be a .json file"));
+    }
+    log::setQuiet(args->flags.count("quiet") > 0);
+    const std::string scenePath = args->positional[0];
+    const int width = size->first;
+    const int height = size->second;
+
+    std::vector<std::string> base = kTuneDefinition;
+    for (const std::string& change : args->all("set")) base.push_back(change);
+    auto session = Session::open(scenePath, base, *backend, false);
+    if (!session.ok()) return failure(session.error());
+    const Camera camera = session->scene->camera;
+    const SssSettings sss = session->scene->settings.sss;
+    const std::vector<SssChoice>& candidates = bench::tuneCandidates();
+    const size_t total = distances->size() * (candidates.size() + 1);
+    log::info("tune: " + scenePath + " at " + std::to_string(width) + "x" + std::to_string(height) + ", " +
+              std::to_string(distances->size()) + " distances x " + std::to_string(candidates.size() + 1) +
+              " choices, " + std::to_string(*frames) + " frames each");
+
+    QualityTable table;
+    table.budget = *budget;
+    table.tunedOn = scenePath;
+    table.width = width;
+    table.height = height;
+    size_t done = 0;
+    for (double distance : *distances) {
+        session->scene->camera = camera;
+        session->scene->camera.positionM = camera.targetM + float(distance) * (camera.positionM - camera.targetM);
+        // The finest, the reference of every loss at this view.
+        session->scene->settings.sss = sss;
+        SssChoice::finest().applyTo(session->scene->settings.sss);
+        session->scene->settings.sss.minWidthPx = 0.0f;
+        auto finest = measureRender(*session, scenePath, width, height, *frames, done == 0 ? kFirstWarmUpFrames : 1);
+        if (!finest.ok()) return failure(finest.error());
+        const float pixelsPerMm = nearestPixelsPerMm(*session);
+        auto mask = sssMask(*session, width, height);
+        if (!mask.ok()) return failure(mask.error());
+        if (pixelsPerMm <= 0.0f || std::count(mask->begin(), mask->end(), uint8_t{1}) == 0) {
+            return failure(makeError(scenePath, "no SSS pixel is seen at distance factor " +
+                                                    formatNumberForMessage(distance) + " (fewer or smaller --distances)"));
+        }
+        const double finestSssMs = sssGpuMs(finest->timings);
+        ++done;
+        if (!log::quiet()) {
+            std::printf("[%zu/%zu] distance %g: %.3g px/mm, finest %-28s SSS %8.3f ms  frame %8.3f ms\n", done, total,
+                        distance, pixelsPerMm, describeSssChoice(SssChoice::finest()).c_str(), finestSssMs,
+                        finest->timings.frameGpuMs());
+            std::fflush(stdout);
+        }
+        std::vector<bench::TuneMeasurement> measured;
+        for (const SssChoice& choice : candidates) {
+            session->scene->settings.sss = sss;
+            choice.applyTo(session->scene->settings.sss);
+            auto render = measureRender(*session, scenePath, width, height, *frames, 1);
+            if (!render.ok()) return failure(render.error());
+            auto loss = compareImages(finest->diffuse, render->diffuse, *mask);
+            if (!loss.ok()) return failure(loss.error());
+            measured.push_back({choice, loss->relativeRmse, sssGpuMs(render->timings), render->timings.frameGpuMs()});
+            ++done;
+            if (!log::quiet()) {
+                std::printf("[%zu/%zu] distance %g: %.3g px/mm, %-35s SSS %8.3f ms  frame %8.3f ms  loss %6.3f%%%s\n",
+                            done, total, distance, pixelsPerMm, describeSssChoice(choice).c_str(),
+                            measured.back().sssMs, measured.back().frameMs, 100.0 * measured.back().loss,
+                            measured.back().loss <= *budget ? "" : "  (over budget)");
+                std::fflush(stdout);
+            }
+        }
+        table.rows.push_back(bench::cheapestWithin(pixelsPerMm, measured, *budget, finestSssMs));
+    }
+    std::sort(table.rows.begin(), table.rows.end(),
+              [](const QualityRow& a, const QualityRow& b) { return a.pixelsPerMm < b.pixelsPerMm; });
+    for (size_t i = 1; i < table.rows.size(); ++i) {
+        if (table.rows[i].pixelsPerMm <= table.rows[i - 1].pixelsPerMm) {
+            return failure(makeError(scenePath, "two distances give the same scale (" +
+                                                    formatNumberForMessage(table.rows[i].pixelsPerMm) +
+                                                    " px/mm): choose distance factors further apart"));
+        }
+    }
+    // Written, then read back as a scene would, so a table tune writes always loads.
+    const std::string json = qualityTableJson(table);
+    if (auto check = parseQualityTable(json, outPath); !check.ok()) return failure(check.error());
+    const std::string markdown = bench::qualityTableMarkdown(table);
+    if (Status written = writeTextFileAtomically(outPath, json); !written.ok()) return failure(written.error());
+    if (Status written = writeTextFileAtomically(markdownPath(outPath), markdown); !written.ok())
+        return failure(written.error());
+    if (!log::quiet()) std::fputs(markdown.c_str(), stdout);
+    log::info("wrote " + outPath + " and " + markdownPath(outPath));
+    return 0;
+}
+
+}  // namespace dermis::cli
