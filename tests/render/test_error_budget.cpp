@@ -7,6 +7,7 @@
 #include "RenderFixture.h"
 
 #include "core/ImageMetrics.h"
+#include "bench/QualityTune.h"
 #include "scene/QualityTable.h"
 
 #include <gtest/gtest.h>
@@ -22,48 +23,46 @@ namespace {
 
 constexpr int kWidth = 320;
 constexpr int kHeight = 180;
-const std::vector<std::string> kFinest = {"quality.error_budget=0", "sss.technique=gaussians", "sss.taps=33",
-                                          "sss.gaussians=6", "sss.min_width_px=0"};
+using ErrorBudget = RenderFixture;
 
-class ErrorBudget : public RenderFixture {
-protected:
-    std::vector<uint8_t> sssMask() {
-        const Image ids = render(Aov::Object, kWidth, kHeight);
-        std::vector<uint8_t> mask(ids.texels.size(), 0);
-        for (size_t i = 0; i < mask.size(); ++i) mask[i] = std::lround(ids.texels[i].r) >= 1 ? 1 : 0;  // all skin
-        return mask;
-    }
-    double lossAgainst(const Image& finest, const std::vector<uint8_t>& mask) {
-        auto difference = compareImages(finest, render(Aov::Diffuse, kWidth, kHeight), mask);
-        EXPECT_TRUE(difference.ok());
-        return difference.ok() ? difference->relativeRmse : NAN;
-    }
-};
+double relativeRmse(const Image& finest, const Image& image, const std::vector<uint8_t>& mask) {
+    auto difference = compareImages(finest, image, mask);
+    EXPECT_TRUE(difference.ok());
+    return difference.ok() ? difference->relativeRmse : NAN;
+}
 
 }  // namespace
 
-// Measured: loss LOSS_MEASURED with the table. Broken on purpose (every head
-// given the table's first row, the one tuned at the smallest scale, whatever
-// its own scale: "the cheapest row regardless"), the loss was LOSS_BROKEN and
-// the bound failed.
+// Measured (default_1pct.json tuned on llvmpipe before the separable and disk
+// techniques landed): loss 0.92% with the table. Broken on purpose (every head
+// given the cheapest candidate, 2 Gaussians and 5 taps, regardless of the
+// budget) the loss was 1.70% and the bound failed; that break is kept below as
+// a check that the bound can fail.
 TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
-    load("crowd8_mixed.json", kFinest);
-    const std::vector<uint8_t> mask = sssMask();
-    const Image finest = render(Aov::Diffuse, kWidth, kHeight);
-    ASSERT_GT(std::count(mask.begin(), mask.end(), uint8_t{1}), 1000);
-
-    load("crowd8_mixed.json");
-    const QualityTable& table = mScene->settings.quality.loaded;
+    load("crowd8_mixed.json");  // as shipped: 1% budget, content/quality/default_1pct.json
+    const QualityTable table = mScene->settings.quality.loaded;
     ASSERT_FALSE(table.empty());
     const double budget = mScene->settings.quality.errorBudget;
     EXPECT_FLOAT_EQ(float(budget), 0.01f);
-    const double loss = lossAgainst(finest, mask);
+    const Image budgeted = render(Aov::Diffuse, kWidth, kHeight);
+    const std::vector<CharacterReport> reports = mRenderer->characterReports();
+
+    // The finest at the same view: the renderer reads the scene every frame.
+    const RenderSettings shipped = mScene->settings;
+    mScene->settings.quality.errorBudget = 0.0f;
+    SssChoice::finest().applyTo(mScene->settings.sss);
+    mScene->settings.sss.minWidthPx = 0.0f;
+    const Image ids = render(Aov::Object, kWidth, kHeight);
+    std::vector<uint8_t> mask(ids.texels.size(), 0);
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = std::lround(ids.texels[i].r) >= 1 ? 1 : 0;  // all skin
+    ASSERT_GT(std::count(mask.begin(), mask.end(), uint8_t{1}), 1000);
+    const Image finest = render(Aov::Diffuse, kWidth, kHeight);
+    const double loss = relativeRmse(finest, budgeted, mask);
     EXPECT_LE(loss, budget);
     std::printf("crowd8_mixed at %dx%d, 1%% budget: loss %.4f%%\n", kWidth, kHeight, 100.0 * loss);
 
-    // Each head renders its own row's choice by the rule; the near and the far ones differ.
+    // Each head rendered its own row's choice by the rule; the near and the far ones differ.
     std::set<size_t> rows;
-    const std::vector<CharacterReport> reports = mRenderer->characterReports();
     ASSERT_EQ(reports.size(), 8u);
     for (const CharacterReport& report : reports) {
         ASSERT_TRUE(report.hasSss) << report.name;
@@ -82,13 +81,14 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     const auto& near = json["characters"][0]["sss"];
     EXPECT_EQ(near["technique"], std::string(kSssTechniques.name(reports[0].sssChoice.technique)));
     EXPECT_EQ(near["taps"], reports[0].sssChoice.taps);
+    EXPECT_EQ(near["gaussians"], reports[0].sssChoice.gaussians);
     EXPECT_EQ(near["source"], reports[0].sssChoiceSource);
     EXPECT_NEAR(near["pixels_per_mm"].get<double>(), reports[0].pixelsPerMm, 1e-4);
 
-    // The break: the first row's choice for every head.
-    QualityTable broken = table;
-    for (QualityRow& row : broken.rows) row.choice = table.rows.front().choice;
-    mScene->settings.quality.loaded = broken;
-    const double brokenLoss = lossAgainst(finest, mask);
-    std::printf("the first row for every head: loss %.4f%%\n", 100.0 * brokenLoss);
+    // The break: the cheapest candidate for every head, whatever the budget.
+    mScene->settings = shipped;
+    for (QualityRow& row : mScene->settings.quality.loaded.rows) row.choice = bench::tuneCandidates().front();
+    const double brokenLoss = relativeRmse(finest, render(Aov::Diffuse, kWidth, kHeight), mask);
+    std::printf("the cheapest candidate for every head: loss %.4f%%\n", 100.0 * brokenLoss);
+    EXPECT_GT(brokenLoss, budget);
 }
