@@ -5,6 +5,7 @@
 #include "CrowdBenchmarks.h"
 #include "EnvironmentBenchmarks.h"
 #include "LeanBenchmarks.h"
+#include "TechniqueBenchmarks.h"
 #include "TsBenchmarks.h"
 
 #include "core/Log.h"
@@ -59,5 +60,6 @@ int main(int argc, char** argv) {
     dermis::bench::printCrowdSummary();
     dermis::bench::printAnimatedCrowdSummary();
     dermis::bench::printEnvironmentSummary();
+    dermis::bench::printTechniqueSummary();
     return 0;
 }
