@@ -37,16 +37,19 @@
 //   A tap at x mm sits x * 1e-3 * P / z pixels from the centre, z the
 //   centre's view depth (m), P = uFrame.features.y (pixels per metre at 1 m).
 //
-// FRACTIONAL TAPS: WHOLE TEXELS, MERGED
-//   Each tap reads the whole texel nearest to its position (texelFetch of
-//   round(offset px)), never a bilinear mix: a bilinear fetch at a
-//   silhouette would blend in a texel the depth test never saw. Successive
-//   taps that land on the same texel are merged (their weights summed, one
-//   fetch and one edge test), so the skin's many sub-pixel taps near the
-//   centre cost one fetch at ordinary distances. Rounding moves each tap's
-//   weight by up to half a pixel; on the analytic edge this is measured in
-//   tests/render/test_separable_sss.cpp (docs/screen-space.md, "Separable
-//   SSS").
+// FRACTIONAL TAPS: WHOLE TEXELS, SPLIT AND MERGED
+//   A tap's position is rarely a whole pixel. It is never fetched bilinearly
+//   (as Jimenez et al.'s shader does): at a silhouette that would blend in a
+//   texel the depth test never saw. Instead (SEPARABLE_SSS_FETCH = 1) its
+//   weight is split linearly between the two whole texels around it, each
+//   fetched with texelFetch and edge-tested on its own: the tap's mean
+//   position is kept exactly. Contributions that land on the same texel
+//   (skin's many sub-pixel taps near the centre) are merged into one fetch
+//   and one edge test. SEPARABLE_SSS_FETCH = 0 rounds each tap to its nearest
+//   texel instead (one fetch per tap, as the d'Eon chain's whole-pixel taps):
+//   it moves the heavy inner taps towards the centre, and on the analytic
+//   edge the kernel then fits 15% narrower in green and blue (docs/screen-
+//   space.md, "Separable SSS", has both measured).
 //
 // EDGES (include/SssEdges.glsl, shared with the other techniques)
 //   bilateral: a tap's weight is multiplied by the depth test's weight and
@@ -65,6 +68,8 @@
 //   SSS_EXTRA_TARGETS   0 (default) or 1, as SssBlur.glsl (the packed chain).
 //   SEPARABLE_SSS_LAST  0 (default): the horizontal pass, writing the chain;
 //                       1: the vertical pass, writing the accumulations.
+//   SEPARABLE_SSS_FETCH 1 (default): a tap's weight split between the two
+//                       texels around it; 0: the nearest texel (FRACTIONAL TAPS).
 #ifndef DERMIS_SEPARABLE_SSS_GLSL
 #define DERMIS_SEPARABLE_SSS_GLSL
 
@@ -73,6 +78,12 @@
 #endif
 #if SEPARABLE_SSS_LAST < 0 || SEPARABLE_SSS_LAST > 1
 #error "SEPARABLE_SSS_LAST must be 0 or 1"
+#endif
+#ifndef SEPARABLE_SSS_FETCH
+#define SEPARABLE_SSS_FETCH 1
+#endif
+#if SEPARABLE_SSS_FETCH < 0 || SEPARABLE_SSS_FETCH > 1
+#error "SEPARABLE_SSS_FETCH must be 0 or 1"
 #endif
 #ifndef DERMIS_USE_SEPARABLE_SSS_BLOCK
 #error "define DERMIS_USE_SEPARABLE_SSS_BLOCK before including UniformBlocks.glsl"
@@ -104,32 +115,67 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
     vec3 weightSum = vec3(0.0);
     float scalarSum = 0.0;
-    int i = 0;
-    while (i < count) {
-        int offsetPx = int(round(uSeparableSss.taps[i].a * pixelsPerMm));
-        vec3 weight = uSeparableSss.taps[i].rgb;
-        while (i + 1 < count && int(round(uSeparableSss.taps[i + 1].a * pixelsPerMm)) == offsetPx) {
-            weight += uSeparableSss.taps[i + 1].rgb;
-            ++i;
+    // Contributions to whole texels, in ascending order of offset: each tap gives one
+    // (SEPARABLE_SSS_FETCH 0) or two (1); consecutive ones on the same texel are merged into
+    // `pending` and fetched once.
+    int pendingOffset = 0;
+    vec3 pendingWeight = vec3(0.0);
+    for (int i = 0; i <= count; ++i) {
+        int offsets[2];
+        vec3 weights[2];
+        int parts = 0;
+        if (i < count) {
+            float offsetPx = uSeparableSss.taps[i].a * pixelsPerMm;
+#if SEPARABLE_SSS_FETCH == 0
+            offsets[0] = int(round(offsetPx));
+            weights[0] = uSeparableSss.taps[i].rgb;
+            parts = 1;
+#else
+            float below = floor(offsetPx);
+            float above = offsetPx - below;
+            offsets[0] = int(below);
+            weights[0] = (1.0 - above) * uSeparableSss.taps[i].rgb;
+            offsets[1] = int(below) + 1;
+            weights[1] = above * uSeparableSss.taps[i].rgb;
+            parts = above > 0.0 ? 2 : 1;
+#endif
         }
-        ++i;
-        SssValues tap = centre;
-        if (offsetPx != 0) {
-            ivec2 tapPixel = clamp(pixel + direction * offsetPx, ivec2(0), size - 1);
-            SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges,
-                                         uSeparableSss.edges.y, uSeparableSss.edges.z);
-            if (edge.weight <= 0.0) continue;
-            weight *= edge.weight;
-            if (edge.toCentre < 1.0) {
-                tap = sssFetch(chain, tapPixel);
-                for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], centre.v[k], edge.toCentre);
+        for (int part = 0; part <= parts; ++part) {
+            // part == parts flushes what is pending when the next contribution is elsewhere (or at the end).
+            bool last = i == count;
+            if (part < parts && offsets[part] == pendingOffset) {
+                pendingWeight += weights[part];
+                continue;
+            }
+            if (part == parts && !last) break;
+            if (any(greaterThan(pendingWeight, vec3(0.0)))) {
+                vec3 weight = pendingWeight;
+                SssValues tap = centre;
+                bool use = true;
+                if (pendingOffset != 0) {
+                    ivec2 tapPixel = clamp(pixel + direction * pendingOffset, ivec2(0), size - 1);
+                    SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges,
+                                                 uSeparableSss.edges.y, uSeparableSss.edges.z);
+                    use = edge.weight > 0.0;
+                    weight *= edge.weight;
+                    if (use && edge.toCentre < 1.0) {
+                        tap = sssFetch(chain, tapPixel);
+                        for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], centre.v[k], edge.toCentre);
+                    }
+                }
+                if (use) {
+                    float scalar = separableScalarWeight(weight);
+                    sum.v[0] += vec4(weight * tap.v[0].rgb, scalar * tap.v[0].a);
+                    for (int k = 1; k < SSS_VALUES; ++k) sum.v[k] += scalar * tap.v[k];
+                    weightSum += weight;
+                    scalarSum += scalar;
+                }
+            }
+            if (part < parts) {
+                pendingOffset = offsets[part];
+                pendingWeight = weights[part];
             }
         }
-        float scalar = separableScalarWeight(weight);
-        sum.v[0] += vec4(weight * tap.v[0].rgb, scalar * tap.v[0].a);
-        for (int k = 1; k < SSS_VALUES; ++k) sum.v[k] += scalar * tap.v[k];
-        weightSum += weight;
-        scalarSum += scalar;
     }
     if (!(weightSum.r > 0.0 && weightSum.g > 0.0 && weightSum.b > 0.0 && scalarSum > 0.0)) return centre;
     // Per channel: taps dropped at an edge took their own share of each channel's weight.

@@ -88,7 +88,7 @@ TEST_F(SeparableSss, FurnaceWithSilhouettesStaysUniform) {
             const auto [worst, pixels] = worstRatio(irradiance, diffuse, albedo);
             std::printf("separable furnace %-9s %2d samples: worst |diffuse / irradiance - 1| %.2e over %zu px\n", blur,
                         samples, worst, pixels);
-            EXPECT_GT(pixels, size_t(kWidth * kHeight / 4));
+            EXPECT_GT(pixels, size_t(kWidth * kHeight / 8));
             EXPECT_LT(pixels, size_t(kWidth * kHeight)) << "the plane's silhouettes must be in the frame";
             EXPECT_LT(worst, 0.001) << blur << ", " << samples << " samples";
         }
@@ -125,30 +125,55 @@ protected:
 // straight down, 0.1 mm per pixel at 320x180), the same comparison the d'Eon
 // chain passes (test_sss.cpp): the rendered row against the exact diffusion
 // of the rendered irradiance row. For a straight edge along a blur axis,
-// K(x) K(y) gives exactly the profile's edge response (the vertical pass
-// blurs a uniform column), so what is left is the kernel's discretisation:
-// taps at whole texels (SeparableSss.glsl, "FRACTIONAL TAPS") and 3-sigma
-// range.
+// K(x) K(y) is exactly the profile's edge response (the vertical pass blurs
+// a uniform column), so what is left is the kernel's sampling: the rendered
+// row is a staircase, a step of each tap's weight where the tap crosses the
+// edge (the kernel's own 1-D step response, test_separable_kernel.cpp:
+// exact at the cell edges, off by up to (0.096, 0.181, 0.226) beside a tap
+// at 17 samples), seen at pixel centres. Measured (max error of the step;
+// fitted width scale R G B):
+//    7 samples 0.268; 0.850 0.850 0.850 (the fit's floor)
+//   17 samples 0.0365; 0.972 0.877 0.852
+//   33 samples 0.0169; 0.994 0.982 0.975
+// A CPU model of the taps (the kernel, each tap split between the two
+// texels around it, on the ideal step) gives the same figures (17: 0.043,
+// fits 0.97 0.87 0.85; 33: 0.020, 0.995 0.975 0.965). The width fit is
+// only meaningful at 33 samples: at 17 green's and blue's weight sits in
+// taps 1.3 px and 5.1 px from the centre, a staircase no smooth width fits.
+// Bounds: max error 0.30 / 0.045 / 0.02 at 7 / 17 / 33 samples, fitted
+// width within 3% at 33.
+// Broken on purpose with SEPARABLE_SSS_FETCH 0 (each tap rounded to its
+// nearest texel): 17 samples 0.092 (fits 0.936 0.850 0.850), 33 samples
+// 0.075 (0.977 0.850 0.850): both fail.
 TEST_F(SeparableEdge, FlatSkinMatchesTheExactDiffusionOfItsIrradiance) {
-    for (int samples : {7, 17, 33}) {
-        const test::EdgeComparison e = renderEdge({"sss.separable_samples=" + std::to_string(samples)});
-        test::printEdge((std::to_string(samples) + " samples").c_str(), e);
+    struct Case {
+        int samples;
+        double maxError;
+    };
+    for (const Case& c : {Case{7, 0.30}, Case{17, 0.045}, Case{33, 0.02}}) {
+        const test::EdgeComparison e = renderEdge({"sss.separable_samples=" + std::to_string(c.samples)});
+        test::printEdge((std::to_string(c.samples) + " samples").c_str(), e);
         EXPECT_LT(e.irradianceOffStep, 1e-3);
-        EXPECT_LT(e.maxError, samples == 7 ? 0.05 : 0.02) << samples << " samples";
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(e.widthScale[c], 1.0, 0.015) << samples << " samples, channel " << c;
+        EXPECT_LT(e.maxError, c.maxError) << c.samples << " samples";
+        if (c.samples < 33) continue;
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(e.widthScale[ch], 1.0, 0.03) << c.samples << " samples, channel " << ch;
     }
 }
 
-// The slot's width scale stretches the kernel: at sss.width_scale 0.95 and
-// 1.05 the fitted width must follow (the d'Eon chain's edge test only asks
-// that these fail its comparison; here the fit must find them).
+// The slot's width scale stretches the kernel (offsets times the scale,
+// passes/SssSeparablePasses.cpp): at 33 samples the fitted width at
+// sss.width_scale 0.95 and 1.05, over the fit at 1, must be the scale
+// (bound 1%). This is also the "kernel 5% too wide" break: the fit moves by
+// the 5% and the edge test above then fails its 3% bound in red.
 TEST_F(SeparableEdge, WidthScaleMovesTheFittedWidth) {
+    const test::EdgeComparison unit = renderEdge({"sss.separable_samples=33"});
     for (double scale : {0.95, 1.05}) {
         char setting[64];
         std::snprintf(setting, sizeof setting, "sss.width_scale=%.2f", scale);
-        const test::EdgeComparison e = renderEdge({setting});
+        const test::EdgeComparison e = renderEdge({"sss.separable_samples=33", setting});
         test::printEdge(setting, e);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(e.widthScale[c], scale, 0.015) << setting << ", channel " << c;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(e.widthScale[c] / unit.widthScale[c], scale, 0.01) << setting << ", channel " << c;
     }
 }
 
