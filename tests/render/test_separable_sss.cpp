@@ -71,11 +71,13 @@ std::pair<double, size_t> worstRatio(const Image& irradiance, const Image& diffu
 // temporary is half float (2^-11), the weights sum to 1 in float. Measured:
 // 0 (bit exact: 1 in fp16 and the renormalised sum) at 7, 17 and 33 samples
 // in both modes.
-// Broken on purpose: without the renormalisation (sum / weightSum removed),
-// bilateral's worst pixel beside the silhouette falls to 0.5 and fails
-// (control, whose weights stay, passes: it renormalises nothing); with the
-// blue weights dropped from every tap but the centre the blue channel falls
-// to its centre weight and fails.
+// Broken on purpose: without the renormalisation (the division by the
+// weights' sums removed), bilateral's worst pixel beside the silhouettes is
+// off by 0.39 / 0.64 / 0.66 at 7 / 17 / 33 samples and fails (control, whose
+// weights stay, is unaffected: 1.2e-7). With blue's weight dropped from every
+// tap but the centre, this test still passes (the renormalisation makes any
+// non-negative kernel a furnace); the edge test below catches that (max
+// error 0.2685 at every sample count).
 TEST_F(SeparableSss, FurnaceWithSilhouettesStaysUniform) {
     for (const char* blur : {"bilateral", "control"}) {
         for (int samples : {7, 17, 33}) {
@@ -178,34 +180,61 @@ TEST_F(SeparableEdge, WidthScaleMovesTheFittedWidth) {
 }
 
 // In the LEAN variant lbb the moments go through the same taps with one
-// scalar weight per tap (SeparableSss.glsl, "EXTRA TARGETS AND ALPHA"). On
-// the furnace plane the moments are uniform, so blurring them must change
-// nothing: the specular AOV must match the same frame with SSS disabled (the
-// moments then reach the LEAN specular unblurred), also beside the
-// silhouettes, and nothing may be non-finite.
+// scalar weight per tap (SeparableSss.glsl, "EXTRA TARGETS AND ALPHA"). The
+// plane below (the furnace's silhouettes, a flat normal map so that its
+// specular is the LEAN lobe of the blurred moments, passes/LeanSpecularPass)
+// has uniform moments, so blurring them should change nothing: the specular
+// AOV is compared with the same frame with SSS disabled (the moments then
+// reach the lobe unblurred). Nothing may be non-finite. The two frames are
+// not identical even for the d'Eon chain (measured: worst 5.0e-4, 1.98e-4
+// away from the silhouettes, of a 0.0137 peak; the packed chain's half floats
+// and the lobe's sensitivity to them), so the bound is the chain's own
+// departure (x1.1) and 5% of the peak. Measured for separable: worst 3.9e-4,
+// 1.76e-4 away from the silhouettes.
+// Broken on purpose without the renormalisation: separable's worst becomes
+// 1.06e-2 (the moments beside the silhouettes shrink) and fails.
 TEST_F(SeparableSss, LeanMomentsStayFiniteAndAUniformLobeStaysUniform) {
-    std::vector<std::string> overrides = furnaceOverrides("bilateral", 17);
-    overrides.push_back("characters.0.material.rho_s=0.18");
-    overrides.push_back("sss.variant=lbb");
-    load("furnace.json", overrides);
-    const Image specular = render(Aov::Specular, kWidth, kHeight);
-    const Image diffuse = render(Aov::Diffuse, kWidth, kHeight);
-    const Image albedo = render(Aov::Albedo, kWidth, kHeight);
-    expectSeparableRan("lbb");
-    overrides.push_back("sss.enabled=false");
-    load("furnace.json", overrides);
+    test::TempDir dir;
+    Image flat;
+    flat.width = 16;
+    flat.height = 16;
+    flat.colourSpace = ColourSpace::Linear;
+    flat.texels.assign(16 * 16, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+    ASSERT_TRUE(saveImage(dir.file("flat.png"), flat).ok());
+    test::writeTextFile(dir.file("lean.json"), R"({
+      "camera": {"position_m": [0, 0.03, 0], "target_m": [0, 0, 0], "up": [0, 0, -1], "vertical_fov_deg": 30, "near_m": 0.01, "far_m": 2},
+      "lights": [{"type": "directional", "direction": [0.3, -1, 0.2], "intensity": 1, "shadow": false}],
+      "characters": [{"name": "plane", "mesh": {"procedural": "plane"}, "transform": {"scale": 0.01},
+                      "material": {"albedo": [1, 1, 1], "normal_map": "flat.png", "roughness": 0.3, "rho_s": 0.18,
+                                   "profile": "skin"}}],
+      "background": {"colour": [0, 0, 0]},
+      "settings": {"ambient": [0, 0, 0], "ssao": {"enabled": false}, "transmittance": {"enabled": false},
+                   "sss": {"technique": "separable", "variant": "lbb", "blur": "bilateral"}}
+    })");
+    load(dir.file("lean.json"), {"sss.enabled=false"});
     const Image unblurred = render(Aov::Specular, kWidth, kHeight);
-    ASSERT_EQ(test::countNonFinite(specular), 0u);
-    ASSERT_EQ(test::countNonFinite(diffuse), 0u);
-    double worst = 0.0;
+    double worst[2] = {0.0, 0.0};  // the d'Eon chain, separable
     double peak = 0.0;
-    for (size_t i = 0; i < specular.texels.size(); ++i) {
-        if (albedo.texels[i].a < 0.5f) continue;
-        peak = std::max(peak, double(unblurred.texels[i].g));
-        for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(double(specular.texels[i][c]) - double(unblurred.texels[i][c])));
+    for (int t = 0; t < 2; ++t) {
+        load(dir.file("lean.json"), {t == 0 ? "sss.technique=gaussians" : "sss.technique=separable"});
+        const Image specular = render(Aov::Specular, kWidth, kHeight);
+        const Image diffuse = render(Aov::Diffuse, kWidth, kHeight);
+        const Image albedo = render(Aov::Albedo, kWidth, kHeight);
+        ASSERT_EQ(test::countNonFinite(specular), 0u);
+        ASSERT_EQ(test::countNonFinite(diffuse), 0u);
+        const PassSummary* lean = pass("lean specular");
+        EXPECT_TRUE(lean && lean->executed) << "the LEAN specular pass did not run";
+        if (t == 1) expectSeparableRan("lbb");
+        for (size_t i = 0; i < specular.texels.size(); ++i) {
+            if (albedo.texels[i].a < 0.5f) continue;
+            peak = std::max(peak, double(unblurred.texels[i].g));
+            for (int c = 0; c < 3; ++c)
+                worst[t] = std::max(worst[t], std::abs(double(specular.texels[i][c]) - double(unblurred.texels[i][c])));
+        }
     }
-    std::printf("separable lbb: worst |specular - unblurred| %.3e (the lobe's peak %.4f)\n", worst, peak);
+    std::printf("lbb, worst |specular - unblurred|: d'Eon chain %.3e, separable %.3e (the lobe's peak %.4f)\n", worst[0],
+                worst[1], peak);
     EXPECT_GT(peak, 0.01) << "no specular to compare";
-    EXPECT_LT(worst, 1e-3 * peak);
+    EXPECT_LT(worst[1], 1.1 * worst[0]);
+    EXPECT_LT(worst[1], 0.05 * peak);
 }
