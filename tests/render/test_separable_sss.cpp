@@ -6,6 +6,7 @@
 #include "TestSupport.h"
 
 #include "sss/DiffusionProfile.h"
+#include "sss/SeparableKernel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -176,6 +177,46 @@ TEST_F(SeparableEdge, WidthScaleMovesTheFittedWidth) {
         test::printEdge(setting, e);
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(e.widthScale[c] / unit.widthScale[c], scale, 0.01) << setting << ", channel " << c;
+    }
+}
+
+// The edge row against the kernel applied on the CPU: the rendered
+// irradiance row, each tap's weight split linearly between the two texels
+// around its position in pixels (SeparableSss.glsl, "FRACTIONAL TAPS"), the
+// taps from makeSeparableKernel, the vertical pass the identity (the row is
+// the same in every row). This separates the shader from the kernel's
+// sampling error above: what is left is the half-float temporary and float
+// rounding. Bound 1e-3 of the step (the temporary's half-float ulp at 1 is
+// 4.9e-4); measured 2.4e-4 at 7, 17 and 33 samples.
+// Broken on purpose: with SEPARABLE_SSS_FETCH 0 (taps rounded) 1.1e-2 /
+// 6.0e-2 / 5.8e-2 at 7 / 17 / 33 samples; with the GPU's kernel 5% wide
+// (sss.width_scale 1.05, the CPU's not) 7.3e-2 / 3.6e-2 / 1.9e-2: all fail.
+TEST_F(SeparableEdge, RowIsTheKernelAppliedToItsIrradianceRow) {
+    const double mmPerPixel = 2.0 * test::kEdgeHeightM * 1000.0 * std::tan(test::kEdgeFovDeg * M_PI / 360.0) / kHeight;
+    for (int samples : {7, 17, 33}) {
+        load(mScenePath, {"sss.technique=separable", "sss.separable_samples=" + std::to_string(samples)});
+        const Image irradiance = render(Aov::Irradiance, kWidth, kHeight);
+        const Image diffuse = render(Aov::Diffuse, kWidth, kHeight);
+        Result<SeparableKernel> kernel = makeSeparableKernel(skinProfile(), samples);
+        ASSERT_TRUE(kernel.ok());
+        const int row = kHeight / 2;
+        double worst = 0.0;
+        for (int x = 0; x < kWidth; ++x) {
+            glm::dvec3 expected(0.0);
+            for (int k = 0; k < kernel->count; ++k) {
+                const double offsetPx = kernel->taps[size_t(k)].offsetMm / mmPerPixel;
+                const double below = std::floor(offsetPx);
+                const double above = offsetPx - below;
+                for (int part = 0; part < 2; ++part) {
+                    const int tap = std::clamp(x + int(below) + part, 0, kWidth - 1);
+                    const double share = part == 0 ? 1.0 - above : above;
+                    expected += share * glm::dvec3(kernel->taps[size_t(k)].weight) * glm::dvec3(irradiance.at(tap, row));
+                }
+            }
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(diffuse.at(x, row)[c]) - expected[c]));
+        }
+        std::printf("separable edge, %d samples: worst |rendered - kernel on the CPU| %.2e of the step\n", samples, worst);
+        EXPECT_LT(worst, 1e-3) << samples << " samples";
     }
 }
 
