@@ -73,6 +73,25 @@ Result<Programs> Programs::build() {
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }
+    struct SeparableEntry {
+        gl::Program Programs::*member;
+        const char* extraTargets;
+        const char* last;
+    };
+    const SeparableEntry separableEntries[] = {
+        {&Programs::sssSeparableH, "0", "0"},
+        {&Programs::sssSeparableV, "0", "1"},
+        {&Programs::sssSeparableLeanH, leanTargets.c_str(), "0"},
+        {&Programs::sssSeparableLeanV, leanTargets.c_str(), "1"},
+    };
+    for (const SeparableEntry& e : separableEntries) {
+        std::vector<gl::ShaderDefine> separableDefines = defines;
+        separableDefines.push_back({"SSS_EXTRA_TARGETS", e.extraTargets});
+        separableDefines.push_back({"SEPARABLE_SSS_LAST", e.last});
+        auto program = gl::buildProgram({"fullscreen.vert", "sss_separable.frag", separableDefines, {}});
+        if (!program.ok()) return program.error();
+        programs.*(e.member) = std::move(*program);
+    }
     std::vector<gl::ShaderDefine> leanTransfer = defines;
     leanTransfer.push_back({"GBUFFER_LEAN", "1"});
     leanTransfer.push_back({"GBUFFER_TRANSFER", "5"});  // after the LEAN targets 3 and 4

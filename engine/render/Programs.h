@@ -19,6 +19,12 @@ struct Programs {
     gl::Program transmittance;  // passes/TransmittancePass.cpp
     gl::Program sssInit;        // passes/SssPasses.cpp
     gl::Program sssBlur;
+    // passes/SssSeparablePasses.cpp: horizontal (chain) and vertical (accumulation) passes,
+    // plain and with the LEAN moments (SSS_EXTRA_TARGETS)
+    gl::Program sssSeparableH;
+    gl::Program sssSeparableV;
+    gl::Program sssSeparableLeanH;
+    gl::Program sssSeparableLeanV;
     gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
     gl::Program tsStretch;
     gl::Program tsIrradiance;

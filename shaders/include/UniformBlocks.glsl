@@ -125,6 +125,16 @@ DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 
+// Separable SSS (Jimenez et al. 2015), one direction of one profile slot
+// (passes/SssSeparablePasses.cpp; the manual is include/SeparableSss.glsl).
+#if defined(__cplusplus) || defined(DERMIS_USE_SEPARABLE_SSS_BLOCK)
+DERMIS_BLOCK(SeparableSssBlock, DERMIS_BINDING_PASS) {
+    vec4 taps[DERMIS_MAX_SEPARABLE_SAMPLES];  // rgb: weight (per channel, each sums to 1), a: offset (mm, widthScale applied), ascending
+    vec4 step;   // xy: direction, (1,0) or (0,1); z: tap count; w: 1 = the vertical pass (the last: its output is the result)
+    vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+} DERMIS_BLOCK_END(uSeparableSss)
+#endif
+
 // SSAO and its blur (passes/SsaoPass.cpp; the manual is shaders/ssao.frag).
 #if defined(__cplusplus) || defined(DERMIS_USE_SSAO_BLOCK)
 DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
