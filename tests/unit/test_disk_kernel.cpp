@@ -53,9 +53,11 @@ double largestCdfError(const DiskKernel& kernel, const std::function<double(int,
 
 // The bound on that error, per sample count: the midpoint rule's error on a stratum of width
 // 1/N is (1/N)^3 max|g''| / 24 with g = dF_c/du <= 3, summed over N strata O(1/N^2); measured
-// (skin, soft Burley): 8 samples 4.8e-3 / 2.7e-3, 40: 2.2e-4 / 1.1e-4, 128: 2.2e-5 / 1.1e-5.
-// 2.5 / N^2 is above every one of them (3.9e-2, 1.6e-3, 1.5e-4) and far below what a 5% radius
-// error gives (r f(r) x 0.05, about 0.02: measured 0.021 / 0.022 at 40 samples).
+// (skin, soft Burley): 8 samples 2.1e-2 / 1.5e-2, 40: 8.7e-4 / 5.1e-4, 128: 7.6e-5 / 5.1e-5,
+// i.e. at most 1.35 / N^2. The bound 2.5 / N^2 (3.9e-2, 1.6e-3, 1.5e-4) is about twice that.
+// Broken on purpose (tests/unit, 40 / 128 samples): radii x1.05 gave 2.75e-2 (skin) and 1.59e-2
+// (Burley); every channel weighted by red's weights 0.54; at 8 samples the bound is too loose
+// to see a 5% radius error (2.4e-2 against 3.9e-2), which the 40- and 128-sample rows catch.
 double cdfBound(int samples) { return 2.5 / (double(samples) * samples); }
 
 }  // namespace
@@ -91,8 +93,9 @@ TEST(DiskKernel, WeightsSumToOnePerChannel) {
 }
 
 // The cumulative weight against the exact profile's CDF. For a Burley profile it is Burley's
-// closed form, not the six-Gaussian fit's, whose CDF is off by 0.5-1% (measureBurleyFit): a kernel
-// made from the fit fails the bound by far (measured 9.1e-3 at 40 samples, bound 1.6e-3).
+// closed form, not the six-Gaussian fit's, whose CDF is off by 1.2-1.9% (measureBurleyFit): a kernel
+// made from the fit (DiskKernel.cpp ignoring burley()) fails the bound by far (measured 1.85e-2
+// at 40 and 128 samples, bounds 1.6e-3 and 1.5e-4).
 TEST(DiskKernel, CumulativeWeightFollowsTheProfilesCdf) {
     Result<DiffusionProfile> soft = fitBurleyGaussians(kSoft);
     ASSERT_TRUE(soft.ok());
