@@ -25,6 +25,7 @@ struct Programs {
     gl::Program sssSeparableV;
     gl::Program sssSeparableLeanH;
     gl::Program sssSeparableLeanV;
+    gl::Program sssDisk;        // passes/SssDiskPass.cpp
     gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
     gl::Program tsStretch;
     gl::Program tsIrradiance;
@@ -38,6 +39,7 @@ struct Programs {
     gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
+    gl::Program sssDiskLean;
     gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
     gl::Program compositeLean;  // composite with the LEAN specular
     // Environment light (docs/environment.md): the G-buffers with the

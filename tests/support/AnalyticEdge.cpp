@@ -1,5 +1,8 @@
 #include "AnalyticEdge.h"
 
+#include "Quadrature.h"
+
+#include "sss/BurleyProfile.h"
 #include "sss/DiffusionProfile.h"
 
 #include <gtest/gtest.h>
@@ -38,6 +41,17 @@ std::string writeEdgeScene(const TempDir& dir, const std::string& profile, const
                   profilesJson.empty() ? "" : (profilesJson + ",").c_str());
     writeTextFile(dir.file("edge.json"), json);
     return dir.file("edge.json");
+}
+
+double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals) {
+    if (xMm == 0.0) return 0.5;
+    const double a = std::fabs(xMm);
+    const double dMm = shapeDistanceMm;
+    const double dark = quadrature::simpson([&](double t) {
+        const double r = a * std::cosh(t);
+        return 2.0 * M_PI * r * burleyRadialProfile(r, dMm) * std::acos(1.0 / std::cosh(t)) / M_PI * a * std::sinh(t);
+    }, 0.0, std::acosh(std::fmax(200.0 * dMm / a, 1.0)), intervals);
+    return xMm < 0.0 ? dark : 1.0 - dark;
 }
 
 EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile) {

@@ -34,6 +34,12 @@ struct EdgeError {
     double rms = 0.0;
 };
 
+// Burley's normalized diffusion's edge response (docs/reference.md) at x mm for shape distance
+// d mm, by numerical integration: a point at distance a on the dark side receives the light of
+// each ring of radius r > a in proportion to the angle 2 acos(a / r) that lies in the lit half,
+// with r = a cosh(t), up to r = 200 d (Simpson, `intervals` even).
+double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals = 40000);
+
 // The diffuse AOV's middle row against the profile's edge response (skin when null).
 EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile = nullptr);
 
