@@ -89,18 +89,6 @@ float interleavedGradientNoise(vec2 pixel) {
     return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// Pixel coordinates to a float in [0, 1): xorshift-multiply rounds with the
-// constants of Wellons' "lowbias32" integer hash.
-float hashToUnit(uvec2 pixel) {
-    uint h = pixel.x * 0x9E3779B9u ^ (pixel.y + 0x7F4A7C15u) * 0x85EBCA6Bu;
-    h ^= h >> 16;
-    h *= 0x7FEB352Du;
-    h ^= h >> 15;
-    h *= 0x846CA68Bu;
-    h ^= h >> 16;
-    return float(h >> 8) * (1.0 / 16777216.0);
-}
-
 vec3 viewPositionAt(ivec2 texel, float depth) {
     vec2 uv = (vec2(texel) + 0.5) * uFrame.viewport.zw;
     return viewPositionFromDepth(uv, depth, uFrame.viewFromClip);

@@ -23,6 +23,8 @@ static_assert(sizeof(ObjectBlock) == 2 * 64 + (4 + DERMIS_SH_COEFFICIENTS) * 16,
 static_assert(sizeof(EnvironmentBlock) == 64 + (DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
               "EnvironmentBlock must match std140");
 static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");
+static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");
+static_assert(sizeof(DiskSssBlock) == (2 * DERMIS_MAX_DISK_SAMPLES + 2) * 16, "DiskSssBlock must match std140");
 static_assert(sizeof(SsaoBlock) == 2 * 16, "SsaoBlock must match std140");
 static_assert(sizeof(TextureSpaceBlock) == 64 + (6 + DERMIS_MAX_BLUR_TAPS + DERMIS_MAX_PROFILE_GAUSSIANS) * 16,
               "TextureSpaceBlock must match std140");

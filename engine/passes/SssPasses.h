@@ -5,6 +5,7 @@
 //   sss init            accumulation = identity weight x irradiance (SSS pixels), irradiance elsewhere
 //   sss <profile> gN h  horizontal step of Gaussian N      \ per profile slot, per Gaussian;
 //   sss <profile> gN v  vertical step, += w_N x result      / each skipped by predicate when too narrow
+//   sss <profile> disk  the disk technique's slots instead: one pass (passes/SssDiskPass.cpp)
 //
 // In the LEAN variants the same passes also blur the G-buffer's LEAN moments
 // (addSssChain); in variant c they are neither declared nor blurred.

@@ -1,11 +1,101 @@
+// Separable SSS (Jimenez et al. 2015): per slot whose technique is separable,
+//
+//   sss <profile> separable h   chain start -> temporary, the 1-D kernel along x
+//   sss <profile> separable v   temporary -> accumulation(s), along y, overwriting sss init's value
+//
+// under the slot's stencil, scissor and regions. The kernel is computed here
+// on the CPU from the slot's profile (sss/SeparableKernel.h); the shader's
+// manual is shaders/include/SeparableSss.glsl.
 #include "passes/SssPasses.h"
 
-namespace dermis {
+#include "passes/FullscreenPass.h"
+#include "sss/SeparableKernel.h"
 
-// Not yet written: the separable technique's slots run the d'Eon chain until its passes land.
+#include <string>
+
+namespace dermis {
+namespace {
+
+struct SeparableData {
+    graph::TextureHandle chain, depthKey, stencil, out;
+    std::vector<graph::TextureHandle> accumulatedIn, accumulatedOut;  // vertical: colour, then the extras
+};
+
+// The slot's kernel, offsets times its width scale (the marginal of a profile
+// scaled by s is K(x / s) / s, so the cell integrals stay those of K).
+gpu::SeparableSssBlock separableBlock(const FrameContext& frame, const SssSlotPlan& slot, const SeparableKernel& kernel,
+                                      bool horizontal) {
+    const SssSettings& settings = frame.plan.scene->settings.sss;
+    gpu::SeparableSssBlock block{};
+    for (int i = 0; i < kernel.count; ++i) {
+        const SeparableTap& tap = kernel.taps[size_t(i)];
+        block.taps[i] = glm::vec4(tap.weight, tap.offsetMm * slot.widthScale);
+    }
+    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, float(kernel.count), horizontal ? 0.0f : 1.0f);
+    block.edges = glm::vec4(float(sssBlurEdges(settings)), settings.bilateralDepthMm, settings.controlDepthScalePerMm,
+                            float(slot.slot));
+    return block;
+}
+
+const SeparableData& addSeparablePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                                      const SssSlotPlan& slot, const gpu::SeparableSssBlock& block,
+                                      const std::string& skipReason, const SssStart& start, graph::TextureHandle in,
+                                      const SssChain& chain) {
+    const bool horizontal = block.step.w == 0.0f;
+    const std::string passName = "sss " + slot.profile->name() + " separable" + (horizontal ? " h" : " v");
+    return graph.addPass<SeparableData>(
+        passName,
+        [&](graph::PassBuilder& builder, SeparableData& d) {
+            d.chain = builder.read(in);
+            d.depthKey = builder.read(gbuffer.depthKey);
+            d.stencil = builder.read(gbuffer.depthStencil);
+            if (horizontal) {
+                d.out = builder.create(passName, start.chainDesc);
+                builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
+                builder.skipIf(!skipReason.empty(), skipReason);
+                return;
+            }
+            // Read as well as written: the slot's pixels are overwritten, every other pixel keeps its value.
+            std::vector<graph::TextureHandle> accumulated = {chain.diffuse};
+            accumulated.insert(accumulated.end(), chain.extras.begin(), chain.extras.end());
+            for (graph::TextureHandle target : accumulated) {
+                d.accumulatedIn.push_back(builder.read(target));
+                d.accumulatedOut.push_back(builder.write(target));
+            }
+        },
+        [frame, block, horizontal, packed = start.packed, scissor = slot.scissor, slotIndex = slot.slot,
+         regions = slot.regions](const graph::PassResources& resources, const SeparableData& d) {
+            const Programs& programs = *frame.gl->programs;
+            const gl::Program& program = horizontal ? (packed ? programs.sssSeparableLeanH : programs.sssSeparableH)
+                                                    : (packed ? programs.sssSeparableLeanV : programs.sssSeparableV);
+            const std::vector<graph::TextureHandle> targets = horizontal ? std::vector<graph::TextureHandle>{d.out}
+                                                                         : d.accumulatedOut;
+            beginFullscreenPass(frame, resources, {targets, d.stencil}, program.get(), {d.chain, d.depthKey});
+            frame.gl->uploadPassBlock(&block, sizeof block);
+            const ScopedSssState state(frame, scissor, slotIndex);
+            frame.gl->drawRegions(regions);
+        });
+}
+
+}  // namespace
+
 SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer, const SssStart& start,
-                        SssChain chain) {
-    return addSssGaussianChain(graph, frame, gbuffer, start, chain, SssTechnique::Separable);
+                         SssChain chain) {
+    for (const SssSlotPlan& slot : frame.plan.sss.slots) {
+        if (slot.choice.technique != SssTechnique::Separable) continue;
+        Result<SeparableKernel> kernel = makeSeparableKernel(*slot.profile, slot.choice.separableSamples);
+        std::string skipReason;
+        if (!slot.visible) skipReason = "no pixel of this profile on screen";
+        if (!kernel.ok()) skipReason = kernel.error().message();
+        const SeparableKernel taps = kernel.ok() ? kernel.value() : SeparableKernel{};
+        const SeparableData& horizontal = addSeparablePass(graph, frame, gbuffer, slot, separableBlock(frame, slot, taps, true),
+                                                           skipReason, start, start.chain, chain);
+        const SeparableData& vertical = addSeparablePass(graph, frame, gbuffer, slot, separableBlock(frame, slot, taps, false),
+                                                         skipReason, start, horizontal.out, chain);
+        chain.diffuse = vertical.accumulatedOut[0];
+        chain.extras.assign(vertical.accumulatedOut.begin() + 1, vertical.accumulatedOut.end());
+    }
+    return chain;
 }
 
 }  // namespace dermis

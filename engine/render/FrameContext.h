@@ -20,7 +20,8 @@ namespace dermis {
 constexpr GLuint kBeckmannUnit = DERMIS_UNIT_BECKMANN;
 constexpr GLuint kEnergyUnit = DERMIS_UNIT_ENERGY;
 
-constexpr size_t kMaxPassBlockBytes = 4096;
+// The largest per-pass block: DiskSssBlock at 128 samples (4128 bytes); GL guarantees 16 KiB.
+constexpr size_t kMaxPassBlockBytes = 8192;
 
 // The GL objects passes execute with, owned by the renderer
 // (render/FrameResources.h) and made before the frame is declared.

@@ -26,6 +26,7 @@ Result<Programs> Programs::build() {
         {&Programs::transmittance, "fullscreen.vert", "transmittance.frag"},
         {&Programs::sssInit, "fullscreen.vert", "sss_init.frag"},
         {&Programs::sssBlur, "fullscreen.vert", "sss_blur.frag"},
+        {&Programs::sssDisk, "fullscreen.vert", "sss_disk.frag"},
         {&Programs::tsTsm, "ts_tsm.vert", "ts_tsm.frag"},
         {&Programs::tsStretch, "ts_uv.vert", "ts_stretch.frag"},
         {&Programs::tsIrradiance, "ts_uv.vert", "ts_irradiance.frag"},
@@ -61,6 +62,7 @@ Result<Programs> Programs::build() {
         {&Programs::lightingLean, "fullscreen.vert", "lighting.frag", {"LIGHTING_LEAN", "1"}},
         {&Programs::sssInitLean, "fullscreen.vert", "sss_init.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::sssBlurLean, "fullscreen.vert", "sss_blur.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
+        {&Programs::sssDiskLean, "fullscreen.vert", "sss_disk.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
         {&Programs::compositeLean, "fullscreen.vert", "composite.frag", {"COMPOSITE_LEAN", "1"}},
         {&Programs::gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_TRANSFER", "3"}},
@@ -70,6 +72,25 @@ Result<Programs> Programs::build() {
         std::vector<gl::ShaderDefine> variantDefines = defines;
         if (!e.define.name.empty()) variantDefines.push_back(e.define);
         auto program = gl::buildProgram({e.vertex, e.fragment, variantDefines, {}});
+        if (!program.ok()) return program.error();
+        programs.*(e.member) = std::move(*program);
+    }
+    struct SeparableEntry {
+        gl::Program Programs::*member;
+        const char* extraTargets;
+        const char* last;
+    };
+    const SeparableEntry separableEntries[] = {
+        {&Programs::sssSeparableH, "0", "0"},
+        {&Programs::sssSeparableV, "0", "1"},
+        {&Programs::sssSeparableLeanH, leanTargets.c_str(), "0"},
+        {&Programs::sssSeparableLeanV, leanTargets.c_str(), "1"},
+    };
+    for (const SeparableEntry& e : separableEntries) {
+        std::vector<gl::ShaderDefine> separableDefines = defines;
+        separableDefines.push_back({"SSS_EXTRA_TARGETS", e.extraTargets});
+        separableDefines.push_back({"SEPARABLE_SSS_LAST", e.last});
+        auto program = gl::buildProgram({"fullscreen.vert", "sss_separable.frag", separableDefines, {}});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }

@@ -19,6 +19,13 @@ struct Programs {
     gl::Program transmittance;  // passes/TransmittancePass.cpp
     gl::Program sssInit;        // passes/SssPasses.cpp
     gl::Program sssBlur;
+    // passes/SssSeparablePasses.cpp: horizontal (chain) and vertical (accumulation) passes,
+    // plain and with the LEAN moments (SSS_EXTRA_TARGETS)
+    gl::Program sssSeparableH;
+    gl::Program sssSeparableV;
+    gl::Program sssSeparableLeanH;
+    gl::Program sssSeparableLeanV;
+    gl::Program sssDisk;        // passes/SssDiskPass.cpp
     gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
     gl::Program tsStretch;
     gl::Program tsIrradiance;
@@ -32,6 +39,7 @@ struct Programs {
     gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
+    gl::Program sssDiskLean;
     gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
     gl::Program compositeLean;  // composite with the LEAN specular
     // Environment light (docs/environment.md): the G-buffers with the

@@ -242,7 +242,8 @@ void readMaterialOverrides(JsonObject& parent, const std::string& sceneFile, con
 constexpr double kProfileWeightSumTolerance = 1e-3;
 
 // A profile given as Burley's normalized diffusion (Christensen & Burley 2015):
-// its six-Gaussian fit (sss/BurleyProfile.h), which every technique uses.
+// its six-Gaussian fit (sss/BurleyProfile.h), which every technique but the disk
+// uses; the profile keeps the parameters, and the disk samples them exactly.
 void readBurleyProfile(JsonObject& object, const std::string& name, std::vector<DiffusionProfile>& out) {
     JsonContext& context = object.context();
     JsonObject burley(context, *object.member("burley"), object.pointer("burley"), {"albedo", "mean_free_path_mm"});

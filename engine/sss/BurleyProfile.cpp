@@ -270,7 +270,9 @@ Result<DiffusionProfile> fitBurleyGaussians(const BurleyParameters& parameters, 
         profileGaussians[size_t(i)].varianceMm2 = float(variances[size_t(i)]);
         for (int c = 0; c < 3; ++c) profileGaussians[size_t(i)].weight[c] = float(best.weights[c][size_t(i)]);
     }
-    return DiffusionProfile::create(std::move(name), std::move(profileGaussians));
+    Result<DiffusionProfile> profile = DiffusionProfile::create(std::move(name), std::move(profileGaussians));
+    if (profile.ok()) profile->setBurley(parameters);
+    return profile;
 }
 
 BurleyFitError measureBurleyFit(const BurleyParameters& parameters, const DiffusionProfile& profile) {

@@ -24,11 +24,6 @@
 
 namespace dermis {
 
-struct BurleyParameters {
-    glm::vec3 albedo{0.0f};                // surface albedo A per channel, in [0, 1]
-    glm::vec3 scatteringDistanceMm{0.0f};  // mean free path l per channel, > 0
-};
-
 // s(A) = 1.85 - A + 7 |A - 0.8|^3 (Christensen & Burley 2015, searchlight, mean free path).
 double burleyScalingFactor(double albedo);
 // d = l / s(A) per channel, in mm.
@@ -52,6 +47,7 @@ glm::dvec3 gaussianRadialCdf(const DiffusionProfile& profile, double radiusMm);
 // profile: variances on a geometric series v_i = v_0 q^i shared by the channels (v_0 and q
 // by a grid search that minimises the worst channel's largest CDF error), weights per channel
 // by non-negative least squares on samples of 2 pi r R(r), normalised by DiffusionProfile::create.
+// The profile keeps `parameters` (DiffusionProfile::burley()).
 constexpr int kMaxBurleyGaussians = 8;
 Result<DiffusionProfile> fitBurleyGaussians(const BurleyParameters& parameters, int gaussians = 6,
                                             std::string name = "burley");

@@ -10,10 +10,18 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace dermis {
+
+// Burley's normalized diffusion (Christensen & Burley 2015; sss/BurleyProfile.h has the
+// profile, its CDF and the fit). Here so that a profile made from it can keep them.
+struct BurleyParameters {
+    glm::vec3 albedo{0.0f};                // surface albedo A per channel, in [0, 1]
+    glm::vec3 scatteringDistanceMm{0.0f};  // mean free path l per channel, > 0
+};
 
 struct ProfileGaussian {
     float varianceMm2 = 0.0f;
@@ -41,9 +49,16 @@ public:
     glm::vec3 transmittance(float thicknessMm) const;
     float largestStdDevMm() const;
 
+    // The Burley parameters the Gaussians were fitted to (sss/BurleyProfile.h,
+    // fitBurleyGaussians), if any: the disk technique samples that exact profile,
+    // every other consumer the fit.
+    const std::optional<BurleyParameters>& burley() const { return mBurley; }
+    void setBurley(const BurleyParameters& parameters) { mBurley = parameters; }
+
 private:
     std::string mName;
     std::vector<ProfileGaussian> mGaussians;
+    std::optional<BurleyParameters> mBurley;
 };
 
 // d'Eon & Luebke's six-Gaussian fit of the three-layer skin model (Chappuis 2011 fig. 2.7).

@@ -71,6 +71,18 @@ float keyDistanceMm(uint a, uint b) {
     return float(abs(units)) * (1000.0 / DERMIS_KEY_UNITS_PER_M);
 }
 
+// Pixel coordinates to a float in [0, 1): xorshift-multiply rounds with the
+// constants of Wellons' "lowbias32" integer hash.
+float hashToUnit(uvec2 pixel) {
+    uint h = pixel.x * 0x9E3779B9u ^ (pixel.y + 0x7F4A7C15u) * 0x85EBCA6Bu;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return float(h >> 8) * (1.0 / 16777216.0);
+}
+
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // The upper tail 1 - Phi(z) of the standard normal for z >= 0, from erf as

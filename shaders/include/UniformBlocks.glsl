@@ -125,6 +125,26 @@ DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 
+// Separable SSS (Jimenez et al. 2015), one direction of one profile slot
+// (passes/SssSeparablePasses.cpp; the manual is include/SeparableSss.glsl).
+#if defined(__cplusplus) || defined(DERMIS_USE_SEPARABLE_SSS_BLOCK)
+DERMIS_BLOCK(SeparableSssBlock, DERMIS_BINDING_PASS) {
+    vec4 taps[DERMIS_MAX_SEPARABLE_SAMPLES];  // rgb: weight (per channel, each sums to 1), a: offset (mm, widthScale applied), ascending
+    vec4 step;   // xy: direction, (1,0) or (0,1); z: tap count; w: 1 = the vertical pass (the last: its output is the result)
+    vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+} DERMIS_BLOCK_END(uSeparableSss)
+#endif
+
+// The disk technique, one slot (passes/SssDiskPass.cpp; the manual is include/DiskSss.glsl).
+#if defined(__cplusplus) || defined(DERMIS_USE_DISK_SSS_BLOCK)
+DERMIS_BLOCK(DiskSssBlock, DERMIS_BINDING_PASS) {
+    vec4 samples[DERMIS_MAX_DISK_SAMPLES];  // xy: offset on the golden-angle spiral (mm, before the pixel's rotation); z: radius (mm); w: moments' scalar weight
+    vec4 weights[DERMIS_MAX_DISK_SAMPLES];  // rgb: weight (each channel sums to 1 over the samples); a: 0
+    vec4 params;  // x: sample count; y: profile slot; z: largest sample radius (mm); w: 0
+    vec4 edges;   // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: 0
+} DERMIS_BLOCK_END(uDiskSss)
+#endif
+
 // SSAO and its blur (passes/SsaoPass.cpp; the manual is shaders/ssao.frag).
 #if defined(__cplusplus) || defined(DERMIS_USE_SSAO_BLOCK)
 DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {

@@ -87,92 +87,9 @@ namespace {
 constexpr int kFlatEdgeWidth = 320;
 constexpr int kFlatEdgeHeight = 180;
 
-double edgeMmPerPixel() {
-    return 2.0 * test::kEdgeHeightM * 1000.0 * std::tan(test::kEdgeFovDeg * M_PI / 360.0) / kFlatEdgeHeight;
-}
-
-struct EdgeComparison {
-    double maxError = 0.0;      // largest |rendered - exact| of any channel, a fraction of that channel's step
-    double rms = 0.0;           // over the pixels within 3 widest sigmas of the step
-    glm::dvec3 widthScale{0.0};  // per channel: the profile width scale whose exact diffusion fits best
-    double irradianceOffStep = 0.0;  // largest departure of the irradiance row from a step, 2 px from it
-};
-
-// The exact diffusion of the rendered irradiance row: each texel a box, the
-// profile's marginal across the row sum_i w_i N(0, v_i s^2) (the row is
-// uniform in y, so the 2-D integral is this 1-D one), evaluated at the pixel
-// centres. An independent computation: it shares nothing with the shader.
-double exactDiffusion(const Image& irradiance, int row, int x, int c, double mmPerPixel, double widthScale) {
-    // Sum over texels j of I_j x (the marginal's mass over texel j), written as the left border
-    // texel plus each jump I_j - I_(j-1) times the mass beyond the boundary between them, so only
-    // the few texels where the row changes cost anything. The border texels stand for everything
-    // beyond the frame (the shader clamps its taps there).
-    double sum = irradiance.at(0, row)[c];
-    for (int j = 1; j < kFlatEdgeWidth; ++j) {
-        const double jump = double(irradiance.at(j, row)[c]) - double(irradiance.at(j - 1, row)[c]);
-        if (jump == 0.0) continue;
-        const double boundaryMm = (j - 0.5 - x) * mmPerPixel;
-        double beyond = 0.0;
-        for (const ProfileGaussian& g : skinProfile().gaussians()) {
-            const double sigma = std::sqrt(double(g.varianceMm2)) * widthScale;
-            beyond += g.weight[c] * 0.5 * std::erfc(boundaryMm / (sigma * M_SQRT2));
-        }
-        sum += jump * beyond;
-    }
-    return sum;
-}
-
-EdgeComparison compareEdge(const Image& irradiance, const Image& diffuse) {
-    const double mmPerPixel = edgeMmPerPixel();
-    const int row = kFlatEdgeHeight / 2;
-    const double reachMm = 3.0 * skinProfile().largestStdDevMm();
-    EdgeComparison e;
-    double sumSquares = 0.0;
-    int samples = 0;
-    for (int c = 0; c < 3; ++c) {
-        const double low = irradiance.at(0, row)[c];
-        const double high = irradiance.at(kFlatEdgeWidth - 1, row)[c];
-        const double step = high - low;
-        // Beyond the two texels either side of the step (which the albedo map's filtering mixes).
-        for (int x = 0; x < kFlatEdgeWidth; ++x) {
-            if (std::abs(x + 0.5 - kFlatEdgeWidth / 2.0) < 2.0) continue;
-            const double ideal = x < kFlatEdgeWidth / 2 ? low : high;
-            e.irradianceOffStep = std::max(e.irradianceOffStep, std::abs(irradiance.at(x, row)[c] - ideal) / step);
-        }
-        // Width-scale fit: the scale in [0.85, 1.15] (steps of 0.001) whose exact diffusion is
-        // nearest (least squares) to the rendered row, over the pixels the widest Gaussian reaches.
-        double bestScale = 0.0;
-        double bestCost = 1e300;
-        std::vector<int> pixels;
-        for (int x = 0; x < kFlatEdgeWidth; ++x) {
-            if (std::abs((x + 0.5 - kFlatEdgeWidth / 2.0) * mmPerPixel) < reachMm) pixels.push_back(x);
-        }
-        for (int k = -150; k <= 150; ++k) {
-            const double scale = 1.0 + 0.001 * k;
-            double cost = 0.0;
-            for (int x : pixels) {
-                const double d = diffuse.at(x, row)[c] - exactDiffusion(irradiance, row, x, c, mmPerPixel, scale);
-                cost += d * d;
-            }
-            if (cost < bestCost) {
-                bestCost = cost;
-                bestScale = scale;
-            }
-        }
-        e.widthScale[c] = bestScale;
-        for (int x = 0; x < kFlatEdgeWidth; ++x) {
-            const double error =
-                std::abs(diffuse.at(x, row)[c] - exactDiffusion(irradiance, row, x, c, mmPerPixel, 1.0)) / step;
-            e.maxError = std::max(e.maxError, error);
-            if (std::abs((x + 0.5 - kFlatEdgeWidth / 2.0) * mmPerPixel) < reachMm) {
-                sumSquares += error * error;
-                ++samples;
-            }
-        }
-    }
-    e.rms = std::sqrt(sumSquares / samples);
-    return e;
-}
+using test::compareEdge;
+using test::EdgeComparison;
+using test::printEdge;
 
 class SssEdge : public test::RenderFixture {
 protected:
@@ -217,12 +134,6 @@ bool edgeMatches(const EdgeComparison& e) {
     bool widths = true;
     for (int c = 0; c < 3; ++c) widths = widths && std::abs(e.widthScale[c] - 1.0) < kEdgeWidthTolerance;
     return e.maxError < kEdgeMaxError && widths;
-}
-
-void printEdge(const char* what, const EdgeComparison& e) {
-    std::printf("edge %-22s max error %.4f, RMS %.4f of the step; fitted width scale %.3f %.3f %.3f; "
-                "irradiance off its step by %.4f\n",
-                what, e.maxError, e.rms, e.widthScale.r, e.widthScale.g, e.widthScale.b, e.irradianceOffStep);
 }
 
 }  // namespace
@@ -354,33 +265,37 @@ TEST_F(SssSlab, ThicknessMatchesTheWedgeAndEveryChannelFollowsT) {
 TEST_F(Sss, PixelsOutsideTheSssMaskAreBitIdenticalAfterTheBlur) {
     // A skin head beside an opaque blue ball. With mix = 1 and no energy
     // conservation the diffuse AOV is the SSS accumulation itself.
-    const std::vector<std::string> overrides = {"characters.0.material.profile=skin", "sss.mix=1",
-                                                "energy_conservation=false", "transmittance.enabled=false"};
-    load("no_sss.json", overrides);
-    const Image irradiance = render(Aov::Irradiance, 320, 180);
-    const Image diffuse = render(Aov::Diffuse, 320, 180);
-    const Image albedo = render(Aov::Albedo, 320, 180);
-    const glm::vec3 ball = mScene->characters[1].material.albedo;
-    size_t outside = 0;
-    size_t inside = 0;
-    size_t changedInside = 0;
-    for (size_t i = 0; i < irradiance.texels.size(); ++i) {
-        const bool background = albedo.texels[i].a < 0.5f;
-        const bool isBall = !background && glm::length(glm::vec3(albedo.texels[i]) - ball) < 0.02f;
-        if (background || isBall) {
-            ++outside;
-            ASSERT_EQ(std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)), 0)
-                << "texel " << i << ": irradiance " << irradiance.texels[i].r << " " << irradiance.texels[i].g << " "
-                << irradiance.texels[i].b << ", diffuse " << diffuse.texels[i].r << " " << diffuse.texels[i].g << " "
-                << diffuse.texels[i].b;
-        } else {
-            ++inside;
-            if (std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)) != 0) ++changedInside;
+    // Every technique that overwrites or adds into the accumulation must keep to its slot's pixels.
+    for (const char* technique : {"gaussians", "separable"}) {
+        const std::vector<std::string> overrides = {"characters.0.material.profile=skin", "sss.mix=1",
+                                                    "energy_conservation=false", "transmittance.enabled=false",
+                                                    std::string("sss.technique=") + technique};
+        load("no_sss.json", overrides);
+        const Image irradiance = render(Aov::Irradiance, 320, 180);
+        const Image diffuse = render(Aov::Diffuse, 320, 180);
+        const Image albedo = render(Aov::Albedo, 320, 180);
+        const glm::vec3 ball = mScene->characters[1].material.albedo;
+        size_t outside = 0;
+        size_t inside = 0;
+        size_t changedInside = 0;
+        for (size_t i = 0; i < irradiance.texels.size(); ++i) {
+            const bool background = albedo.texels[i].a < 0.5f;
+            const bool isBall = !background && glm::length(glm::vec3(albedo.texels[i]) - ball) < 0.02f;
+            if (background || isBall) {
+                ++outside;
+                ASSERT_EQ(std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)), 0)
+                    << technique << ", texel " << i << ": irradiance " << irradiance.texels[i].r << " " << irradiance.texels[i].g << " "
+                    << irradiance.texels[i].b << ", diffuse " << diffuse.texels[i].r << " " << diffuse.texels[i].g << " "
+                    << diffuse.texels[i].b;
+            } else {
+                ++inside;
+                if (std::memcmp(&irradiance.texels[i], &diffuse.texels[i], 3 * sizeof(float)) != 0) ++changedInside;
+            }
         }
+        EXPECT_GT(outside, 1000u);
+        EXPECT_GT(inside, 1000u);
+        EXPECT_GT(changedInside, inside / 2) << technique << ": the blur should have changed the skin";
     }
-    EXPECT_GT(outside, 1000u);
-    EXPECT_GT(inside, 1000u);
-    EXPECT_GT(changedInside, inside / 2) << "the blur should have changed the skin";
 }
 
 TEST_F(Sss, NoSssSceneRunsNoSssPass) {

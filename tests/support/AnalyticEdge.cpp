@@ -1,5 +1,8 @@
 #include "AnalyticEdge.h"
 
+#include "Quadrature.h"
+
+#include "sss/BurleyProfile.h"
 #include "sss/DiffusionProfile.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace dermis::test {
 
@@ -39,6 +43,17 @@ std::string writeEdgeScene(const TempDir& dir, const std::string& profile, const
     return dir.file("edge.json");
 }
 
+double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals) {
+    if (xMm == 0.0) return 0.5;
+    const double a = std::fabs(xMm);
+    const double dMm = shapeDistanceMm;
+    const double dark = quadrature::simpson([&](double t) {
+        const double r = a * std::cosh(t);
+        return 2.0 * M_PI * r * burleyRadialProfile(r, dMm) * std::acos(1.0 / std::cosh(t)) / M_PI * a * std::sinh(t);
+    }, 0.0, std::acosh(std::fmax(200.0 * dMm / a, 1.0)), intervals);
+    return xMm < 0.0 ? dark : 1.0 - dark;
+}
+
 EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile) {
     const DiffusionProfile& skin = profile ? *profile : skinProfile();
     const double mmPerPixel = 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / height;
@@ -58,6 +73,99 @@ EdgeError edgeError(const Image& diffuse, int width, int height, const Diffusion
     }
     e.rms = std::sqrt(sumSquares / samples);
     return e;
+}
+
+namespace {
+
+double edgeMmPerPixel(int height) {
+    return 2.0 * kEdgeHeightM * 1000.0 * std::tan(kEdgeFovDeg * M_PI / 360.0) / height;
+}
+
+// The exact diffusion of the rendered irradiance row: each texel a box, the
+// profile's marginal across the row sum_i w_i N(0, v_i s^2) (the row is
+// uniform in y, so the 2-D integral is this 1-D one), evaluated at the pixel
+// centres. An independent computation: it shares nothing with the shader.
+double exactDiffusion(const Image& irradiance, const DiffusionProfile& profile, int row, int x, int c, double mmPerPixel,
+                      double widthScale) {
+    // Sum over texels j of I_j x (the marginal's mass over texel j), written as the left border
+    // texel plus each jump I_j - I_(j-1) times the mass beyond the boundary between them, so only
+    // the few texels where the row changes cost anything. The border texels stand for everything
+    // beyond the frame (the shader clamps its taps there).
+    double sum = irradiance.at(0, row)[c];
+    for (int j = 1; j < irradiance.width; ++j) {
+        const double jump = double(irradiance.at(j, row)[c]) - double(irradiance.at(j - 1, row)[c]);
+        if (jump == 0.0) continue;
+        const double boundaryMm = (j - 0.5 - x) * mmPerPixel;
+        double beyond = 0.0;
+        for (const ProfileGaussian& g : profile.gaussians()) {
+            const double sigma = std::sqrt(double(g.varianceMm2)) * widthScale;
+            beyond += g.weight[c] * 0.5 * std::erfc(boundaryMm / (sigma * M_SQRT2));
+        }
+        sum += jump * beyond;
+    }
+    return sum;
+}
+
+}  // namespace
+
+EdgeComparison compareEdge(const Image& irradiance, const Image& diffuse, const DiffusionProfile* profile) {
+    const DiffusionProfile& exact = profile ? *profile : skinProfile();
+    const int width = irradiance.width;
+    const double mmPerPixel = edgeMmPerPixel(irradiance.height);
+    const int row = irradiance.height / 2;
+    const double reachMm = 3.0 * exact.largestStdDevMm();
+    EdgeComparison e;
+    double sumSquares = 0.0;
+    int samples = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double low = irradiance.at(0, row)[c];
+        const double high = irradiance.at(width - 1, row)[c];
+        const double step = high - low;
+        // Beyond the two texels either side of the step (which the albedo map's filtering mixes).
+        for (int x = 0; x < width; ++x) {
+            if (std::abs(x + 0.5 - width / 2.0) < 2.0) continue;
+            const double ideal = x < width / 2 ? low : high;
+            e.irradianceOffStep = std::max(e.irradianceOffStep, std::abs(irradiance.at(x, row)[c] - ideal) / step);
+        }
+        // Width-scale fit: the scale in [0.85, 1.15] (steps of 0.001) whose exact diffusion is
+        // nearest (least squares) to the rendered row, over the pixels the widest Gaussian reaches.
+        double bestScale = 0.0;
+        double bestCost = 1e300;
+        std::vector<int> pixels;
+        for (int x = 0; x < width; ++x) {
+            if (std::abs((x + 0.5 - width / 2.0) * mmPerPixel) < reachMm) pixels.push_back(x);
+        }
+        for (int k = -150; k <= 150; ++k) {
+            const double scale = 1.0 + 0.001 * k;
+            double cost = 0.0;
+            for (int x : pixels) {
+                const double d = diffuse.at(x, row)[c] - exactDiffusion(irradiance, exact, row, x, c, mmPerPixel, scale);
+                cost += d * d;
+            }
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestScale = scale;
+            }
+        }
+        e.widthScale[c] = bestScale;
+        for (int x = 0; x < width; ++x) {
+            const double error =
+                std::abs(diffuse.at(x, row)[c] - exactDiffusion(irradiance, exact, row, x, c, mmPerPixel, 1.0)) / step;
+            e.maxError = std::max(e.maxError, error);
+            if (std::abs((x + 0.5 - width / 2.0) * mmPerPixel) < reachMm) {
+                sumSquares += error * error;
+                ++samples;
+            }
+        }
+    }
+    e.rms = std::sqrt(sumSquares / samples);
+    return e;
+}
+
+void printEdge(const char* what, const EdgeComparison& e) {
+    std::printf("edge %-22s max error %.4f, RMS %.4f of the step; fitted width scale %.3f %.3f %.3f; "
+                "irradiance off its step by %.4f\n",
+                what, e.maxError, e.rms, e.widthScale.r, e.widthScale.g, e.widthScale.b, e.irradianceOffStep);
 }
 
 }  // namespace dermis::test

@@ -10,6 +10,8 @@
 
 #include "core/Image.h"
 
+#include <glm/glm.hpp>
+
 #include <string>
 
 namespace dermis {
@@ -32,7 +34,27 @@ struct EdgeError {
     double rms = 0.0;
 };
 
+// Burley's normalized diffusion's edge response (docs/reference.md) at x mm for shape distance
+// d mm, by numerical integration: a point at distance a on the dark side receives the light of
+// each ring of radius r > a in proportion to the angle 2 acos(a / r) that lies in the lit half,
+// with r = a cosh(t), up to r = 200 d (Simpson, `intervals` even).
+double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals = 40000);
+
 // The diffuse AOV's middle row against the profile's edge response (skin when null).
 EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile = nullptr);
+
+// The diffuse AOV's middle row against the exact diffusion of the rendered
+// irradiance row (each texel a box, the profile's marginal across the row;
+// independent of any shader), for the edge scene at any size. Used by the
+// d'Eon chain's and Separable SSS's edge tests.
+struct EdgeComparison {
+    double maxError = 0.0;      // largest |rendered - exact| of any channel, a fraction of that channel's step
+    double rms = 0.0;           // over the pixels within 3 widest sigmas of the step
+    glm::dvec3 widthScale{0.0};  // per channel: the profile width scale in [0.85, 1.15] whose exact diffusion fits best
+    double irradianceOffStep = 0.0;  // largest departure of the irradiance row from a step, 2 px from it
+};
+EdgeComparison compareEdge(const Image& irradiance, const Image& diffuse, const DiffusionProfile* profile = nullptr);
+// One line: the comparison's figures, labelled `what`.
+void printEdge(const char* what, const EdgeComparison& e);
 
 }  // namespace dermis::test

@@ -1,6 +1,8 @@
 // The Separable SSS kernel (Jimenez et al. 2015) against the profile it is computed from.
 #include "sss/SeparableKernel.h"
 
+#include "sss/BurleyProfile.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -264,4 +266,49 @@ TEST(SeparableKernel, SkinRank1Error) {
         for (int ch = 0; ch < 3; ++ch) EXPECT_LT(misplaced[ch], misplacedBound[ch]) << samples << " samples, channel " << ch;
     }
     for (int ch = 0; ch < 3; ++ch) EXPECT_LT(skinL2[ch], l2Bound[ch]) << "channel " << ch;
+}
+
+// The renderer scales a slot's kernel by its width scale s by multiplying the offsets
+// (passes/SssSeparablePasses.cpp): the marginal of the profile with variances s^2 v_i is
+// K(x / s) / s, so its cell integrals over cells scaled by s are K's. Checked against the
+// kernel made from that scaled profile itself (range s times): offsets within 1e-6 relative,
+// weights within 1e-6. Broken on purpose by scaling the offsets by s^2 (the variance's factor):
+// at s = 1.3 the offsets are 30% off and this fails.
+TEST(SeparableKernel, WidthScaleIsTheKernelOfTheScaledProfile) {
+    for (float scale : {0.5f, 1.3f}) {
+        std::vector<ProfileGaussian> scaled = skinProfile().gaussians();
+        for (ProfileGaussian& g : scaled) g.varianceMm2 *= scale * scale;
+        Result<DiffusionProfile> wider = DiffusionProfile::create("scaled skin", scaled);
+        ASSERT_TRUE(wider.ok());
+        const SeparableKernel unit = kernelOf(skinProfile(), 17);
+        Result<SeparableKernel> direct = makeSeparableKernel(*wider, 17, scale * separableRangeMm(skinProfile()));
+        ASSERT_TRUE(direct.ok());
+        for (int i = 0; i < 17; ++i) {
+            const SeparableTap& expected = direct->taps[size_t(i)];
+            const float offsetMm = unit.taps[size_t(i)].offsetMm * scale;
+            EXPECT_NEAR(offsetMm, expected.offsetMm, 1e-6f * std::max(1.0f, std::abs(expected.offsetMm))) << "tap " << i;
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(unit.taps[size_t(i)].weight[c], expected.weight[c], 1e-6f) << "tap " << i << ", channel " << c;
+        }
+    }
+}
+
+// Any profile, not only skin: the cumulative weight up to each cell edge equals the closed-form
+// edge response sum_i w_i Phi(x / sqrt v_i) (DiffusionProfile::edgeResponse, which shares no code
+// with the kernel's erfc sum) for marble and a Burley-fitted profile, at 7, 17 and 33 samples.
+// Bound 1e-6 (float weights). Broken on purpose by ending the cells at the taps instead of the
+// midpoints between them: the error at the edges grows to ~0.1 and this fails.
+TEST(SeparableKernel, CumulativeWeightIsTheEdgeResponseForAnyProfile) {
+    BurleyParameters burley;
+    burley.albedo = glm::vec3(0.8f, 0.6f, 0.5f);
+    burley.scatteringDistanceMm = glm::vec3(3.67f, 1.37f, 0.68f);
+    Result<DiffusionProfile> fitted = fitBurleyGaussians(burley);
+    ASSERT_TRUE(fitted.ok()) << fitted.error().message();
+    for (const DiffusionProfile* profile : std::vector<const DiffusionProfile*>{&marbleProfile(), &*fitted}) {
+        for (int samples : {7, 17, 33}) {
+            const StepErrors errors = stepErrors(*profile, kernelOf(*profile, samples));
+            std::printf("%s, %d samples: cumulative weight against edgeResponse at the cell edges (%.2g, %.2g, %.2g)\n",
+                        profile->name().c_str(), samples, errors.atCellEdges.r, errors.atCellEdges.g, errors.atCellEdges.b);
+            for (int c = 0; c < 3; ++c) EXPECT_LT(errors.atCellEdges[c], 1e-6) << profile->name() << ", " << samples << " samples, channel " << c;
+        }
+    }
 }

@@ -6,6 +6,7 @@
 #include "EnvironmentBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "QualityBenchmarks.h"
+#include "TechniqueBenchmarks.h"
 #include "TsBenchmarks.h"
 
 #include "core/Log.h"
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     dermis::bench::printCrowdSummary();
     dermis::bench::printAnimatedCrowdSummary();
     dermis::bench::printEnvironmentSummary();
+    dermis::bench::printTechniqueSummary();
     dermis::bench::printQualitySummary();
     return 0;
 }

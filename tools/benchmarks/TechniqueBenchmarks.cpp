@@ -1,0 +1,168 @@
+// The screen-space SSS techniques side by side (docs/screen-space.md,
+// "Techniques compared"): the default head at 640x360 and 1280x720 with the
+// shipped d'Eon chain, Separable SSS and the disk at several sample counts.
+// The renderers take turns within each iteration, so that a slow spell of the
+// shared machine hits them all alike; each figure is the median over the
+// iterations of the SSS passes' GPU ms (sss init and every technique pass;
+// llvmpipe: CPU time). Each case's loss is the relative RMSE of its diffuse
+// AOV over SSS pixels against the finest setting (the d'Eon chain with every
+// Gaussian at 33 taps, no Gaussian skipped): what the cheaper technique gives
+// up. The error against the CPU reference comes from `dermis bench`
+// (docs/bench.md), which sweeps the same settings.
+#include "BenchContext.h"
+#include "TechniqueBenchmarks.h"
+
+#include "core/ImageMetrics.h"
+#include "render/FrameTimings.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dermis::bench {
+namespace {
+
+const int kSizes[][2] = {{640, 360}, {1280, 720}};
+
+struct TechniqueCase {
+    std::string label;  // "separable 17"
+    SssSettings sss;
+};
+
+std::vector<TechniqueCase> techniqueCases(const SssSettings& shipped) {
+    std::vector<TechniqueCase> cases{{"gaussians (default)", shipped}};
+    for (int samples : {7, 11, 17, 25}) {
+        SssSettings s = shipped;
+        s.technique = SssTechnique::Separable;
+        s.separableSamples = samples;
+        cases.push_back({"separable " + std::to_string(samples), s});
+    }
+    for (int samples : {8, 16, 32, 64}) {
+        SssSettings s = shipped;
+        s.technique = SssTechnique::Disk;
+        s.diskSamples = samples;
+        cases.push_back({"disk " + std::to_string(samples), s});
+    }
+    return cases;
+}
+
+SssSettings finestSettings(SssSettings s) {
+    s.technique = SssTechnique::Gaussians;
+    s.taps = kMaxBlurTaps;
+    s.gaussians = kMaxProfileGaussians;
+    s.minWidthPx = 0.0f;
+    return s;
+}
+
+std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+struct Rendered {
+    Image diffuse;
+    std::vector<uint8_t> sssMask;
+};
+
+Result<Rendered> renderDiffuse(Renderer& renderer, int width, int height) {
+    Rendered out;
+    if (Status s = renderer.renderFrame({width, height, Aov::Albedo}); !s.ok()) return s.error();
+    auto albedo = renderer.readOutput();
+    if (!albedo.ok()) return albedo.error();
+    for (const glm::vec4& t : albedo->texels) out.sssMask.push_back(t.a > 0.5f ? 1 : 0);
+    if (Status s = renderer.renderFrame({width, height, Aov::Diffuse}); !s.ok()) return s.error();
+    auto diffuse = renderer.readOutput();
+    if (!diffuse.ok()) return diffuse.error();
+    out.diffuse = std::move(*diffuse);
+    return out;
+}
+
+struct TimedCase {
+    std::string key;  // "technique/<size>/<label>"
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<Renderer> renderer;
+    std::vector<double> sssMs;
+};
+
+void sssTechniques(benchmark::State& state) {
+    context();
+    const int width = kSizes[state.range(0)][0];
+    const int height = kSizes[state.range(0)][1];
+    const std::string size = sizeName(width, height);
+    const Scene& base = contentScene("default.json");
+
+    Scene finestScene = base;
+    finestScene.settings.sss = finestSettings(base.settings.sss);
+    auto finest = Renderer::create(finestScene);
+    if (!finest.ok()) {
+        state.SkipWithError(finest.error().message().c_str());
+        return;
+    }
+    auto finestImage = renderDiffuse(**finest, width, height);
+    if (!finestImage.ok()) {
+        state.SkipWithError(finestImage.error().message().c_str());
+        return;
+    }
+
+    std::vector<TimedCase> cases;
+    for (const TechniqueCase& t : techniqueCases(base.settings.sss)) {
+        TimedCase c;
+        c.key = "technique/" + size + "/" + t.label;
+        c.scene = std::make_unique<Scene>(base);
+        c.scene->settings.sss = t.sss;
+        auto renderer = Renderer::create(*c.scene);
+        if (!renderer.ok()) {
+            state.SkipWithError(renderer.error().message().c_str());
+            return;
+        }
+        c.renderer = std::move(*renderer);
+        auto image = renderDiffuse(*c.renderer, width, height);
+        if (!image.ok()) {
+            state.SkipWithError(image.error().message().c_str());
+            return;
+        }
+        auto loss = compareImages(finestImage->diffuse, image->diffuse, finestImage->sssMask);
+        recorded()[c.key + "/loss"] = loss.ok() ? loss->relativeRmse : -1.0;
+        (void)renderAndTime(*c.renderer, width, height, "sss ");  // warm-up of the final output
+        cases.push_back(std::move(c));
+    }
+    for (auto _ : state) {
+        double total = 0.0;
+        for (TimedCase& c : cases) {
+            const double ms = renderAndTime(*c.renderer, width, height, "sss ");
+            c.sssMs.push_back(ms);
+            total += ms;
+        }
+        state.SetIterationTime(total * 1e-3);
+    }
+    for (TimedCase& c : cases) recorded()[c.key] = median(c.sssMs);
+    state.SetLabel(size);
+}
+
+}  // namespace
+
+void printTechniqueSummary() {
+    const auto& r = recorded();
+    const std::vector<TechniqueCase> cases = techniqueCases(SssSettings{});
+    for (const auto& dims : kSizes) {
+        const std::string size = sizeName(dims[0], dims[1]);
+        const std::string prefix = "technique/" + size + "/";
+        const auto base = r.find(prefix + cases[0].label);
+        if (base == r.end() || base->second <= 0.0) continue;
+        std::printf("\nScreen-space SSS techniques, default head, %s (median GPU ms of the SSS passes, renderers\n"
+                    "interleaved; ratio against the shipped d'Eon chain; loss = relative RMSE of the diffuse over\n"
+                    "SSS pixels against the finest d'Eon chain):\n",
+                    size.c_str());
+        std::printf("| technique | SSS ms | ratio | loss %% |\n| --- | ---: | ---: | ---: |\n");
+        for (const TechniqueCase& c : cases) {
+            const auto ms = r.find(prefix + c.label);
+            if (ms == r.end()) continue;
+            std::printf("| %s | %.2f | %.3f | %.2f |\n", c.label.c_str(), ms->second, ms->second / base->second,
+                        100.0 * r.at(prefix + c.label + "/loss"));
+        }
+    }
+}
+
+BENCHMARK(sssTechniques)->DenseRange(0, 1)->UseManualTime()->Iterations(5)->Unit(benchmark::kMillisecond);
+
+}  // namespace dermis::bench
