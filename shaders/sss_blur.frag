@@ -9,9 +9,9 @@
 layout(binding = 0) uniform SSS_CHAIN_SAMPLER uChain;
 layout(binding = 1) uniform usampler2D uDepthKey;
 
-#if SSS_EXTRA_TARGETS > 0
+#if SSS_PACKED_OUT > 0
 layout(location = 0) out uvec4 oBlurred;  // the packed chain: colour and moments
-#else
+#else  // the colour alone (also the last step that carries the moments: SssBlur.glsl, WHERE THE MOMENTS STOP)
 layout(location = 0) out vec4 oBlurred;
 #endif
 // Blended: rgb += constant colour (w_i) x value, a += constant alpha x value.
@@ -27,6 +27,8 @@ void main() {
 #if SSS_EXTRA_TARGETS > 0
     vec4 extra = sssSanitizeSigned(blurred.v[1]);
     oExtraAccumulate = extra;
+#endif
+#if SSS_PACKED_OUT > 0
     oBlurred = sssPack(colour, extra);
 #else
     oBlurred = colour;

@@ -46,7 +46,12 @@ struct BlurStep {
     const SssSlotPlan* slot = nullptr;
     SssGaussianStep step;
     bool horizontal = true;
-    bool packed = false;    // the chain packs irradiance and LEAN moments (SssBlur.glsl, "PACKING")
+    bool packed = false;     // reads the chain of irradiance and LEAN moments (SssBlur.glsl, "PACKING")
+    bool packedOut = false;  // writes it: false in the last step that carries the moments
+    // The moments' (and the colour alpha's) accumulation weight of a vertical pass:
+    // the step's own, the rest of the chain's in the last step that carries the
+    // moments, 0 after it (SssBlur.glsl, "WHERE THE MOMENTS STOP").
+    float momentWeight = 0.0f;
     std::string skipReason;
 };
 
@@ -70,18 +75,20 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
             d.out = builder.create(passName, chainDesc);
             d.accumulatedOut = builder.write(chain.diffuse);
             builder.passThrough(d.out, previous);
+            if (!blur.packed) return;
             for (graph::TextureHandle accumulated : chain.extras) {
                 d.extrasAccumulatedIn.push_back(builder.read(accumulated));
                 d.extrasAccumulatedOut.push_back(builder.write(accumulated));
             }
         },
         [frame, step = blur.step, slot = blur.slot->slot, kernel = blur.slot->gaussianKernel, scissor = blur.slot->scissor, regions = blur.slot->regions,
-         horizontal = blur.horizontal, packed = blur.packed](const graph::PassResources& resources, const BlurData& d) {
+         horizontal = blur.horizontal, packed = blur.packed, packedOut = blur.packedOut,
+         momentWeight = blur.momentWeight](const graph::PassResources& resources, const BlurData& d) {
             std::vector<graph::TextureHandle> targets = {d.out, d.accumulatedOut};
             targets.insert(targets.end(), d.extrasAccumulatedOut.begin(), d.extrasAccumulatedOut.end());
             const Programs& programs = *frame.gl->programs;
-            beginFullscreenPass(frame, resources, {targets, d.stencil},
-                                packed ? programs.sssBlurLean.get() : programs.sssBlur.get(), {d.colour, d.depthKey});
+            const gl::Program& program = !packed ? programs.sssBlur : packedOut ? programs.sssBlurLean : programs.sssBlurLeanLast;
+            beginFullscreenPass(frame, resources, {targets, d.stencil}, program.get(), {d.colour, d.depthKey});
             const gpu::SssBlurBlock block = blurBlock(frame, kernel, step, slot, horizontal);
             frame.gl->uploadPassBlock(&block, sizeof block);
             const ScopedSssState state(frame, scissor, slot);
@@ -96,7 +103,7 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
                 glEnablei(GL_BLEND, static_cast<GLuint>(2 + k));
                 glBlendFunci(static_cast<GLuint>(2 + k), GL_CONSTANT_ALPHA, GL_ONE);
             }
-            glBlendColor(step.weight.r, step.weight.g, step.weight.b, sssMomentWeight(step.weight));
+            glBlendColor(step.weight.r, step.weight.g, step.weight.b, momentWeight);
             frame.gl->drawRegions(regions);
             for (size_t k = 0; k <= d.extrasAccumulatedOut.size(); ++k) glDisablei(GL_BLEND, static_cast<GLuint>(1 + k));
         });
@@ -194,29 +201,39 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                              const SssStart& start, SssChain chain, SssTechnique technique) {
     const graph::TextureHandle chainStart = start.chain;
-    const bool packed = start.packed;
-    const graph::TextureDesc chainDesc = start.chainDesc;
+    // Past the moments' last step the chain is the colour alone, as without LEAN.
+    const graph::TextureDesc plainDesc{start.chainDesc.width, start.chainDesc.height, graph::TextureFormat::Rgba16F};
 
     for (const SssSlotPlan& slot : frame.plan.sss.slots) {
         if (slot.choice.technique != technique) continue;
+        const SssMomentCut cut = sssMomentCut(slot.steps, frame.plan.scene->settings.sss.leanMomentWidthMm);
         graph::TextureHandle current = chainStart;
-        for (const SssGaussianStep& step : slot.steps) {
+        for (size_t i = 0; i < slot.steps.size(); ++i) {
+            const SssGaussianStep& step = slot.steps[i];
             BlurStep blur;
             blur.name = "sss " + slot.profile->name() + " g" + std::to_string(step.gaussian);
             blur.slot = &slot;
             blur.step = step;
-            blur.packed = packed;
+            blur.packed = start.packed && i <= cut.lastStep;
+            blur.packedOut = blur.packed;  // the horizontal pass hands the vertical one the moments
+            blur.momentWeight = !start.packed        ? sssMomentWeight(step.weight)
+                                : i < cut.lastStep   ? sssMomentWeight(step.weight)
+                                : i == cut.lastStep ? cut.weight
+                                                     : 0.0f;
             char why[96];
             std::snprintf(why, sizeof why, slot.visible ? "%.2f px wide at the nearest SSS pixel (< %g px)"
                                                         : "no pixel of this profile on screen",
                           double(step.widthPxAtNearest), double(frame.plan.scene->settings.sss.minWidthPx));
             blur.skipReason = why;
-            const BlurData& horizontal = addBlurPass(graph, frame, gbuffer, blur, current, {}, chain, chainDesc);
+            const BlurData& horizontal = addBlurPass(graph, frame, gbuffer, blur, current, {}, chain,
+                                                     blur.packed ? start.chainDesc : plainDesc);
             blur.horizontal = false;
-            const BlurData& vertical = addBlurPass(graph, frame, gbuffer, blur, horizontal.out, current, chain, chainDesc);
+            blur.packedOut = blur.packed && i < cut.lastStep;
+            const BlurData& vertical = addBlurPass(graph, frame, gbuffer, blur, horizontal.out, current, chain,
+                                                   blur.packedOut ? start.chainDesc : plainDesc);
             current = vertical.out;
             chain.diffuse = vertical.accumulatedOut;
-            chain.extras = vertical.extrasAccumulatedOut;
+            if (blur.packed) chain.extras = vertical.extrasAccumulatedOut;
         }
     }
     return chain;

@@ -94,6 +94,12 @@ Result<Programs> Programs::build() {
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
     }
+    std::vector<gl::ShaderDefine> leanLast = defines;
+    leanLast.push_back({"SSS_EXTRA_TARGETS", leanTargets});
+    leanLast.push_back({"SSS_PACKED_OUT", "0"});
+    auto sssBlurLeanLast = gl::buildProgram({"fullscreen.vert", "sss_blur.frag", leanLast, {}});
+    if (!sssBlurLeanLast.ok()) return sssBlurLeanLast.error();
+    programs.sssBlurLeanLast = std::move(*sssBlurLeanLast);
     std::vector<gl::ShaderDefine> leanTransfer = defines;
     leanTransfer.push_back({"GBUFFER_LEAN", "1"});
     leanTransfer.push_back({"GBUFFER_TRANSFER", "5"});  // after the LEAN targets 3 and 4

@@ -40,6 +40,7 @@ struct Programs {
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
     gl::Program sssDiskLean;
+    gl::Program sssBlurLeanLast;  // the last step that carries the moments: writes the colour alone (SssBlur.glsl)
     gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
     gl::Program compositeLean;  // composite with the LEAN specular
     // Environment light (docs/environment.md): the G-buffers with the

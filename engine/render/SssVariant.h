@@ -10,12 +10,14 @@
 // SssSettings::blur names the edge handling when it is not SssBlur::Variant
 // (a benchmark's fetch-only floor, or a mix the thesis did not try).
 
+#include "render/SssPlan.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace dermis {
 
@@ -39,5 +41,18 @@ SssBlur sssBlurEdges(const SssSettings& settings);
 // every moment channel keeps B and M from the same mixture, and the lobe is
 // white, so no channel is preferred.
 float sssMomentWeight(const glm::vec3& rgb);
+
+// The steps of a slot's d'Eon chain that carry the LEAN moments
+// (shaders/include/SssBlur.glsl, WHERE THE MOMENTS STOP): those whose
+// Gaussian's width, sqrt of its accumulated variance (widthScale applied), is
+// at most `maxWidthMm`, and always the first step that blurs; every step when
+// maxWidthMm <= 0. Steps [0, lastStep] carry them; the moments' accumulation
+// in lastStep takes `weight`, its own scalar weight plus every later step's,
+// so the weights still sum to one.
+struct SssMomentCut {
+    size_t lastStep = 0;
+    float weight = 0.0f;
+};
+SssMomentCut sssMomentCut(const std::vector<SssGaussianStep>& steps, float maxWidthMm);
 
 }  // namespace dermis

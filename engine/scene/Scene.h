@@ -157,6 +157,7 @@ struct SssSettings {
     float widthScale = 1.0f;             // multiplies every profile's widths (1 = physical)
     float minWidthPx = 0.5f;             // skip a Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel
     float mix = 0.5f;                    // pre-/post-scatter albedo mix (Chappuis 2011 §2.2.4): albedo^mix before the blur
+    float leanMomentWidthMm = 0.6f;      // lcb/lbb: LEAN moments ride through the Gaussians up to this std dev (0 = all; render/SssVariant.h)
 };
 
 // Back-normal transmittance through thin regions (Papanikolaou 2013 §4.3, Jimenez 2010).

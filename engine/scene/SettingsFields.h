@@ -55,6 +55,7 @@ void visitSssFields(S& s, V& v) {
     v.number("width_scale", s.widthScale, Range::atLeast(0.0));
     v.number("min_width_px", s.minWidthPx, Range::atLeast(0.0));
     v.number("mix", s.mix, Range::closed(0.0, 1.0));
+    v.number("lean_moment_width_mm", s.leanMomentWidthMm, Range::atLeast(0.0));
 }
 
 template <typename S, typename V>

@@ -99,11 +99,30 @@
 //     exactly sigma_px^2 (a few fixed-point steps; the variance grows by
 //     about as much as sigma'^2 does).
 //
+// WHERE THE MOMENTS STOP (SSS_PACKED_OUT = 0; engine/render/SssVariant.h)
+//   The moments need not ride through every Gaussian: the wide ones blur the
+//   irradiance over millimetres, but change the specular little (the LEAN
+//   lobe's detail is sub-pixel, and the view-plane slopes of a face vary
+//   slowly), while each packed step costs about a third more than a plain
+//   one on llvmpipe. So the moments ride only through the steps up to a
+//   cut-off; the last of them is drawn with SSS_PACKED_OUT = 0: it still
+//   reads the packed chain and accumulates the moments, but writes the
+//   colour alone (location 0 a vec4), and the steps after it run the plain
+//   program. The moments' accumulation is finished in that last step: its
+//   scalar weight is its own plus that of every later Gaussian (the blend
+//   colour's alpha), and the later steps blend alpha with 0, so the cross
+//   moment in the colour's alpha stops with the others. The result is still
+//   one convex combination of moments (every blurred moment image is one, and
+//   the weights still sum to one), the argument of EXTRA TARGETS AND ALPHA.
+//
 // CONFIGURATION (define before including)
 //   SSS_EXTRA_TARGETS  0 (default) or 1: one extra RGBA target (the LEAN
 //                      moments) blurred with the same taps; the chain is then
 //                      packed (PACKING above) and SSS_CHAIN_SAMPLER is a
 //                      usampler2D.
+//   SSS_PACKED_OUT     with SSS_EXTRA_TARGETS = 1 only: 1 (default) writes the
+//                      packed chain, 0 writes the colour alone (WHERE THE
+//                      MOMENTS STOP). Read by sss_blur.frag.
 #ifndef DERMIS_SSS_BLUR_GLSL
 #define DERMIS_SSS_BLUR_GLSL
 
@@ -114,6 +133,13 @@
 #endif
 #if SSS_EXTRA_TARGETS < 0 || SSS_EXTRA_TARGETS > 1
 #error "SSS_EXTRA_TARGETS must be 0 or 1"
+#endif
+
+#ifndef SSS_PACKED_OUT
+#define SSS_PACKED_OUT SSS_EXTRA_TARGETS
+#endif
+#if SSS_PACKED_OUT < 0 || SSS_PACKED_OUT > SSS_EXTRA_TARGETS
+#error "SSS_PACKED_OUT must be 0 or 1, and 1 only with SSS_EXTRA_TARGETS = 1"
 #endif
 
 #define SSS_VALUES (1 + SSS_EXTRA_TARGETS)

@@ -53,7 +53,7 @@ constexpr const char* kFullScene = R"({
                "shadow": {"map_size": 2048, "bias_constant_m": 0.001, "bias_slope_texels": 1.5, "filter": "poisson"},
                "sss": {"enabled": false, "variant": "lcb", "blur": "control", "taps": 13, "bilateral_depth_mm": 2.5,
                        "control_depth_scale_per_mm": 0.75, "gaussians": 4, "width_scale": 1.25, "min_width_px": 0.25,
-                       "mix": 0.3},
+                       "mix": 0.3, "lean_moment_width_mm": 1.5},
                "transmittance": {"enabled": false, "shrink_mm": 0.5, "strength": 2},
                "ssao": {"enabled": false, "samples": 32, "radius_m": 0.05, "strength": 0.8, "blur": false},
                "mode": "ts",
@@ -325,6 +325,7 @@ TEST(SceneLoader, FullSceneSetsEverySettingAwayFromItsDefault) {
     EXPECT_NE(s.sss.widthScale, d.sss.widthScale);
     EXPECT_NE(s.sss.minWidthPx, d.sss.minWidthPx);
     EXPECT_NE(s.sss.mix, d.sss.mix);
+    EXPECT_NE(s.sss.leanMomentWidthMm, d.sss.leanMomentWidthMm);
     EXPECT_NE(s.transmittance.enabled, d.transmittance.enabled);
     EXPECT_NE(s.transmittance.shrinkMm, d.transmittance.shrinkMm);
     EXPECT_NE(s.transmittance.strength, d.transmittance.strength);
@@ -773,6 +774,7 @@ TEST(SceneLoader, OutOfRangeSettingsAreRejected) {
     EXPECT_EQ(settingsError("sss", R"("width_scale": -0.5)"), "/settings/sss/width_scale: must be >= 0, got -0.5");
     EXPECT_EQ(settingsError("sss", R"("min_width_px": -1)"), "/settings/sss/min_width_px: must be >= 0, got -1");
     EXPECT_EQ(settingsError("sss", R"("mix": 1.5)"), "/settings/sss/mix: must be in [0, 1], got 1.5");
+    EXPECT_EQ(settingsError("sss", R"("lean_moment_width_mm": -1)"), "/settings/sss/lean_moment_width_mm: must be >= 0, got -1");
     EXPECT_EQ(settingsError("sss", R"("mix": -0.1)"), "/settings/sss/mix: must be in [0, 1], got -0.1");
     EXPECT_EQ(settingsError("transmittance", R"("shrink_mm": -1)"),
               "/settings/transmittance/shrink_mm: must be >= 0, got -1");
@@ -809,7 +811,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"width": 1}}})"),
               "/settings/sss/width: unknown key \"width\" (known: enabled, variant, blur, technique, separable_samples, disk_samples, taps, "
               "bilateral_depth_mm, "
-              "control_depth_scale_per_mm, gaussians, width_scale, min_width_px and mix)");
+              "control_depth_scale_per_mm, gaussians, width_scale, min_width_px, mix and lean_moment_width_mm)");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius": 1})")),
               "/characters/0/ssao/radius: unknown key \"radius\" (known: radius_m and samples)");
     // The flat shadow keys of the first format are gone.

@@ -3,7 +3,7 @@
 
 namespace dermis::bench {
 
-// Prints the LBB / C and LCB / C frame ratios and the per-pass table (after the run).
+// Prints the LCB, LBB and full-moment LBB frames over the C frame, and the per-pass table (after the run).
 void printLeanSummary();
 
 }  // namespace dermis::bench
