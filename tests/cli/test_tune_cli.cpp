@@ -69,6 +69,7 @@ TEST(TuneCli, BadInputFailsClearlyAndWritesNothing) {
         {kScene + " --budget 1% --out " + out + " --size 0x10", 2, "0x10"},
         {kScene + " --budget 1% --out " + out + " --distances 1,-2", 2, "--distances"},
         {kScene + " --budget 1% --out " + dir.file("table.txt"), 2, ".json"},
+        {kScene + " --budget 1% --out " + out + " --margin 1.5", 2, "--margin"},
         {dir.file("nothing.json") + " --budget 1% --out " + out, 1, "nothing.json"},
         {kScene + " --out " + out, 2, "--budget B is required"},
     };

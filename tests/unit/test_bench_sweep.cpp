@@ -192,4 +192,10 @@ TEST(BenchSweep, TechniqueSweepMeasuresEachDistinctRenderOnce) {
     }
     EXPECT_EQ(found, (std::vector<std::string>{"gaussians 17 40 default", "separable 7 40", "separable 17 40",
                                                "disk 17 16", "disk 17 64"}));
+    // Labels name only what the technique reads.
+    std::vector<std::string> shown;
+    for (const PlannedConfig& p : *planned) shown.push_back(p.sweep.label);
+    EXPECT_EQ(shown, (std::vector<std::string>{"default", "technique=separable separable_samples=7",
+                                               "technique=separable separable_samples=17",
+                                               "technique=disk disk_samples=16", "technique=disk disk_samples=64"}));
 }

@@ -564,9 +564,10 @@ TEST(SceneWriter, WritesSettingsAsNestedGroups) {
     EXPECT_NE(text.find("\"energy_conservation\": true,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"shadow\": {\n      \"map_size\": 1024,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"filter\": \"pcss\""), std::string::npos) << text;
-    EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"variant\": \"lbb\",\n      \"blur\": \"variant\",\n      \"taps\": 9,"),
+    EXPECT_NE(text.find("\"sss\": {\n      \"enabled\": true,\n      \"variant\": \"lbb\",\n      \"blur\": \"variant\",\n      \"technique\": \"gaussians\","),
               std::string::npos)
         << text;
+    EXPECT_NE(text.find("\"quality\": {\n      \"error_budget\": 0.0,\n      \"table\": \"\""), std::string::npos) << text;
     EXPECT_NE(text.find("\"transmittance\": {"), std::string::npos) << text;
     EXPECT_NE(text.find("\"ssao\": {\n      \"enabled\": true,\n      \"samples\": 16,"), std::string::npos) << text;
     EXPECT_EQ(text.find("shadow_map_size"), std::string::npos) << text;

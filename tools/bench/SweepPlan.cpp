@@ -2,9 +2,36 @@
 
 #include "scene/SceneLoader.h"
 
+#include <algorithm>
 #include <map>
 
 namespace dermis::bench {
+namespace {
+
+// The label without the swept SSS sample settings that the configuration's
+// screen-space technique does not read ("technique=disk separable_samples=7
+// disk_samples=16" -> "technique=disk disk_samples=16"): they were reset.
+std::string canonicalLabel(const std::string& label, const Scene& scene) {
+    if (scene.settings.mode != SssMode::ScreenSpace) return label;
+    const SssTechnique technique = scene.settings.sss.technique;
+    const std::vector<std::pair<std::string, SssTechnique>> owners = {{"taps=", SssTechnique::Gaussians},
+                                                                      {"gaussians=", SssTechnique::Gaussians},
+                                                                      {"separable_samples=", SssTechnique::Separable},
+                                                                      {"disk_samples=", SssTechnique::Disk}};
+    std::string out;
+    size_t start = 0;
+    while (start <= label.size()) {
+        const size_t end = std::min(label.find(' ', start), label.size());
+        const std::string token = label.substr(start, end - start);
+        bool reset = false;
+        for (const auto& [prefix, owner] : owners) reset = reset || (token.rfind(prefix, 0) == 0 && owner != technique);
+        if (!token.empty() && !reset) out += (out.empty() ? "" : " ") + token;
+        start = end + 1;
+    }
+    return out;
+}
+
+}  // namespace
 
 Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, const std::vector<std::string>& base,
                                                const std::vector<SweepConfig>& sweep) {
@@ -26,6 +53,7 @@ Result<std::vector<PlannedConfig>> planConfigs(const std::string& scenePath, con
         }
         seen[identity] = planned.size();
         planned.push_back({config, std::move(*scene), isDefault});
+        planned.back().sweep.label = canonicalLabel(config.label, planned.back().scene);
         if (isDefault) planned.back().sweep.label = "default";
         return success();
     };

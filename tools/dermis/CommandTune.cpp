@@ -23,6 +23,11 @@ namespace dermis::cli {
 namespace {
 
 constexpr int kFirstWarmUpFrames = 3;
+// A choice qualifies when its loss is within this fraction of the budget: the
+// loss depends on the content as well as the scale, and on
+// content/scenes/crowd8_mixed.json at 640x360 a table tuned at the full
+// budget on default.json lost 1.02% (docs/quality.md).
+constexpr const char* kDefaultMargin = "0.8";
 constexpr size_t kMaxDistances = 16;
 constexpr double kMaxDistanceFactor = 1000.0;
 // Every measurement is of the screen-space chain, with the scene's own budget
@@ -39,7 +44,7 @@ const char* const kHelp =
     "measured: the median GPU ms of its SSS passes over N frames, and its LOSS, the\n"
     "relative RMSE of the diffuse AOV over SSS pixels against the finest setting\n"
     "(FINEST, min_width_px 0) at the same view. The cheapest candidate whose loss is\n"
-    "within the budget becomes that scale's row; the finest when none is.\n"
+    "within the margin x the budget becomes that scale's row; the finest when none is.\n"
     "Candidates:\n"
     "CANDIDATES"
     "Writes FILE (the quality table JSON a scene's settings.quality.table names) and\n"
@@ -52,6 +57,8 @@ const char* const kHelp =
     "  --size WxH         the frame size (default 640x360)\n"
     "  --distances LIST   distance factors, comma-separated, each > 0 (default 1,2,4,8)\n"
     "  --frames N         timed frames per measurement, after one warm-up (default 3)\n"
+    "  --margin M         a candidate qualifies when its loss <= M x the budget, M in (0, 1]\n"
+    "                     (default 0.8: the loss on other scenes differs from the tuned one's)\n"
     "  --set PATH=VALUE   override a scene value for every measurement; repeatable\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --quiet            no progress\n"
@@ -109,7 +116,7 @@ std::string markdownPath(const std::string& jsonPath) {
 }  // namespace
 
 int runTune(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"budget", "out", "size", "distances", "frames", "set", "backend"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"budget", "out", "size", "distances", "frames", "margin", "set", "backend"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::string help = kHelp;
@@ -132,6 +139,8 @@ int runTune(const std::vector<std::string>& rawArgs) {
     if (!distances.ok()) return usageError(distances.error());
     auto frames = parsePositiveInt("--frames", args->get("frames", "3"));
     if (!frames.ok()) return usageError(frames.error());
+    auto margin = parseFloatIn("--margin", args->get("margin", kDefaultMargin), 1e-6, 1.0);
+    if (!margin.ok()) return usageError(margin.error());
     auto backend = parseBackend(args->get("backend", "auto"));
     if (!backend.ok()) return usageError(backend.error());
     const std::string outPath = args->get("out", "");
@@ -151,7 +160,7 @@ int runTune(const std::vector<std::string>& rawArgs) {
     const SssSettings sss = session->scene->settings.sss;
     const std::vector<SssChoice>& candidates = bench::tuneCandidates();
     const size_t total = distances->size() * (candidates.size() + 1);
-    log::info("tune: " + scenePath + " at " + std::to_string(width) + "x" + std::to_string(height) + ", " +
+    log::info("tune: margin " + formatNumberForMessage(*margin) + " x budget; " + scenePath + " at " + std::to_string(width) + "x" + std::to_string(height) + ", " +
               std::to_string(distances->size()) + " distances x " + std::to_string(candidates.size() + 1) +
               " choices, " + std::to_string(*frames) + " frames each");
 
@@ -199,11 +208,11 @@ int runTune(const std::vector<std::string>& rawArgs) {
                 std::printf("[%zu/%zu] distance %g: %.3g px/mm, %-35s SSS %8.3f ms  frame %8.3f ms  loss %6.3f%%%s\n",
                             done, total, distance, pixelsPerMm, describeSssChoice(choice).c_str(),
                             measured.back().sssMs, measured.back().frameMs, 100.0 * measured.back().loss,
-                            measured.back().loss <= *budget ? "" : "  (over budget)");
+                            measured.back().loss <= *margin * *budget ? "" : "  (over margin x budget)");
                 std::fflush(stdout);
             }
         }
-        table.rows.push_back(bench::cheapestWithin(pixelsPerMm, measured, *budget, finestSssMs));
+        table.rows.push_back(bench::cheapestWithin(pixelsPerMm, measured, *margin * *budget, finestSssMs));
     }
     std::sort(table.rows.begin(), table.rows.end(),
               [](const QualityRow& a, const QualityRow& b) { return a.pixelsPerMm < b.pixelsPerMm; });
@@ -217,7 +226,10 @@ int runTune(const std::vector<std::string>& rawArgs) {
     // Written, then read back as a scene would, so a table tune writes always loads.
     const std::string json = qualityTableJson(table);
     if (auto check = parseQualityTable(json, outPath); !check.ok()) return failure(check.error());
-    const std::string markdown = bench::qualityTableMarkdown(table);
+    char marginLine[160];
+    std::snprintf(marginLine, sizeof marginLine, "\nA candidate qualified when its loss was at most %.3g x the budget (--margin).\n",
+                  double(*margin));
+    const std::string markdown = bench::qualityTableMarkdown(table) + marginLine;
     if (Status written = writeTextFileAtomically(outPath, json); !written.ok()) return failure(written.error());
     if (Status written = writeTextFileAtomically(markdownPath(outPath), markdown); !written.ok())
         return failure(written.error());
