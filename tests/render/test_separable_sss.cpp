@@ -257,7 +257,10 @@ TEST_F(SeparableSss, LeanMomentsStayFiniteAndAUniformLobeStaysUniform) {
     double worst[2] = {0.0, 0.0};  // the d'Eon chain, separable
     double peak = 0.0;
     for (int t = 0; t < 2; ++t) {
-        load(dir.file("lean.json"), {t == 0 ? "sss.technique=gaussians" : "sss.technique=separable"});
+        // The chain with its moments blurred through every Gaussian, as separable blurs them
+        // through its whole kernel (with the default cut-off the chain departs by 2.6e-4 only).
+        load(dir.file("lean.json"), {t == 0 ? "sss.technique=gaussians" : "sss.technique=separable",
+                                     "sss.lean_moment_width_mm=0"});
         const Image specular = render(Aov::Specular, kWidth, kHeight);
         const Image diffuse = render(Aov::Diffuse, kWidth, kHeight);
         const Image albedo = render(Aov::Albedo, kWidth, kHeight);
