@@ -34,6 +34,18 @@ const Scene& contentScene(const std::string& name) {
     return *slot;
 }
 
+Image renderAov(Renderer& renderer, int width, int height, Aov aov) {
+    if (!renderer.renderFrame({width, height, aov}).ok()) return {};
+    auto image = renderer.readOutput();
+    return image.ok() ? std::move(*image) : Image{};
+}
+
+std::vector<uint8_t> sssPixelMask(Renderer& renderer, int width, int height) {
+    std::vector<uint8_t> mask;
+    for (const glm::vec4& t : renderAov(renderer, width, height, Aov::Albedo).texels) mask.push_back(t.a > 0.5f ? 1 : 0);
+    return mask;
+}
+
 double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix) {
     return renderAndTimeAt(renderer, width, height, 0.0f, {prefix})[0];
 }

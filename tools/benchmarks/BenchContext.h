@@ -6,6 +6,7 @@
 #include "frame/Renderer.h"
 #include "scene/Scene.h"
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,6 +26,11 @@ double renderAndTime(Renderer& renderer, int width, int height, const std::strin
 // The same at frame time timeS (animated characters), one sum per prefix.
 std::vector<double> renderAndTimeAt(Renderer& renderer, int width, int height, float timeS,
                                     const std::vector<std::string>& prefixes);
+
+// One frame of `aov` read back (an empty image if the frame or the read fails).
+Image renderAov(Renderer& renderer, int width, int height, Aov aov);
+// 1 where the albedo AOV marks an SSS pixel (alpha > 0.5), else 0.
+std::vector<uint8_t> sssPixelMask(Renderer& renderer, int width, int height);
 
 // Figures recorded by benchmarks (median GPU ms per named measurement) for
 // the comparisons printed after the run.

@@ -36,12 +36,6 @@ struct QualityCase {
 
 Result<std::unique_ptr<Renderer>> rendererFor(Scene& scene) { return Renderer::create(scene); }
 
-Image renderAov(Renderer& renderer, Aov aov) {
-    (void)renderer.renderFrame({kWidth, kHeight, aov});
-    auto image = renderer.readOutput();
-    return image.ok() ? std::move(*image) : Image{};
-}
-
 void errorBudget(benchmark::State& state) {
     context();
     const Scene& shipped = contentScene(kScene);
@@ -64,8 +58,8 @@ void errorBudget(benchmark::State& state) {
         state.SkipWithError(finest.error().message().c_str());
         return;
     }
-    const Image reference = renderAov(**finest, Aov::Diffuse);
-    const Image ids = renderAov(**finest, Aov::Object);
+    const Image reference = renderAov(**finest, kWidth, kHeight, Aov::Diffuse);
+    const Image ids = renderAov(**finest, kWidth, kHeight, Aov::Object);
     std::vector<uint8_t> mask(ids.texels.size(), 0);
     for (size_t i = 0; i < mask.size(); ++i) mask[i] = std::lround(ids.texels[i].r) >= 1 ? 1 : 0;  // every head is skin
     for (QualityCase& c : cases) {
@@ -75,8 +69,8 @@ void errorBudget(benchmark::State& state) {
             return;
         }
         c.renderer = std::move(*renderer);
-        (void)renderAov(*c.renderer, Aov::Final);  // warm-up: programs, shadow maps
-        auto loss = compareImages(reference, renderAov(*c.renderer, Aov::Diffuse), mask);
+        (void)renderAov(*c.renderer, kWidth, kHeight, Aov::Final);  // warm-up: programs, shadow maps
+        auto loss = compareImages(reference, renderAov(*c.renderer, kWidth, kHeight, Aov::Diffuse), mask);
         recorded()[c.key + "/loss"] = loss.ok() ? loss->relativeRmse : NAN;
         size_t distinct = 0;
         std::vector<SssChoice> seen;

@@ -14,6 +14,7 @@
 
 #include "core/ImageMetrics.h"
 #include "render/FrameTimings.h"
+#include "scene/QualityTable.h"
 
 #include <benchmark/benchmark.h>
 
@@ -49,10 +50,9 @@ std::vector<TechniqueCase> techniqueCases(const SssSettings& shipped) {
     return cases;
 }
 
+// SssChoice::finest() with no Gaussian skipped: the reference of the loss, as `dermis tune` has it.
 SssSettings finestSettings(SssSettings s) {
-    s.technique = SssTechnique::Gaussians;
-    s.taps = kMaxBlurTaps;
-    s.gaussians = kMaxProfileGaussians;
+    SssChoice::finest().applyTo(s);
     s.minWidthPx = 0.0f;
     return s;
 }
@@ -65,15 +65,8 @@ struct Rendered {
 };
 
 Result<Rendered> renderDiffuse(Renderer& renderer, int width, int height) {
-    Rendered out;
-    if (Status s = renderer.renderFrame({width, height, Aov::Albedo}); !s.ok()) return s.error();
-    auto albedo = renderer.readOutput();
-    if (!albedo.ok()) return albedo.error();
-    for (const glm::vec4& t : albedo->texels) out.sssMask.push_back(t.a > 0.5f ? 1 : 0);
-    if (Status s = renderer.renderFrame({width, height, Aov::Diffuse}); !s.ok()) return s.error();
-    auto diffuse = renderer.readOutput();
-    if (!diffuse.ok()) return diffuse.error();
-    out.diffuse = std::move(*diffuse);
+    Rendered out{renderAov(renderer, width, height, Aov::Diffuse), sssPixelMask(renderer, width, height)};
+    if (out.diffuse.texels.empty() || out.sssMask.empty()) return makeError("renderer", "a frame failed");
     return out;
 }
 
