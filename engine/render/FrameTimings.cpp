@@ -129,6 +129,14 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
     return j.dump(2) + "\n";
 }
 
+std::string describeCharacterSss(const CharacterReport& character) {
+    if (!character.hasSss) return {};
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%.2f px/mm", character.pixelsPerMm);
+    return character.name + ": " + describeSssChoice(character.sssChoice) + ", " + scale + " (" +
+           character.sssChoiceSource + ")";
+}
+
 std::string FrameTimings::toTable(const RunInfo& info) const {
     std::string out;
     char line[256];
@@ -153,6 +161,14 @@ std::string FrameTimings::toTable(const RunInfo& info) const {
     out += line;
     std::snprintf(line, sizeof line, "%-28s %10.3f\n", "frame wall clock", info.wallMsPerFrame);
     out += line;
+    bool heading = false;
+    for (const CharacterReport& character : info.characters) {
+        const std::string choice = describeCharacterSss(character);
+        if (choice.empty()) continue;
+        if (!heading) out += "screen-space SSS per character (last frame):\n";
+        heading = true;
+        out += "  " + choice + "\n";
+    }
     return out;
 }
 

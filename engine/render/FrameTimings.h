@@ -71,6 +71,10 @@ struct RunInfo {
 };
 
 double median(std::vector<double> values);
+// "near: separable samples=7, 3.21 px/mm (table row <= 4 px/mm)": one character's
+// screen-space SSS choice as the viewer's panel and the render's table print it;
+// empty when it has no SSS.
+std::string describeCharacterSss(const CharacterReport& character);
 std::string describeCull(const graph::PassReport& report);
 
 class FrameTimings {

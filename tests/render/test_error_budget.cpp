@@ -84,6 +84,12 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     EXPECT_EQ(near["gaussians"], reports[0].sssChoice.gaussians);
     EXPECT_EQ(near["source"], reports[0].sssChoiceSource);
     EXPECT_NEAR(near["pixels_per_mm"].get<double>(), reports[0].pixelsPerMm, 1e-4);
+    // The render command's table and the viewer's panel print describeCharacterSss: a line per head with its row's choice.
+    const std::string text = mRenderer->timings().toTable(info);
+    for (const CharacterReport& report : reports) {
+        const std::string line = "  " + report.name + ": " + describeSssChoice(table.choiceAt(table.rowFor(report.pixelsPerMm)));
+        EXPECT_NE(text.find(line), std::string::npos) << line << " not in\n" << text;
+    }
 
     // The break: the cheapest candidate for every head, whatever the budget.
     mScene->settings = shipped;

@@ -3,6 +3,7 @@
 // choices under an error budget. No GL.
 #include "TestSupport.h"
 #include "bench/QualityTune.h"
+#include "render/FrameTimings.h"
 #include "render/SssPlan.h"
 #include "scene/QualityTable.h"
 #include "scene/SceneLoader.h"
@@ -176,7 +177,7 @@ TEST(QualityTable, ChoosesTheRowOfTheLargerTunedScale) {
 TEST(QualityTable, TwoCharactersAtDifferentScalesGetTheirRowsInTheirOwnSlots) {
     QualityTable table;
     table.budget = 0.01;
-    // Scales of heads at 0.5 m and 2 m: 1.57 and 0.25 px/mm (pixelsPerMmAt).
+    // Scales of heads at 0.5 m and 2 m: 1.50 and 0.30 px/mm (pixelsPerMmAt: 360 / (2 tan 17.5°) / 1000 / (d - 0.12)).
     table.rows = {row(0.5f, 2), row(1.0f, 3), row(2.0f, 4)};
     const float nearScale = pixelsPerMmAt(0.5f);
     const float farScale = pixelsPerMmAt(2.0f);
@@ -190,13 +191,22 @@ TEST(QualityTable, TwoCharactersAtDifferentScalesGetTheirRowsInTheirOwnSlots) {
     EXPECT_NE(plan->slotOf(0, 0), plan->slotOf(1, 0));
     const SssSlotPlan& nearSlot = plan->slots[size_t(plan->slotOf(0, 0) - 1)];
     const SssSlotPlan& farSlot = plan->slots[size_t(plan->slotOf(1, 0) - 1)];
-    EXPECT_EQ(nearSlot.choice.gaussians, 4);  // 1 < 1.57 <= 2: the row tuned at 2 px/mm
+    EXPECT_EQ(nearSlot.choice.gaussians, 4);  // 1 < 1.50 <= 2: the row tuned at 2 px/mm
     EXPECT_EQ(farSlot.choice.gaussians, 2);   // 0.25 <= 0.5: the first row
     EXPECT_EQ(nearSlot.choice.taps, 5);
     EXPECT_EQ(int(nearSlot.steps.size()), 4);  // the chain runs the choice's Gaussians
     EXPECT_NEAR(plan->characterChoices[0].pixelsPerMm, nearScale, 1e-3f * nearScale);
     EXPECT_EQ(plan->characterChoices[0].source, "table");
     EXPECT_EQ(plan->characterChoices[1].choice, farSlot.choice);
+    // What the viewer and the render command print for the near head.
+    CharacterReport report{"near"};
+    report.hasSss = plan->characterChoices[0].hasSss;
+    report.sssChoice = plan->characterChoices[0].choice;
+    report.pixelsPerMm = plan->characterChoices[0].pixelsPerMm;
+    report.sssChoiceSource = plan->characterChoices[0].source;
+    EXPECT_EQ(describeCharacterSss(report), "near: gaussians taps=5 gaussians=4, 1.50 px/mm (table)");
+    report.hasSss = false;
+    EXPECT_EQ(describeCharacterSss(report), "");
 
     // Without a budget both use settings.sss in one slot.
     Scene off = scene;

@@ -92,9 +92,8 @@ bool sssPanel(Scene& scene, const std::vector<CharacterReport>& reports, std::st
         widgets::help("Each character gets the quality table's cheapest choice for its pixels per mm (docs/quality.md).");
     }
     for (const CharacterReport& report : reports) {
-        if (!report.hasSss) continue;
-        ImGui::TextDisabled("%s: %s, %.2f px/mm (%s)", report.name.c_str(), describeSssChoice(report.sssChoice).c_str(),
-                            report.pixelsPerMm, report.sssChoiceSource.c_str());
+        const std::string line = describeCharacterSss(report);
+        if (!line.empty()) ImGui::TextDisabled("%s", line.c_str());
     }
     return changed;
 }
