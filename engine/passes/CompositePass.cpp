@@ -37,7 +37,8 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameCont
                 const Programs& programs = *frame.gl->programs;
                 // Units 5 and 6 only in the LEAN variants (invalid handles otherwise).
                 runFullscreenPass(frame, resources, {{d.out}},
-                                  d.lean.isValid() ? programs.compositeLean.get() : programs.composite.get(),
+                                  d.lean.isValid() ? programs.compositeLean.get(frame.plan.environment.enabled())
+                                                    : programs.composite.get(),
                                   {d.depth, d.albedo, d.diffuse, d.specular, d.normalMaterial, d.lean.moments,
                                    d.lean.visibility});
             })

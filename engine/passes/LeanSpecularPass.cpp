@@ -27,7 +27,7 @@ graph::TextureHandle addLeanSpecularPass(graph::RenderGraph& graph, const FrameC
                 d.out = builder.create("lean specular", {w, h, graph::TextureFormat::Rgba16F});
             },
             [frame](const graph::PassResources& resources, const LeanSpecularData& d) {
-                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->leanSpecular.get(),
+                runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->leanSpecular.get(frame.plan.environment.enabled()),
                                   {d.depth, d.albedo, d.normalMaterial, d.moments, d.accumulated, d.visibility,
                                    d.specular});
             })

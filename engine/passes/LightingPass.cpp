@@ -45,7 +45,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 const bool lean = d.leanCross.isValid();
                 const Programs& programs = *frame.gl->programs;
                 beginFullscreenPass(frame, resources, {{d.out.irradiance, d.out.specular, d.out.visibility}},
-                                    lean ? programs.lightingLean.get() : programs.lighting.get(),
+                                    (lean ? programs.lightingLean : programs.lighting).get(frame.plan.environment.enabled()),
                                     {d.gbuffer.depthStencil, d.gbuffer.albedo, d.gbuffer.normalMaterial,
                                      d.ambientOcclusion});
                 bindShadowMaps(frame, resources, d.shadowMaps);

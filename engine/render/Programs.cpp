@@ -17,7 +17,6 @@ Result<Programs> Programs::build() {
     const Entry entries[] = {
         {&Programs::shadow, "shadow.vert", "shadow.frag"},
         {&Programs::gbuffer, "gbuffer.vert", "gbuffer.frag"},
-        {&Programs::lighting, "fullscreen.vert", "lighting.frag"},
         {&Programs::composite, "fullscreen.vert", "composite.frag"},
         {&Programs::tonemap, "fullscreen.vert", "tonemap.frag"},
         {&Programs::aov, "fullscreen.vert", "aov.frag"},
@@ -29,7 +28,6 @@ Result<Programs> Programs::build() {
         {&Programs::sssDisk, "fullscreen.vert", "sss_disk.frag"},
         {&Programs::tsTsm, "ts_tsm.vert", "ts_tsm.frag"},
         {&Programs::tsStretch, "ts_uv.vert", "ts_stretch.frag"},
-        {&Programs::tsIrradiance, "ts_uv.vert", "ts_irradiance.frag"},
         {&Programs::tsDilate, "fullscreen.vert", "ts_dilate.frag"},
         {&Programs::tsBlur, "fullscreen.vert", "ts_blur.frag"},
         {&Programs::tsGather, "ts_gather.vert", "ts_gather.frag"},
@@ -59,12 +57,9 @@ Result<Programs> Programs::build() {
     const std::string leanTargets = std::to_string(kLeanSssTargets);
     const VariantEntry variantEntries[] = {
         {&Programs::gbufferLean, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_LEAN", "1"}},
-        {&Programs::lightingLean, "fullscreen.vert", "lighting.frag", {"LIGHTING_LEAN", "1"}},
         {&Programs::sssInitLean, "fullscreen.vert", "sss_init.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::sssBlurLean, "fullscreen.vert", "sss_blur.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
         {&Programs::sssDiskLean, "fullscreen.vert", "sss_disk.frag", {"SSS_EXTRA_TARGETS", leanTargets}},
-        {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
-        {&Programs::compositeLean, "fullscreen.vert", "composite.frag", {"COMPOSITE_LEAN", "1"}},
         {&Programs::gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {"GBUFFER_TRANSFER", "3"}},
         {&Programs::skybox, "fullscreen.vert", "skybox.frag", {"FULLSCREEN_AT_FAR_PLANE", "1"}},
     };
@@ -74,6 +69,31 @@ Result<Programs> Programs::build() {
         auto program = gl::buildProgram({e.vertex, e.fragment, variantDefines, {}});
         if (!program.ok()) return program.error();
         programs.*(e.member) = std::move(*program);
+    }
+    // The programs that light with the environment, with and without its code.
+    struct EnvironmentEntry {
+        EnvironmentPrograms Programs::*member;
+        const char* vertex;
+        const char* fragment;
+        gl::ShaderDefine define;
+    };
+    const EnvironmentEntry environmentEntries[] = {
+        {&Programs::lighting, "fullscreen.vert", "lighting.frag", {}},
+        {&Programs::lightingLean, "fullscreen.vert", "lighting.frag", {"LIGHTING_LEAN", "1"}},
+        {&Programs::leanSpecular, "fullscreen.vert", "lean_specular.frag", {}},
+        {&Programs::compositeLean, "fullscreen.vert", "composite.frag", {"COMPOSITE_LEAN", "1"}},
+        {&Programs::tsIrradiance, "ts_uv.vert", "ts_irradiance.frag", {}},
+    };
+    for (const EnvironmentEntry& e : environmentEntries) {
+        for (const bool lit : {true, false}) {
+            std::vector<gl::ShaderDefine> environmentDefines = defines;
+            if (!e.define.name.empty()) environmentDefines.push_back(e.define);
+            environmentDefines.push_back({"DERMIS_ENVIRONMENT", lit ? "1" : "0"});
+            auto program = gl::buildProgram({e.vertex, e.fragment, environmentDefines, {}});
+            if (!program.ok()) return program.error();
+            EnvironmentPrograms& pair = programs.*(e.member);
+            (lit ? pair.lit : pair.unlit) = std::move(*program);
+        }
     }
     struct SeparableEntry {
         gl::Program Programs::*member;

@@ -7,10 +7,18 @@
 
 namespace dermis {
 
+// A program built twice, with the environment light's code (DERMIS_ENVIRONMENT 1,
+// include/Environment.glsl) and without it (0) for frames with no environment.
+struct EnvironmentPrograms {
+    gl::Program lit;
+    gl::Program unlit;
+    GLuint get(bool environmentLit) const { return (environmentLit ? lit : unlit).get(); }
+};
+
 struct Programs {
     gl::Program shadow;
     gl::Program gbuffer;
-    gl::Program lighting;
+    EnvironmentPrograms lighting;
     gl::Program composite;
     gl::Program tonemap;
     gl::Program aov;
@@ -28,7 +36,7 @@ struct Programs {
     gl::Program sssDisk;        // passes/SssDiskPass.cpp
     gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
     gl::Program tsStretch;
-    gl::Program tsIrradiance;
+    EnvironmentPrograms tsIrradiance;
     gl::Program tsDilate;
     gl::Program tsBlur;
     gl::Program tsGather;
@@ -36,13 +44,13 @@ struct Programs {
     gl::Program transferRotate;  // passes/SkinningPass.cpp: the environment transfer turned with the skinning (compute)
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
-    gl::Program lightingLean;   // lighting that passes the LEAN cross moment on in the irradiance's alpha
+    EnvironmentPrograms lightingLean;  // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
     gl::Program sssDiskLean;
     gl::Program sssBlurLeanLast;  // the last step that carries the moments: writes the colour alone (SssBlur.glsl)
-    gl::Program leanSpecular;   // passes/LeanSpecularPass.cpp (the specular AOV)
-    gl::Program compositeLean;  // composite with the LEAN specular
+    EnvironmentPrograms leanSpecular;  // passes/LeanSpecularPass.cpp (the specular AOV)
+    EnvironmentPrograms compositeLean;  // composite with the LEAN specular
     // Environment light (docs/environment.md): the G-buffers with the
     // per-vertex transfer's target (occlusion "transfer"), and the skybox.
     gl::Program gbufferTransfer;

@@ -204,3 +204,45 @@ TEST_F(EnvironmentFrame, LeanVariantsCarryTheEnvironmentsSpecular) {
     std::printf("environment specular, lbb / c over %d pixels: %.4f\n", pixels, ratio);
     EXPECT_NEAR(ratio, 1.0, 0.05);
 }
+
+// Frames without an environment use programs with its code compiled out
+// (DERMIS_ENVIRONMENT 0, render/Programs.h); frames with one, the run-time
+// programs. An environment of intensity 0 adds exactly nothing, so both must
+// give the same head, in both modes and both LEAN ends (the specular AOV
+// covers the LEAN lobe's own pass). Both compute the same sums, so the bound
+// is below one fp16 step of the targets: 1e-5 of the brightest pixel (measured:
+// 0). Broken on purpose (the unlit lighting pass's irradiance scaled by
+// 1.001), all three radiance cases failed by 0.00195 of 2.07 (one fp16 step).
+TEST_F(EnvironmentFrame, AnEnvironmentOfIntensityZeroRendersAsNone) {
+    constexpr int kWidth = 160;
+    constexpr int kHeight = 90;
+    const std::pair<const char*, Aov> cases[] = {{"sss.variant=lbb", Aov::Radiance},
+                                                 {"sss.variant=lbb", Aov::Specular},
+                                                 {"sss.variant=c", Aov::Radiance},
+                                                 {"mode=ts", Aov::Radiance}};
+    for (const auto& [setting, aov] : cases) {
+        {
+            load("default.json", {setting});
+            const Image ids = render(Aov::Object, kWidth, kHeight);
+            const Image none = render(aov, kWidth, kHeight);
+            load("default.json", {setting, R"(environment={"source": "uniform", "intensity": 0, "occlusion": "none"})"});
+            const Image zero = render(aov, kWidth, kHeight);
+            float brightest = 0.0f;
+            float largest = 0.0f;
+            int pixels = 0;
+            for (size_t i = 0; i < ids.texels.size(); ++i) {
+                if (std::lround(ids.texels[i].r) < 1) continue;  // the background: the skybox draws it black
+                ++pixels;
+                for (int c = 0; c < 3; ++c) {
+                    brightest = std::max(brightest, none.texels[i][c]);
+                    largest = std::max(largest, std::abs(none.texels[i][c] - zero.texels[i][c]));
+                }
+            }
+            ASSERT_GT(pixels, 1000) << setting;
+            ASSERT_GT(brightest, 0.0f) << setting;
+            std::printf("%s, AOV %d: environment of intensity 0 against none, largest difference %.3g of %.3g\n",
+                        setting, int(aov), largest, brightest);
+            EXPECT_LE(largest, 1e-5f * brightest) << setting << " AOV " << int(aov);
+        }
+    }
+}
