@@ -1,5 +1,7 @@
 #include "passes/GBufferPass.h"
 
+#include "render/BackFaceCulling.h"
+
 namespace dermis {
 
 GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
@@ -54,7 +56,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             glEnable(GL_STENCIL_TEST);
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             glStencilMask(0xFF);
-            glDisable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(GL_CCW);
             const Programs& programs = *frame.gl->programs;
             glUseProgram(g.hasLean() ? (transfer ? programs.gbufferLeanTransfer.get() : programs.gbufferLean.get())
                                      : (transfer ? programs.gbufferTransfer.get() : programs.gbuffer.get()));
@@ -62,6 +65,13 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             for (size_t index = 0; index < characters.size(); ++index) {
                 if (!frame.plan.characters[index].visible) continue;  // off screen (CharacterPlacement::culledBecause)
                 const GpuCharacter& character = characters[index];
+                const bool frontOnly = frame.plan.scene->settings.cullBackFaces &&
+                                       mayCullBackFaces(character.closedOutward, frame.plan.characters[index], frame.plan.view);
+                if (frontOnly) {
+                    glEnable(GL_CULL_FACE);
+                } else {
+                    glDisable(GL_CULL_FACE);
+                }
                 glBindVertexArray(character.mesh.vertexArray.get());
                 for (size_t s = 0; s < character.submeshes.size(); ++s) {
                     const GpuSubmesh& submesh = character.submeshes[s];
@@ -74,6 +84,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                     submesh.draw();
                 }
             }
+            glDisable(GL_CULL_FACE);
             glDisable(GL_STENCIL_TEST);
             glDisable(GL_DEPTH_TEST);
         });

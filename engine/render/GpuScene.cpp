@@ -1,5 +1,7 @@
 #include "render/GpuScene.h"
 
+#include "mesh/MeshTopology.h"
+
 #include "lean/LeanBake.h"
 #include "render/SceneGeometry.h"
 #include "gpu/UniformBlocks.h"
@@ -190,6 +192,7 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         GpuCharacter gpu;
         gpu.name = character.name;
         gpu.mesh = uploadMesh(model.mesh, model.colours);
+        gpu.closedOutward = isClosedOutward(model.mesh);
         gpu.rig = uploadRig(model.rig, model.mesh);
         for (const ModelMaterial& material : model.materials) {
             auto uploaded = uploadMaterial(material);

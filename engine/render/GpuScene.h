@@ -81,6 +81,7 @@ struct GpuCharacter {
     GpuRig rig;  // empty for a static character
     std::vector<GpuMaterial> materials;
     std::vector<GpuSubmesh> submeshes;  // cover the whole mesh, in index order
+    bool closedOutward = false;         // mesh/MeshTopology.h: no back face shows from outside it
 
     bool hasLeanMaps() const;  // some material has a normal map
 };

@@ -208,6 +208,9 @@ struct RenderSettings {
     float exposure = 1.0f;
     glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
     bool energyConservation = true;  // Chappuis 2011 §2.6: diffuse x (1 - rho_s rho_dt) in and out
+    // The G-buffer culls the back faces of closed meshes seen from outside
+    // (mesh/MeshTopology.h, passes/GBufferPass.cpp): the same image, less work.
+    bool cullBackFaces = true;
     ShadowSettings shadow;
     SssSettings sss;
     TransmittanceSettings transmittance;

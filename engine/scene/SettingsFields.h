@@ -97,6 +97,7 @@ void visitSettingsFields(S& s, V& v) {
     v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
     v.vec3("ambient", s.ambient, Range::closed(0.0, kMaxLightRadiance));
     v.boolean("energy_conservation", s.energyConservation);
+    v.boolean("cull_back_faces", s.cullBackFaces);
     v.choice("mode", kSssModes, s.mode);
     v.group("shadow", s.shadow, [](auto& g, auto& w) { visitShadowFields(g, w); });
     v.group("sss", s.sss, [](auto& g, auto& w) { visitSssFields(g, w); });

@@ -26,8 +26,8 @@ void sectionLabel(const char* text) {
 }
 
 // The keys of "settings" that have a typed panel of their own.
-const std::vector<std::string> kTypedSettingsKeys = {"exposure", "ambient", "energy_conservation", "shadow",
-                                                     "sss", "transmittance", "ssao"};
+const std::vector<std::string> kTypedSettingsKeys = {"exposure", "ambient", "energy_conservation", "cull_back_faces",
+                                                     "shadow", "sss", "transmittance", "ssao"};
 
 std::vector<std::string> profileChoices() {
     std::vector<std::string> names = profileNames();
@@ -145,6 +145,8 @@ bool framePanel(Scene& scene) {
     changed |= widgets::colourLinear("background", scene.background.colour, true);
     changed |= ImGui::Checkbox("energy conservation", &settings.energyConservation);
     widgets::help("Diffuse x (1 - rho_s rho_dt) where light enters and leaves (Chappuis 2011 2.6).");
+    changed |= ImGui::Checkbox("cull back faces", &settings.cullBackFaces);
+    widgets::help("The G-buffer skips the back faces of closed meshes seen from outside: the same image, less work.");
     return changed;
 }
 
