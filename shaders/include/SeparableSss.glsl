@@ -101,10 +101,11 @@ float separableScalarWeight(vec3 weight) {
 // happening).
 SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(chain, 0);
-    SssValues centre = sssFetch(chain, pixel);
-    uint centreKey = texelFetch(depthKey, pixel, 0).r;
-    float viewDepthM = viewDepthFromKey(centreKey);
-    if (slotFromKey(centreKey) != int(uSeparableSss.edges.w) || viewDepthM <= 0.0) return centre;
+    const SssCentre at = sssCentre(chain, depthKey, pixel, int(uSeparableSss.edges.w));
+    SssValues centre = at.values;
+    uint centreKey = at.key;
+    float viewDepthM = at.viewDepthM;
+    if (!at.onSlot) return centre;
 
     float pixelsPerMm = 1e-3 * uFrame.features.y / viewDepthM;
     ivec2 direction = ivec2(uSeparableSss.step.xy);

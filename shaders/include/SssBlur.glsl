@@ -166,6 +166,25 @@ SssValues sssFetch(SSS_CHAIN_SAMPLER chain, ivec2 pixel) {
     return values;
 }
 
+// The centre of every technique's step at `pixel`: its values, its depth
+// key and view depth, and whether it belongs to `slot` with a depth (the
+// stencil keeps other pixels away; this is the belt to its braces).
+struct SssCentre {
+    SssValues values;
+    uint key;
+    float viewDepthM;
+    bool onSlot;
+};
+
+SssCentre sssCentre(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel, int slot) {
+    SssCentre centre;
+    centre.values = sssFetch(chain, pixel);
+    centre.key = texelFetch(depthKey, pixel, 0).r;
+    centre.viewDepthM = viewDepthFromKey(centre.key);
+    centre.onSlot = slotFromKey(centre.key) == slot && centre.viewDepthM > 0.0;
+    return centre;
+}
+
 #if SSS_EXTRA_TARGETS > 0
 // The chain texel of sanitised values (sssSanitizeSigned / sanitizeColour).
 uvec4 sssPack(vec4 colour, vec4 extra) {
@@ -210,10 +229,11 @@ float sssTapWeights(float sigmaPx, int halfTaps, bool readsBoxes, out float weig
 // this is the belt to its braces).
 SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
-    SssValues centre = sssFetch(colour, pixel);
-    uint centreKey = texelFetch(depthKey, pixel, 0).r;
-    float viewDepthM = viewDepthFromKey(centreKey);
-    if (slotFromKey(centreKey) != int(uSssBlur.edges.w) || viewDepthM <= 0.0) return centre;
+    const SssCentre at = sssCentre(colour, depthKey, pixel, int(uSssBlur.edges.w));
+    SssValues centre = at.values;
+    uint centreKey = at.key;
+    float viewDepthM = at.viewDepthM;
+    if (!at.onSlot) return centre;
 
     float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
     vec2 direction = uSssBlur.step.xy;
