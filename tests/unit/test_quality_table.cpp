@@ -266,6 +266,15 @@ TEST(QualityTune, CheapestWithinTheBudgetElseTheFinest) {
     EXPECT_EQ(none.choice, SssChoice::finest());
     EXPECT_DOUBLE_EQ(none.loss, 0.0);
     EXPECT_DOUBLE_EQ(none.sssMs, 4.0);
+    // Within kTuneTimingTie (15%) of the cheapest the lower loss wins; past it, the cheaper.
+    SssChoice close;
+    close.gaussians = 5;
+    const std::vector<bench::TuneMeasurement> tied = {{middle, 0.008, 2.0, 6.0}, {close, 0.004, 2.2, 6.0}};
+    EXPECT_EQ(bench::cheapestWithin(3.0f, tied, 0.01, 4.0).choice, close);    // 2.2 <= 1.15 x 2.0
+    const std::vector<bench::TuneMeasurement> apart = {{middle, 0.008, 2.0, 6.0}, {close, 0.004, 2.4, 6.0}};
+    EXPECT_EQ(bench::cheapestWithin(3.0f, apart, 0.01, 4.0).choice, middle);  // 2.4 > 2.3
+    // The finest (loss 0) within the tie of the cheapest candidate: the finest.
+    EXPECT_EQ(bench::cheapestWithin(3.0f, tied, 0.01, 2.25).choice, SssChoice::finest());
     EXPECT_EQ(bench::tuneCandidates().size(), 15u + 4u + 4u);
     auto percent = bench::parseBudget("1%");
     ASSERT_TRUE(percent.ok());

@@ -1,5 +1,6 @@
 #include "bench/QualityTune.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -74,11 +75,20 @@ QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>&
     row.loss = 0.0;
     row.sssMs = finestSssMs;
     row.finestSssMs = finestSssMs;
+    double cheapestMs = finestSssMs;  // the finest is a candidate too, with loss 0
     for (const TuneMeasurement& m : measured) {
-        if (m.loss <= budget && m.sssMs < row.sssMs) {
+        if (m.loss <= budget) cheapestMs = std::min(cheapestMs, m.sssMs);
+    }
+    const double tiedMs = cheapestMs * (1.0 + kTuneTimingTie);
+    if (finestSssMs <= tiedMs) return row;  // nothing clearly cheaper than the finest: it has the lowest loss
+    bool found = false;
+    for (const TuneMeasurement& m : measured) {
+        if (m.loss > budget || m.sssMs > tiedMs) continue;
+        if (!found || m.loss < row.loss || (m.loss == row.loss && m.sssMs < row.sssMs)) {
             row.choice = m.choice;
             row.loss = m.loss;
             row.sssMs = m.sssMs;
+            found = true;
         }
     }
     return row;

@@ -31,8 +31,14 @@ struct TuneMeasurement {
     double frameMs = 0.0;
 };
 
-// The cheapest measurement (by sssMs) whose loss is at most `budget`; the
-// finest (loss 0, finestSssMs) when none is.
+// Candidates whose SSS ms are within this fraction of the cheapest count as
+// equally cheap: llvmpipe's timings of one render move by more than that from
+// run to run, so among them the measured loss, which does not move, decides.
+constexpr double kTuneTimingTie = 0.15;
+
+// Of the measurements whose loss is at most `budget`, the one with the lowest
+// loss among those within kTuneTimingTie of the cheapest sssMs; the finest
+// (loss 0, finestSssMs) when none is within the budget.
 QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>& measured, double budget,
                           double finestSssMs);
 
