@@ -43,8 +43,10 @@ const char* const kHelp =
     "characters' nearest depth. At each distance every candidate choice is rendered and\n"
     "measured: the median GPU ms of its SSS passes over N frames, and its LOSS, the\n"
     "relative RMSE of the diffuse AOV over SSS pixels against the finest setting\n"
-    "(FINEST, min_width_px 0) at the same view. The cheapest candidate whose loss is\n"
-    "within the margin x the budget becomes that scale's row; the finest when none is.\n"
+    "(FINEST, min_width_px 0) at the same view. Of the candidates whose loss is within\n"
+    "the margin x the budget, those within TIE% of the cheapest SSS ms count as equally\n"
+    "cheap (timings move more than that between runs), and the lowest loss among them\n"
+    "becomes that scale's row; the finest when it is among them or none qualifies.\n"
     "Candidates:\n"
     "CANDIDATES"
     "Writes FILE (the quality table JSON a scene's settings.quality.table names) and\n"
@@ -122,7 +124,8 @@ int runTune(const std::vector<std::string>& rawArgs) {
         std::string help = kHelp;
         for (const auto& [word, text] :
              {std::pair<std::string, std::string>{"CANDIDATES", bench::describeTuneCandidates()},
-              {"FINEST", describeSssChoice(SssChoice::finest())}}) {
+              {"FINEST", describeSssChoice(SssChoice::finest())},
+              {"TIE", std::to_string(int(std::lround(100.0 * bench::kTuneTimingTie)))}}) {
             help.replace(help.find(word), word.size(), text);
         }
         std::fputs(help.c_str(), stdout);
