@@ -122,8 +122,12 @@ std::vector<CharacterReport> Renderer::characterReports() const {
     if (!mPlan) return reports;
     for (size_t c = 0; c < mPlan->characters.size() && c < mScene.characters.size(); ++c) {
         const CharacterPlacement& placement = mPlan->characters[c];
-        CharacterReport report{mScene.characters[c].name, placement.visible, placement.culledBecause,
-                               placement.animated, placement.clipTimeS, 0, ""};
+        CharacterReport report;
+        report.name = mScene.characters[c].name;
+        report.visible = placement.visible;
+        report.culledBecause = placement.culledBecause;
+        report.animated = placement.animated;
+        report.clipTimeS = placement.clipTimeS;
         for (const TsCharacterPlan& ts : mPlan->ts.characters) {
             if (static_cast<size_t>(ts.character) != c || !mPlan->textureSpace) continue;
             report.textureSpaceSize = ts.runs() ? ts.size : 0;

@@ -130,7 +130,7 @@ void planShadows(const Scene& scene, const ShadowCache& cache, std::vector<Shado
 
 // The texture-space planner's inputs: bounds and the UV layout's stretch in
 // world millimetres (d'Eon & Luebke 2007 §16.3.2).
-std::vector<TsCharacterInput> textureSpaceInputs(const Scene& scene, SceneGeometry& geometry, const FramePlan& plan) {
+std::vector<TsCharacterInput> textureSpaceInputs(SceneGeometry& geometry, const FramePlan& plan) {
     std::vector<TsCharacterInput> inputs;
     for (size_t c = 0; c < plan.characters.size(); ++c) {
         TsCharacterInput input;
@@ -219,7 +219,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     const bool textureSpaceMode = scene.settings.mode == SssMode::TextureSpace;
     plan.textureSpace = aovIsUvLayout(request.aov) || (textureSpaceMode && aovReadsSss(request.aov, plan.lean));
     if (plan.textureSpace) {
-        auto ts = planTextureSpace(scene, textureSpaceInputs(scene, geometry, plan), plan.view, plan.lights);
+        auto ts = planTextureSpace(scene, textureSpaceInputs(geometry, plan), plan.view, plan.lights);
         if (!ts.ok()) return ts.error();
         plan.ts = std::move(*ts);
         if (const Status kernel = planKernel(scene.settings.ts.taps, "ts.taps", plan.tsKernel); !kernel.ok()) {

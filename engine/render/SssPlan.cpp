@@ -91,8 +91,8 @@ bool SssPlan::anyVisible() const {
 float ViewParams::pixelsPerMetreAtUnitDepth() const { return 0.5f * float(heightPx) * clipFromView[1][1]; }
 
 bool SssPlan::hasSss(size_t character) const {
-    const std::vector<int>& slots = slotsOfCharacter[character];
-    return std::any_of(slots.begin(), slots.end(), [](int slot) { return slot > 0; });
+    const std::vector<int>& characterSlots = slotsOfCharacter[character];
+    return std::any_of(characterSlots.begin(), characterSlots.end(), [](int slot) { return slot > 0; });
 }
 
 int SssPlan::slotOf(size_t character, size_t submesh) const {

@@ -199,7 +199,8 @@ TEST(QualityTable, TwoCharactersAtDifferentScalesGetTheirRowsInTheirOwnSlots) {
     EXPECT_EQ(plan->characterChoices[0].source, "table");
     EXPECT_EQ(plan->characterChoices[1].choice, farSlot.choice);
     // What the viewer and the render command print for the near head.
-    CharacterReport report{"near"};
+    CharacterReport report;
+    report.name = "near";
     report.hasSss = plan->characterChoices[0].hasSss;
     report.sssChoice = plan->characterChoices[0].choice;
     report.pixelsPerMm = plan->characterChoices[0].pixelsPerMm;
