@@ -2,9 +2,9 @@
 
 #include <array>
 #include <cstdint>
-#include <cstring>
 #include <map>
 #include <unordered_map>
+#include <vector>
 
 namespace dermis {
 

@@ -88,11 +88,10 @@ const float kDiskSssSkipPx = 0.5;
 // (the stencil keeps that from happening) or the disk is under the skip size.
 SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
-    const SssCentre at = sssCentre(colour, depthKey, pixel, int(uDiskSss.params.y));
-    SssValues centre = at.values;
-    uint centreKey = at.key;
-    float viewDepthM = at.viewDepthM;
-    if (!at.onSlot) return centre;
+    SssValues centre;
+    uint centreKey;
+    float viewDepthM;
+    if (!sssCentre(colour, depthKey, pixel, int(uDiskSss.params.y), centre, centreKey, viewDepthM)) return centre;
     float pxPerMm = 1e-3 * uFrame.features.y / viewDepthM;
     if (uDiskSss.params.z * pxPerMm < kDiskSssSkipPx) return centre;
 

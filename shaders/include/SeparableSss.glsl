@@ -101,11 +101,10 @@ float separableScalarWeight(vec3 weight) {
 // happening).
 SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(chain, 0);
-    const SssCentre at = sssCentre(chain, depthKey, pixel, int(uSeparableSss.edges.w));
-    SssValues centre = at.values;
-    uint centreKey = at.key;
-    float viewDepthM = at.viewDepthM;
-    if (!at.onSlot) return centre;
+    SssValues centre;
+    uint centreKey;
+    float viewDepthM;
+    if (!sssCentre(chain, depthKey, pixel, int(uSeparableSss.edges.w), centre, centreKey, viewDepthM)) return centre;
 
     float pixelsPerMm = 1e-3 * uFrame.features.y / viewDepthM;
     ivec2 direction = ivec2(uSeparableSss.step.xy);

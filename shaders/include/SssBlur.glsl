@@ -166,23 +166,15 @@ SssValues sssFetch(SSS_CHAIN_SAMPLER chain, ivec2 pixel) {
     return values;
 }
 
-// The centre of every technique's step at `pixel`: its values, its depth
-// key and view depth, and whether it belongs to `slot` with a depth (the
-// stencil keeps other pixels away; this is the belt to its braces).
-struct SssCentre {
-    SssValues values;
-    uint key;
-    float viewDepthM;
-    bool onSlot;
-};
-
-SssCentre sssCentre(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel, int slot) {
-    SssCentre centre;
-    centre.values = sssFetch(chain, pixel);
-    centre.key = texelFetch(depthKey, pixel, 0).r;
-    centre.viewDepthM = viewDepthFromKey(centre.key);
-    centre.onSlot = slotFromKey(centre.key) == slot && centre.viewDepthM > 0.0;
-    return centre;
+// The centre of every technique's step at `pixel`: its values, its depth key
+// and view depth; false when it is not on `slot` or has no depth (the stencil
+// keeps such pixels away; this is the belt to its braces).
+bool sssCentre(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel, int slot, out SssValues values, out uint key,
+               out float viewDepthM) {
+    values = sssFetch(chain, pixel);
+    key = texelFetch(depthKey, pixel, 0).r;
+    viewDepthM = viewDepthFromKey(key);
+    return slotFromKey(key) == slot && viewDepthM > 0.0;
 }
 
 #if SSS_EXTRA_TARGETS > 0
@@ -229,11 +221,10 @@ float sssTapWeights(float sigmaPx, int halfTaps, bool readsBoxes, out float weig
 // this is the belt to its braces).
 SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     ivec2 size = textureSize(colour, 0);
-    const SssCentre at = sssCentre(colour, depthKey, pixel, int(uSssBlur.edges.w));
-    SssValues centre = at.values;
-    uint centreKey = at.key;
-    float viewDepthM = at.viewDepthM;
-    if (!at.onSlot) return centre;
+    SssValues centre;
+    uint centreKey;
+    float viewDepthM;
+    if (!sssCentre(colour, depthKey, pixel, int(uSssBlur.edges.w), centre, centreKey, viewDepthM)) return centre;
 
     float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
     vec2 direction = uSssBlur.step.xy;

@@ -81,16 +81,14 @@ QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>&
     }
     const double tiedMs = cheapestMs * (1.0 + kTuneTimingTie);
     if (finestSssMs <= tiedMs) return row;  // nothing clearly cheaper than the finest: it has the lowest loss
-    bool found = false;
+    const TuneMeasurement* best = nullptr;  // some candidate is at cheapestMs, so one is found
     for (const TuneMeasurement& m : measured) {
         if (m.loss > budget || m.sssMs > tiedMs) continue;
-        if (!found || m.loss < row.loss || (m.loss == row.loss && m.sssMs < row.sssMs)) {
-            row.choice = m.choice;
-            row.loss = m.loss;
-            row.sssMs = m.sssMs;
-            found = true;
-        }
+        if (!best || m.loss < best->loss || (m.loss == best->loss && m.sssMs < best->sssMs)) best = &m;
     }
+    row.choice = best->choice;
+    row.loss = best->loss;
+    row.sssMs = best->sssMs;
     return row;
 }
 
