@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dermis::reference {
@@ -76,6 +77,22 @@ glm::vec2 CharacterSurface::mapUvAtPlanePoint(size_t triangle, const glm::vec3& 
     return mapUvAt(triangle, float(b1), float(b2));
 }
 
+glm::vec3 CharacterSurface::smoothSurfacePoint(const glm::vec3& pointM, const glm::vec3& weights,
+                                               const glm::uvec3& corners, bool backFacing) const {
+    // Hanika 2021, "Hacking the shadow terminator": project the point onto each
+    // corner's tangent plane where it lies below it, and interpolate the
+    // projections with the barycentric weights. Points above every plane stay.
+    glm::vec3 lifted(0.0f);
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec3 cornerM = mPositionsM[corners[k]];
+        glm::vec3 normal = safeNormalize(mNormals[corners[k]], glm::vec3(0.0f));
+        if (backFacing) normal = -normal;
+        const float height = std::min(0.0f, glm::dot(pointM - cornerM, normal));
+        lifted += weights[k] * (pointM - height * normal);
+    }
+    return lifted;
+}
+
 SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool backFacing,
                                        const MapFootprint* footprint) const {
     const uint32_t i0 = mIndices[3 * triangle];
@@ -95,6 +112,8 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
 
     glm::vec3 n = safeNormalize(b0 * mNormals[i0] + b1 * mNormals[i1] + b2 * mNormals[i2], point.geometricNormal);
     if (backFacing) n = -n;
+    point.smoothNormal = n;
+    point.rayLiftM = smoothSurfacePoint(point.positionM, {b0, b1, b2}, {i0, i1, i2}, backFacing) - point.positionM;
     if (!mNormalMap.empty()) {
         const glm::vec4 tangent = b0 * mTangents[i0] + b1 * mTangents[i1] + b2 * mTangents[i2];
         glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));

@@ -23,6 +23,12 @@ struct SurfacePoint {
     glm::vec3 positionM{0.0f};
     glm::vec3 geometricNormal{0.0f, 0.0f, 1.0f};  // unit; the counter-clockwise side is the front
     glm::vec3 shadingNormal{0.0f, 0.0f, 1.0f};    // unit
+    // Rays towards the lights and the environment leave from positionM + rayLiftM:
+    // lifted onto the smooth surface that the vertex normals describe (Hanika
+    // 2021), so that a coarse mesh's flat triangles do not shadow themselves
+    // where the interpolated normal still faces the light (the shadow terminator).
+    glm::vec3 rayLiftM{0.0f};
+    glm::vec3 smoothNormal{0.0f, 0.0f, 1.0f};  // unit: the interpolated normal, before the normal map
     glm::vec3 albedo{0.0f};                        // linear
     float roughness = 0.3f;
     float rhoS = 0.0f;
@@ -52,6 +58,11 @@ public:
     double areaM2() const;
 
 private:
+    // Hanika 2021's point: `pointM` (weights of the three corners) lifted to the
+    // corners' tangent planes where it lies below them.
+    glm::vec3 smoothSurfacePoint(const glm::vec3& pointM, const glm::vec3& weights, const glm::uvec3& corners,
+                                 bool backFacing) const;
+
     std::string mName;
     std::vector<glm::vec3> mPositionsM;
     std::vector<glm::vec3> mNormals;   // normal matrix applied, not normalised (interpolated first, as on the GPU)

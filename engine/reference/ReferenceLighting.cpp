@@ -61,10 +61,13 @@ void tangentFrame(const glm::vec3& axis, glm::vec3& t, glm::vec3& b) {
     b = glm::cross(axis, t);
 }
 
-// Where rays towards `direction` leave the point: off the surface on that side of the triangle's plane.
+// Where rays towards `direction` leave the point: from the smooth surface
+// (Hanika 2021) when the interpolated normal faces the direction, else from
+// the facet itself; just off the facet's plane on the ray's side.
 glm::vec3 rayOrigin(const SurfacePoint& point, const glm::vec3& direction) {
     const float side = glm::dot(point.geometricNormal, direction) >= 0.0f ? 1.0f : -1.0f;
-    return point.positionM + point.geometricNormal * (side * kShadowOffsetM);
+    const glm::vec3 lift = glm::dot(point.smoothNormal, direction) >= 0.0f ? point.rayLiftM : glm::vec3(0.0f);
+    return point.positionM + lift + point.geometricNormal * (side * kShadowOffsetM);
 }
 
 // A hash of the point's position bits: the seed of its environment samples, so
