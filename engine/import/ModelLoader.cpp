@@ -49,6 +49,7 @@ Result<Model> loadCharacterModel(const Character& character) {
                               files.load(material.roughnessMap, ColourSpace::Linear, target.roughnessMap),
                               files.load(material.specularMap, ColourSpace::Linear, target.specularMap)})
             if (!status) return status.error();
+        if (!material.useNormalMap) target.normalMap = Image{};
     }
     return model;
 }

@@ -65,6 +65,10 @@ struct Material {
     std::string albedoMap;
     std::string normalMap;
     bool flipV = false;  // sample maps at (u, 1 - v): for meshes with OpenGL-convention UVs
+    // false drops every normal map of the material, the mesh file's and normalMap
+    // alike, in the renderer and the CPU reference: the normal map's share of an
+    // error (docs/bench.md, "Error by ingredient").
+    bool useNormalMap = true;
     bool procedural = false;
     glm::vec3 albedo{0.8f, 0.6f, 0.5f};  // linear; multiplies the albedo map
     float roughness = 0.3f;              // Beckmann m (Chappuis 2011 §2.3)

@@ -177,9 +177,9 @@ void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh
     mesh.gltfPath = resolveScenePath(sceneFile, mesh.gltfPath);
 }
 
-const std::vector<std::string> kMaterialKeys = {"albedo_map", "normal_map", "flip_v",      "procedural",
-                                                 "albedo",     "roughness",  "rho_s",       "profile",
-                                                 "width_scale", "roughness_map", "specular_map"};
+const std::vector<std::string> kMaterialKeys = {"albedo_map",  "normal_map",    "use_normal_map", "flip_v",
+                                                 "procedural",  "albedo",        "roughness",      "rho_s",
+                                                 "profile",     "width_scale",   "roughness_map",  "specular_map"};
 
 void readMaterialFields(JsonObject& object, const std::string& sceneFile, const std::vector<std::string>& profiles,
                         Material& material) {
@@ -189,6 +189,7 @@ void readMaterialFields(JsonObject& object, const std::string& sceneFile, const 
     object.string("specular_map", material.specularMap);
     for (std::string* path : {&material.albedoMap, &material.normalMap, &material.roughnessMap, &material.specularMap})
         *path = resolveScenePath(sceneFile, *path);
+    object.boolean("use_normal_map", material.useNormalMap);
     object.boolean("flip_v", material.flipV);
     object.boolean("procedural", material.procedural);
     object.vec3("albedo", material.albedo, Range::closed(0.0, 1.0));

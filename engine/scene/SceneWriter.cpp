@@ -71,6 +71,7 @@ Json materialJson(const Material& m, const std::string& sceneFile) {
     material["normal_map"] = relativeScenePath(sceneFile, m.normalMap);
     material["roughness_map"] = relativeScenePath(sceneFile, m.roughnessMap);
     material["specular_map"] = relativeScenePath(sceneFile, m.specularMap);
+    material["use_normal_map"] = m.useNormalMap;
     material["flip_v"] = m.flipV;
     material["procedural"] = m.procedural;
     material["albedo"] = vec3(m.albedo);

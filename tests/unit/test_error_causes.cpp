@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -108,6 +109,33 @@ TEST(ErrorCauses, TheMatchedReferenceAddsTheChange) {
     const Image matched = addImages(off, change);
     EXPECT_EQ(matched.texels[0], glm::vec4(0.375f, 0.375f, 0.375f, 1.0f));
     EXPECT_EQ(matched.texels[3].a, 0.25f);
+}
+
+}  // namespace
+}  // namespace dermis::bench
+
+namespace dermis::bench {
+namespace {
+
+// A reference pixel that is partly background (alpha < 1) is taken out of
+// every region, and counted; a fully covered one stays. Two references: a
+// pixel either leaves uncovered is dropped once.
+TEST(ErrorCauses, PixelsTheReferenceDoesNotCoverAreLeftOutAndCounted) {
+    const SquareScene square;
+    std::vector<uint8_t> regions = classifyRegions(kSize, kSize, square.ids, square.isSss, square.thickness);
+    Image full = constantImage(1.0f), off = constantImage(1.0f);
+    full.at(2, 2).a = 0.75f;  // a silhouette pixel, a quarter background
+    off.at(2, 2).a = 0.5f;
+    off.at(5, 5).a = 0.0f;    // the centre ray met the background
+    full.at(0, 0).a = 0.0f;   // background in both: never a region
+    EXPECT_EQ(dropUncovered(regions, {&full, &off}), 2u);
+    EXPECT_EQ(regions[2 * kSize + 2], kNoRegion);
+    EXPECT_EQ(regions[5 * kSize + 5], kNoRegion);
+    EXPECT_EQ(count(regions, ErrorRegion::All), 64u - 2u);
+    // Partly covered pixels darken the reference by their background share: left in, they would
+    // dominate the silhouette's error although the engine shades them right.
+    full.at(3, 3).a = 0.999f;
+    EXPECT_EQ(dropUncovered(regions, {&full}), 1u);
 }
 
 }  // namespace

@@ -42,6 +42,21 @@ std::vector<uint8_t> classifyRegions(int width, int height, const std::vector<in
     return regions;
 }
 
+size_t dropUncovered(std::vector<uint8_t>& regions, const std::vector<const Image*>& references) {
+    size_t dropped = 0;
+    for (size_t i = 0; i < regions.size(); ++i) {
+        if (regions[i] == kNoRegion) continue;
+        for (const Image* reference : references) {
+            if (reference->texels.size() == regions.size() && !(reference->texels[i].a >= 1.0f)) {
+                regions[i] = kNoRegion;
+                ++dropped;
+                break;
+            }
+        }
+    }
+    return dropped;
+}
+
 std::vector<uint8_t> regionMask(const std::vector<uint8_t>& regions, ErrorRegion region) {
     std::vector<uint8_t> mask(regions.size(), 0);
     for (size_t i = 0; i < regions.size(); ++i) {

@@ -63,6 +63,12 @@ constexpr uint8_t kNoRegion = 0xff;
 std::vector<uint8_t> classifyRegions(int width, int height, const std::vector<int>& objectIds,
                                      const std::vector<bool>& isSss, const Image& thicknessMm);
 
+// Takes out of `regions` every pixel that a reference (alpha = its coverage)
+// does not cover fully, and returns how many it took: a reference pixel that
+// is partly background averages the background's 0 in, which the engine's
+// point-sampled pixel never does.
+size_t dropUncovered(std::vector<uint8_t>& regions, const std::vector<const Image*>& references);
+
 // The mask (1 = compared) of one region; All selects every classified pixel.
 std::vector<uint8_t> regionMask(const std::vector<uint8_t>& regions, ErrorRegion region);
 

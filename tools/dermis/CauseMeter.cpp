@@ -34,6 +34,7 @@ Result<CauseMeter> CauseMeter::create(Session& session, ReferenceImages& referen
         isSss[c + 1] = scene.characters[c].material.profile != kOpaqueProfile;
     }
     meter.mRegions = bench::classifyRegions(width, height, *ids, isSss, *thickness);
+    meter.mUncoveredPixels = bench::dropUncovered(meter.mRegions, {&meter.mFull, &meter.mSssOff});
     return meter;
 }
 

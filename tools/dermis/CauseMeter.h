@@ -33,6 +33,10 @@ public:
     Result<bench::CauseErrors> measure(Session& session, const Image& diffuse, int renderWidth, int renderHeight);
 
     const Image& fullReference() const { return mFull; }
+    // SSS pixels of the render that the references do not cover fully (the
+    // background or another character at the centre, or a partly covered
+    // box-filtered pixel): left out of every figure.
+    size_t uncoveredPixels() const { return mUncoveredPixels; }
     const std::vector<uint8_t>& regions() const { return mRegions; }
     // 1 on every SSS pixel.
     std::vector<uint8_t> sssMask() const { return bench::regionMask(mRegions, bench::ErrorRegion::All); }
@@ -45,6 +49,7 @@ private:
     Image mFull;
     Image mSssOff;
     std::vector<uint8_t> mRegions;
+    size_t mUncoveredPixels = 0;
     std::map<std::string, Image> mSssOffRenders;  // configuration (SSS off) and size -> diffuse
 };
 

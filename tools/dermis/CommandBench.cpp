@@ -257,6 +257,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
     summary["reference_spp"] = referenceSettings.samplesPerPixel;
     summary["irradiance_size_texels"] = referenceSettings.irradianceSizeTexels;
     summary["sss_pixels"] = std::count(mask.begin(), mask.end(), uint8_t{1});
+    summary["uncovered_pixels"] = meter->uncoveredPixels();
     for (const EnumEntry<bench::ErrorRegion>& region : bench::kErrorRegions) {
         const std::vector<uint8_t> inRegion = bench::regionMask(meter->regions(), region.value);
         summary["region_pixels"][std::string(region.name)] = std::count(inRegion.begin(), inRegion.end(), uint8_t{1});

@@ -190,6 +190,7 @@ int runCompare(const std::vector<std::string>& rawArgs) {
         ReferenceImages references(outDir, *referenceSettings);
         auto meter = CauseMeter::create(*session, references, reference);
         if (!meter.ok()) return failure(meter.error());
+        metrics["uncovered_pixels"] = meter->uncoveredPixels();
         const SssMode shippedMode = session->scene->settings.mode;
         for (const auto& [mode, measured] : renders) {
             session->scene->settings.mode = *kSssModes.parse(mode);

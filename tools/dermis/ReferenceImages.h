@@ -29,7 +29,10 @@ struct ReferenceSettings {
     int width = 0;
     int height = 0;
     float density = 8.0f;            // quadrature samples per s^2 (dermis reference --density)
-    int samplesPerPixel = reference::kDefaultSamplesPerPixel;
+    // One sample at the pixel centre, where the engine rasterises and shades: a
+    // box-filtered pixel (more samples) also measures the engine's aliasing,
+    // which is not what the causes are about (docs/bench.md, "Sampling").
+    int samplesPerPixel = 1;
     int irradianceSizeTexels = 4096;  // the engine's UV irradiance for the matched reference
 };
 
