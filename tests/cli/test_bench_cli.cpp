@@ -142,7 +142,14 @@ TEST(BenchCli, CompareErrorsWithSssOffHaveNoScatterError) {
         EXPECT_EQ(errors["scatter"]["all"]["max_abs_difference"].get<double>(), 0.0) << mode;
         EXPECT_GT(errors["total"]["all"]["relative_rmse"].get<double>(), 0.0) << mode;
         EXPECT_EQ(errors["total"]["all"]["relative_rmse"], errors["irradiance"]["all"]["relative_rmse"]) << mode;
+        // Measured at pixel centres on both sides, the silhouette band is no worse than the face: 1.69%
+        // against 1.61% over all pixels (shadow maps against shadow rays). With box-filtered references
+        // (--spp 4, partly covered pixels left out) the band reads 6.9%, and with those pixels counted
+        // far more: both fail this bound.
+        EXPECT_LT(errors["irradiance"]["silhouette"]["relative_rmse"].get<double>(), 0.03) << mode;
     }
+    // The engine and the reference's centre rays agree on which pixels show the head.
+    EXPECT_EQ(metrics["uncovered_pixels"].get<int>(), 0);
     const ProcessResult again = runProcess(command);
     ASSERT_EQ(again.exitCode, 0) << again.err;
     EXPECT_NE(again.err.find("reusing"), std::string::npos) << again.err;
