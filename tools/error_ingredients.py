@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The error of a scene split by ingredient (docs/bench.md, "Error by ingredient").
 
-usage: tools/error_ingredients.py SCENE --out DIR [--size WxH] [--dermis PATH]
+usage: tools/error_ingredients.py SCENE --out DIR [--size WxH] [--density N]
+                                  [--irradiance-size N] [--dermis PATH]
 
 Runs `dermis compare SCENE --errors` once with every ingredient on, then once
 per ingredient with it switched off on both sides (the renderer and the CPU
@@ -96,6 +97,8 @@ def main():
     parser.add_argument("scene")
     parser.add_argument("--out", required=True)
     parser.add_argument("--size", default="320x180")
+    parser.add_argument("--density", help="the references' quadrature density (compare's default: 8)")
+    parser.add_argument("--irradiance-size", help="texels of the engine's irradiance for the matched reference")
     parser.add_argument("--dermis", default=str(Path(__file__).resolve().parent.parent / "build" / "dermis"))
     args = parser.parse_args()
     try:
@@ -105,11 +108,16 @@ def main():
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
 
-    results = {"(none)": run_compare(args.dermis, args.scene, out / "baseline", args.size, [], [])}
+    passed = []
+    if args.density:
+        passed += ["--density", args.density]
+    if args.irradiance_size:
+        passed += ["--irradiance-size", args.irradiance_size]
+    results = {"(none)": run_compare(args.dermis, args.scene, out / "baseline", args.size, [], passed)}
     for name, overrides in ingredient_overrides(scene).items():
         target = out / name
         seed_references(out / "baseline", target)
-        extra = ["--spp", "16"] if name == "pixel_sampling" else []
+        extra = passed + (["--spp", "16"] if name == "pixel_sampling" else [])
         results[name] = run_compare(args.dermis, args.scene, target, args.size, overrides, extra)
 
     shares = {name: {mode: {cause: {region: results["(none)"][mode][cause][region] - figures[mode][cause][region]
