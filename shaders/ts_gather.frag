@@ -18,7 +18,7 @@ layout(binding = 0) uniform sampler2D uBlurred[DERMIS_MAX_PROFILE_GAUSSIANS];
 layout(binding = 8) uniform sampler2D uTsm;
 layout(binding = 9) uniform sampler2D uAlbedo;  // G-buffer target 0: a = object id / 255
 layout(binding = 10) uniform usampler2D uDepthKey;  // G-buffer target 2: the view depth of the surface kept
-layout(binding = 11) uniform sampler2D uPixelIrradiance;  // the lighting pass's irradiance, the same light at this pixel
+layout(binding = DERMIS_UNIT_TS_PIXEL_IRRADIANCE) uniform sampler2D uPixelIrradiance;  // the lighting pass's irradiance, the same light at this pixel
 
 in vec3 vWorldPositionM;
 in vec2 vUv;

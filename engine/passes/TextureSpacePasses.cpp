@@ -72,7 +72,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 glBindTextureUnit(8, resources.texture(d.tsm));
                 glBindTextureUnit(9, resources.texture(d.albedo));
                 glBindTextureUnit(10, resources.texture(d.depthKey));
-                glBindTextureUnit(11, resources.texture(d.irradiance));
+                glBindTextureUnit(DERMIS_UNIT_TS_PIXEL_IRRADIANCE, resources.texture(d.irradiance));
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 // Only the surface the G-buffer kept: its own depth, pulled a
                 // little towards the camera so that the two programs' rounding
