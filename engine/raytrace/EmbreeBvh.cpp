@@ -17,6 +17,21 @@ RTCScene scene(void* handle) { return static_cast<RTCScene>(handle); }
 float above(float t) { return std::nextafter(t, std::numeric_limits<float>::infinity()); }
 float below(float t) { return std::nextafter(t, -std::numeric_limits<float>::infinity()); }
 
+// Embree's ray for tMin < t < tMax.
+RTCRay embreeRay(const Ray& ray, float tMin, float tMax) {
+    RTCRay out{};
+    out.org_x = ray.origin.x;
+    out.org_y = ray.origin.y;
+    out.org_z = ray.origin.z;
+    out.dir_x = ray.direction.x;
+    out.dir_y = ray.direction.y;
+    out.dir_z = ray.direction.z;
+    out.tnear = above(tMin);
+    out.tfar = below(tMax);
+    out.mask = 0xFFFFFFFFu;
+    return out;
+}
+
 }  // namespace
 
 EmbreeBvh EmbreeBvh::build(const std::vector<glm::vec3>& cornersM) {
@@ -78,15 +93,7 @@ bool EmbreeBvh::closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) 
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query{};
-    query.ray.org_x = ray.origin.x;
-    query.ray.org_y = ray.origin.y;
-    query.ray.org_z = ray.origin.z;
-    query.ray.dir_x = ray.direction.x;
-    query.ray.dir_y = ray.direction.y;
-    query.ray.dir_z = ray.direction.z;
-    query.ray.tnear = above(tMin);
-    query.ray.tfar = below(tMax);
-    query.ray.mask = 0xFFFFFFFFu;
+    query.ray = embreeRay(ray, tMin, tMax);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene(mScene), &context, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
@@ -98,16 +105,7 @@ bool EmbreeBvh::anyHit(const Ray& ray, float tMin, float tMax) const {
     if (!(tMin < tMax) || mTriangleCount == 0) return false;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay query{};
-    query.org_x = ray.origin.x;
-    query.org_y = ray.origin.y;
-    query.org_z = ray.origin.z;
-    query.dir_x = ray.direction.x;
-    query.dir_y = ray.direction.y;
-    query.dir_z = ray.direction.z;
-    query.tnear = above(tMin);
-    query.tfar = below(tMax);
-    query.mask = 0xFFFFFFFFu;
+    RTCRay query = embreeRay(ray, tMin, tMax);
     rtcOccluded1(scene(mScene), &context, &query);
     return query.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
