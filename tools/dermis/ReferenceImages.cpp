@@ -33,6 +33,13 @@ reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) 
     return options;
 }
 
+// 0.002 -> "0.2".
+std::string percentText(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", 100.0 * fraction);
+    return text;
+}
+
 Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& settings) {
     auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(settings));
     if (!renderer.ok()) return renderer.error();
@@ -53,7 +60,7 @@ std::string referenceOptionsHelp() {
            "  --target-error PCT the full and SSS-off references repeat with independent samples until\n"
            "                     the estimated relative RMSE of their sampling noise is at most PCT\n"
            "                     percent (default " +
-           std::to_string(100.0 * reference::kDefaultTargetRelativeRmse).substr(0, 3) +
+           percentText(reference::kDefaultTargetRelativeRmse) +
            ")\n"
            "  --max-passes N     at most N passes of each, up to " + std::to_string(reference::kMaxProgressivePasses) +
            " (default " + std::to_string(reference::kDefaultProgressivePasses) + ")\n";
