@@ -57,8 +57,8 @@ std::string referenceOptionsHelp() {
            ")\n"
            "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
            "                     (default 4096)\n"
-           "  --target-error PCT the full and SSS-off references repeat with independent samples until\n"
-           "                     the estimated relative RMSE of their sampling noise is at most PCT\n"
+           "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
+           "                     rays until the estimated relative RMSE of their noise is at most PCT\n"
            "                     percent (default " +
            percentText(reference::kDefaultTargetRelativeRmse) +
            ")\n"
