@@ -10,7 +10,7 @@ namespace {
 
 constexpr size_t kFirstSlots = 1024;
 // A table grows (doubling) or, at its largest, turns over when it is this full.
-constexpr double kMaxLoad = 0.7;
+constexpr double kMaxLoad = 0.5;
 
 uint32_t bitsOf(float f) {
     uint32_t bits = 0;

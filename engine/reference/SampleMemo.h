@@ -43,8 +43,8 @@ struct SampleEntry {
 };
 
 // Entries kept at most (both generations of every shard), 56 bytes each in tables
-// at most 70 % full: about 1 GB.
-constexpr size_t kDefaultSampleMemoCapacity = 12'000'000;
+// at most half full (short probe sequences): about 1 GB.
+constexpr size_t kDefaultSampleMemoCapacity = 8'000'000;
 
 class SampleMemo final : public SampleValues {
 public:

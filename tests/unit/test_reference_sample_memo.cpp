@@ -60,7 +60,7 @@ TEST(SampleMemo, ASmallCapacityForgetsButNeverLies) {
             ASSERT_EQ(memo.valueAt(t, b, nullptr), glm::vec3(float(t), b.x, b.y)) << t;
         }
     }
-    EXPECT_LT(memo.size(), 2'000'000u / 7);          // some were dropped (a shard's table holds 716)
+    EXPECT_LT(memo.size(), 2'000'000u / 7);          // some were dropped (a shard's table holds 512)
     EXPECT_GT(source.calls.load(), 2'000'000u / 7);  // and computed again
     // Put back from outside (the entries a cache kept), they are found without the source.
     SampleMemo copy(source, 1'000'000);
