@@ -1,7 +1,7 @@
 #include "env/ShTransfer.h"
 
 #include "core/Hash.h"
-#include "raytrace/Bvh.h"
+#include "raytrace/EmbreeBvh.h"
 #include "raytrace/ParallelFor.h"
 #include "raytrace/Sampling.h"
 
@@ -53,7 +53,7 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
     std::vector<glm::vec3> corners;
     corners.reserve(mesh.indices.size());
     for (uint32_t index : mesh.indices) corners.push_back(mesh.vertices[index].position);
-    const raytrace::Bvh bvh = raytrace::Bvh::build(corners);
+    const raytrace::EmbreeBvh bvh = raytrace::EmbreeBvh::build(corners);
     const float diagonal = glm::length(mesh.bounds().size());
     const float offset = kRayOffsetPerDiagonal * diagonal;
     const float tMax = 2.0f * diagonal + offset;  // beyond every occluder

@@ -4,6 +4,8 @@
 // surface-area-heuristic build (Wald 2007, "On fast construction of SAH-based
 // bounding volume hierarchies"), Moller-Trumbore triangle tests (1997).
 
+#include "raytrace/TriangleScene.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -11,29 +13,17 @@
 
 namespace dermis::raytrace {
 
-struct Ray {
-    glm::vec3 origin{0.0f};
-    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // need not be unit length; t is in its units
-};
-
-struct BvhHit {
-    float t = 0.0f;
-    uint32_t triangle = 0;  // index in the order the triangles were given
-    float u = 0.0f;         // barycentric weight of the triangle's second vertex
-    float v = 0.0f;         // and of its third
-};
-
-class Bvh {
+class Bvh final : public TriangleScene {
 public:
     // Three corners per triangle, in order. Degenerate triangles are kept but never hit.
     static Bvh build(const std::vector<glm::vec3>& cornersM);
 
     // The nearest hit with tMin < t < tMax, if any.
-    bool closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) const;
+    bool closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) const override;
     // Whether anything lies along the ray with tMin < t < tMax.
-    bool anyHit(const Ray& ray, float tMin, float tMax) const;
+    bool anyHit(const Ray& ray, float tMin, float tMax) const override;
 
-    size_t triangleCount() const { return mTriangleIds.size(); }
+    size_t triangleCount() const override { return mTriangleIds.size(); }
     size_t nodeCount() const { return mNodes.size(); }
 
 private:

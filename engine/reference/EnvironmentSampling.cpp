@@ -22,10 +22,25 @@ void normaliseCdf(double* cdf, size_t entries) {
     cdf[entries - 1] = 1.0;
 }
 
+// Entries of a guide table: a power of two, so that g / kGuideSize and u x kGuideSize are exact.
+constexpr uint32_t kGuideSize = 1024;
+
+// The guide table of a CDF of `bins` + 1 entries: entry g is the first index i with cdf[i] > g / kGuideSize.
+void buildGuide(const double* cdf, int bins, uint32_t* guide) {
+    for (uint32_t g = 0; g <= kGuideSize; ++g) {
+        guide[g] = uint32_t(std::upper_bound(cdf, cdf + bins + 1, double(g) / kGuideSize) - cdf);
+    }
+}
+
 // The bin b with cdf[b] <= u < cdf[b + 1] (bins of zero probability are never
-// chosen) and where u lies inside it, in [0, 1).
-std::pair<int, double> pickBin(const double* cdf, int bins, double u) {
-    const int bin = std::clamp(int(std::upper_bound(cdf, cdf + bins + 1, u) - cdf) - 1, 0, bins - 1);
+// chosen) and where u lies inside it, in [0, 1). The first index with cdf > u lies
+// between the guide's entries for g / kGuideSize <= u < (g + 1) / kGuideSize: the
+// search is the full one's, over a few entries.
+std::pair<int, double> pickBin(const double* cdf, int bins, double u, const uint32_t* guide) {
+    const auto g = std::min(uint32_t(std::max(u, 0.0) * kGuideSize), kGuideSize - 1);
+    const double* first = cdf + guide[g];
+    const double* last = cdf + std::min<uint32_t>(guide[g + 1] + 1, uint32_t(bins) + 1);
+    const int bin = std::clamp(int(std::upper_bound(first, last, u) - cdf) - 1, 0, bins - 1);
     const double width = cdf[bin + 1] - cdf[bin];
     const double within = width > 0.0 ? (u - cdf[bin]) / width : 0.5;
     return {bin, std::clamp(within, 0.0, std::nextafter(1.0, 0.0))};
@@ -54,13 +69,20 @@ EnvironmentDistribution::EnvironmentDistribution(Image map) : mMap(std::move(map
     }
     mTotalWeight = mRowCdf.back();
     normaliseCdf(mRowCdf.data(), mRowCdf.size());
+    mRowGuide.resize(kGuideSize + 1);
+    buildGuide(mRowCdf.data(), height, mRowGuide.data());
+    mColumnGuides.resize(size_t(height) * (kGuideSize + 1));
+    for (int v = 0; v < height; ++v) {
+        buildGuide(&mColumnCdfs[size_t(v) * (size_t(width) + 1)], width, &mColumnGuides[size_t(v) * (kGuideSize + 1)]);
+    }
 }
 
 EnvironmentSample EnvironmentDistribution::sample(const glm::vec2& u) const {
     const int width = mMap.width;
     const int height = mMap.height;
-    const auto [row, withinRow] = pickBin(mRowCdf.data(), height, double(u.x));
-    const auto [column, withinColumn] = pickBin(&mColumnCdfs[size_t(row) * (size_t(width) + 1)], width, double(u.y));
+    const auto [row, withinRow] = pickBin(mRowCdf.data(), height, double(u.x), mRowGuide.data());
+    const auto [column, withinColumn] = pickBin(&mColumnCdfs[size_t(row) * (size_t(width) + 1)], width, double(u.y),
+                                                &mColumnGuides[size_t(row) * (kGuideSize + 1)]);
     // Uniform in (phi, cos theta) over the texel's patch: uniform in solid angle.
     const double cosTop = std::cos(kPi * row / height);
     const double cosBottom = std::cos(kPi * (row + 1) / height);
@@ -91,6 +113,16 @@ float EnvironmentDistribution::pdfOfTexel(const glm::ivec2& texel) const {
 float EnvironmentDistribution::pdfPerSr(const glm::vec3& direction) const {
     if (empty()) return 0.0f;
     return pdfOfTexel(texelOf(direction));
+}
+
+EnvironmentSample EnvironmentDistribution::lookUp(const glm::vec3& direction) const {
+    EnvironmentSample sample;
+    sample.direction = direction;
+    if (empty()) return sample;
+    const glm::ivec2 texel = texelOf(direction);
+    sample.pdfPerSr = pdfOfTexel(texel);
+    sample.radiance = glm::vec3(mMap.at(texel.x, texel.y));
+    return sample;
 }
 
 glm::vec3 EnvironmentDistribution::radiance(const glm::vec3& direction) const {

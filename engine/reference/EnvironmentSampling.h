@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace dermis::reference {
@@ -44,6 +45,8 @@ public:
     float pdfPerSr(const glm::vec3& direction) const;
     // The map's radiance towards `direction` (unit, map space), piecewise constant.
     glm::vec3 radiance(const glm::vec3& direction) const;
+    // Both at once (one texel look-up): what sample() would have given for `direction`.
+    EnvironmentSample lookUp(const glm::vec3& direction) const;
 
 private:
     glm::ivec2 texelOf(const glm::vec3& direction) const;
@@ -53,6 +56,10 @@ private:
     std::vector<float> mLuminance;        // per texel, row-major
     std::vector<double> mRowCdf;          // height + 1 entries, 0 .. 1
     std::vector<double> mColumnCdfs;      // per row, width + 1 entries each, 0 .. 1
+    // Guide tables (Chen & Asau 1974, the indexed search): entry g of a CDF's table is the
+    // first index whose value exceeds g / kGuideSize, so a search starts next to its answer.
+    std::vector<uint32_t> mRowGuide;      // kGuideSize + 1 entries
+    std::vector<uint32_t> mColumnGuides;  // per row, kGuideSize + 1 entries each
     double mTotalWeight = 0.0;            // sum of luminance x texel solid angle
 };
 

@@ -112,7 +112,8 @@ glm::vec3 coneDirection(const glm::vec3& axis, float sinRadius, const glm::vec2&
 
 }  // namespace
 
-Result<ReferenceLighting> ReferenceLighting::create(const Scene& scene, const Bvh& occluders, int environmentSamples) {
+Result<ReferenceLighting> ReferenceLighting::create(const Scene& scene, const raytrace::TriangleScene& occluders,
+                                                    int environmentSamples) {
     if (environmentSamples < kMinEnvironmentSamples || environmentSamples > kMaxEnvironmentSamples) {
         return makeError("reference", "the environment samples must be from " + std::to_string(kMinEnvironmentSamples) +
                                           " to " + std::to_string(kMaxEnvironmentSamples) + " (got " +
@@ -127,7 +128,7 @@ Result<ReferenceLighting> ReferenceLighting::create(const Scene& scene, const Bv
     return ReferenceLighting(scene, occluders, std::move(environmentMap), environmentSamples);
 }
 
-ReferenceLighting::ReferenceLighting(const Scene& scene, const Bvh& occluders, Image environmentMap,
+ReferenceLighting::ReferenceLighting(const Scene& scene, const raytrace::TriangleScene& occluders, Image environmentMap,
                                      int environmentSamples)
     : mOccluders(&occluders),
       mDiscSamples(discSamples(kAreaLightSamples)),
@@ -178,7 +179,7 @@ float ReferenceLighting::energyLeftForDiffuse(float cosTheta, float roughness, f
     return std::clamp(1.0f - rhoS * rhoDt, 0.0f, 1.0f);
 }
 
-glm::vec3 ReferenceLighting::irradiance(const SurfacePoint& point, LightVisibility* visibility) const {
+glm::vec3 ReferenceLighting::irradiance(const SurfacePoint& point, LightVisibility* visibility, uint32_t sampleSet) const {
     glm::vec3 e = mAmbient;
     const glm::vec3& n = point.shadingNormal;
     for (size_t i = 0; i < mLights.size(); ++i) {
@@ -208,11 +209,11 @@ glm::vec3 ReferenceLighting::irradiance(const SurfacePoint& point, LightVisibili
         const float share = mEnergyConservation ? energyLeftForDiffuse(nDotL, point.roughness, point.rhoS) : 1.0f;
         e += radiance * (nDotL * share);
     }
-    return e + environmentIrradiance(point);
+    return e + environmentIrradiance(point, sampleSet);
 }
 
-glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point) const {
-    if (mEnvironment.empty() || !(mEnvironmentIntensity > 0.0f)) return glm::vec3(0.0f);
+glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point, uint32_t sampleSet) const {
+    if (!hasEnvironment()) return glm::vec3(0.0f);
     const glm::vec3& n = point.shadingNormal;
     const float mapCount = float(mMapSquareSamples.size());
     const float cosineCount = float(mCosineSquareSamples.size());
@@ -233,7 +234,7 @@ glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point) co
         const float share = mEnergyConservation ? energyLeftForDiffuse(cosTheta, point.roughness, point.rhoS) : 1.0f;
         return radiance * (cosTheta * share / density);
     };
-    const uint32_t seed = positionSeed(point.positionM);
+    const uint32_t seed = positionSeed(point.positionM) ^ (sampleSet == 0 ? 0u : lowbias32(sampleSet * 0x85ebca6bu));
     const glm::vec2 mapShift(unitFromHash(lowbias32(seed + 1u)), unitFromHash(lowbias32(seed + 2u)));
     const glm::vec2 cosineShift(unitFromHash(lowbias32(seed + 3u)), unitFromHash(lowbias32(seed + 4u)));
     glm::dvec3 sum(0.0);
@@ -250,8 +251,8 @@ glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point) co
         const glm::vec2 disc = raytrace::concentricDisc(u);
         const float up = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));
         const glm::vec3 omega = glm::normalize(disc.x * t + disc.y * b + up * n);
-        const glm::vec3 mapDirection = glm::transpose(mWorldFromMap) * omega;
-        sum += glm::dvec3(term(omega, mEnvironment.radiance(mapDirection), mEnvironment.pdfPerSr(mapDirection), false));
+        const EnvironmentSample seen = mEnvironment.lookUp(glm::transpose(mWorldFromMap) * omega);
+        sum += glm::dvec3(term(omega, seen.radiance, seen.pdfPerSr, false));
     }
     return glm::vec3(sum) * mEnvironmentIntensity;
 }

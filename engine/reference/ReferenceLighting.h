@@ -61,6 +61,10 @@ constexpr int kAreaLightSamples = 64;
 // 160x90 default head took 165 s with 16), and the integral averages the
 // independent noise of its many samples per pixel.
 constexpr int kEnvironmentSamples = 16;
+// The same at the subsurface integral's samples x_i, which each x_o averages by
+// thousands: fewer rays each make a pass cheaper but noisier (docs/reference.md,
+// "Progressive mode", measures the trade; 16 reaches 0.2 % in the fewest passes).
+constexpr int kIntegralEnvironmentSamples = 16;
 constexpr int kMinEnvironmentSamples = 2;  // one per technique
 constexpr int kMaxEnvironmentSamples = 65536;
 
@@ -84,19 +88,21 @@ public:
     // Loads the scene's environment map (loadEnvironmentSource) when it has one:
     // its errors, and an environmentSamples outside [kMinEnvironmentSamples,
     // kMaxEnvironmentSamples], are returned.
-    static Result<ReferenceLighting> create(const Scene& scene, const Bvh& occluders,
+    static Result<ReferenceLighting> create(const Scene& scene, const raytrace::TriangleScene& occluders,
                                             int environmentSamples = kEnvironmentSamples);
     // `occluders` must outlive this object. `environmentMap`: the radiance map of
     // scene.environment in map space (the scene's source is not read here), empty
     // for none; the environment's intensity and rotation apply to it.
     // `environmentSamples` is clamped to [kMinEnvironmentSamples, kMaxEnvironmentSamples].
-    ReferenceLighting(const Scene& scene, const Bvh& occluders, Image environmentMap = Image{},
+    ReferenceLighting(const Scene& scene, const raytrace::TriangleScene& occluders, Image environmentMap = Image{},
                       int environmentSamples = kEnvironmentSamples);
 
-    // E at the point (energy conservation on the way in included).
-    glm::vec3 irradiance(const SurfacePoint& point, LightVisibility* visibility = nullptr) const;
+    // E at the point (energy conservation on the way in included). `sampleSet`
+    // picks an independent set of environment rays (0: the default set).
+    glm::vec3 irradiance(const SurfacePoint& point, LightVisibility* visibility = nullptr, uint32_t sampleSet = 0) const;
     // E_env alone (0 without an environment).
-    glm::vec3 environmentIrradiance(const SurfacePoint& point) const;
+    glm::vec3 environmentIrradiance(const SurfacePoint& point, uint32_t sampleSet = 0) const;
+    bool hasEnvironment() const { return !mEnvironment.empty() && mEnvironmentIntensity > 0.0f; }
     // The fraction of light `index` that reaches the point (1 for an unshadowed
     // light), with the light's centre towards `l`; sets its bits in `visibility`.
     float lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
@@ -119,7 +125,7 @@ private:
         float radiusM = 0.0f;           // spot and point: the sphere's radius; 0 = delta
     };
 
-    const Bvh* mOccluders;
+    const raytrace::TriangleScene* mOccluders;
     std::vector<PreparedLight> mLights;
     std::vector<glm::vec2> mDiscSamples;  // kAreaLightSamples points, uniform over the unit disc
     glm::vec3 mAmbient{0.0f};

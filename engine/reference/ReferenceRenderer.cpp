@@ -2,6 +2,7 @@
 
 #include "import/CharacterPose.h"
 
+#include "core/Hash.h"
 #include "core/Log.h"
 #include "raytrace/ParallelFor.h"
 #include "import/ModelLoader.h"
@@ -9,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace dermis::reference {
@@ -79,14 +81,26 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
         renderer.mSurfaces.push_back(std::make_unique<CharacterSurface>(std::move(*surface)));
     }
     renderer.mFirstTriangle.push_back(static_cast<uint32_t>(corners.size() / 3));
-    renderer.mBvh = std::make_unique<Bvh>(Bvh::build(corners));
+    if (options.embree) {
+        renderer.mBvh = std::make_unique<raytrace::EmbreeBvh>(raytrace::EmbreeBvh::build(corners));
+    } else {
+        renderer.mBvh = std::make_unique<raytrace::Bvh>(raytrace::Bvh::build(corners));
+    }
     auto lighting = ReferenceLighting::create(renderer.mScene, *renderer.mBvh, options.environmentSamples);
     if (!lighting.ok()) return lighting.error();
     renderer.mLighting = std::make_unique<ReferenceLighting>(std::move(*lighting));
+    auto integralLighting = ReferenceLighting::create(renderer.mScene, *renderer.mBvh, options.integralEnvironmentSamples);
+    if (!integralLighting.ok()) return integralLighting.error();
+    renderer.mIntegralLighting = std::make_unique<ReferenceLighting>(std::move(*integralLighting));
     renderer.mStats.triangles = renderer.mBvh->triangleCount();
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         renderer.mExactValues.push_back(
-            std::make_unique<ExactLightingValues>(*renderer.mSurfaces[c], *renderer.mLighting, scene.settings.sss.mix));
+            std::make_unique<ExactLightingValues>(*renderer.mSurfaces[c], *renderer.mIntegralLighting, scene.settings.sss.mix));
+        // Only under an environment are a sample's values dear enough to keep: without one, looking a
+        // sample up cost more than shading it again (docs/reference.md, "Speed").
+        renderer.mExactMemos.push_back(options.sampleMemo && scene.environment.enabled()
+                                           ? std::make_unique<SampleMemo>(*renderer.mExactValues.back())
+                                           : nullptr);
         renderer.mEngineValues.emplace_back();
         if (c >= options.engineIrradiance.size() || options.engineIrradiance[c].empty()) continue;
         auto engine = EngineIrradiance::create(*renderer.mSurfaces[c], options.engineIrradiance[c]);
@@ -157,7 +171,10 @@ MapFootprint ReferenceRenderer::pixelFootprint(const Hit& hit, const Ray& ray, c
 }
 
 const SampleValues* ReferenceRenderer::valuesFor(Quantity quantity, size_t character) const {
-    if (quantity == Quantity::Diffuse) return mExactValues[character].get();
+    if (quantity == Quantity::Diffuse) {
+        if (mExactMemos[character]) return mExactMemos[character].get();
+        return mExactValues[character].get();
+    }
     return mEngineValues[character].get();
 }
 
@@ -181,7 +198,7 @@ glm::vec4 ReferenceRenderer::shadeHit(Quantity quantity, const Hit& hit, const R
     } else if (mIntegrators[c]) {
         diffuse = mIntegrators[c]->integrate(point.positionM, *baseSamples, *values) * albedoPower(point.albedo, 1.0f - mix);
     } else {
-        diffuse = mLighting->irradiance(point) * albedoPower(point.albedo, mix) * albedoPower(point.albedo, 1.0f - mix);
+        diffuse = mLighting->irradiance(point, nullptr, mPass) * albedoPower(point.albedo, mix) * albedoPower(point.albedo, 1.0f - mix);
     }
     diffuse *= mLighting->outgoingFactor(point, towardsViewer);
     return glm::vec4(sanitize(diffuse), 1.0f);
@@ -203,8 +220,11 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
         for (size_t r = item * itemSize; r < std::min(rays.size(), (item + 1) * itemSize); ++r) perRay(r);
     };
 
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
     std::vector<Hit> hits(rays.size());
     parallelFor(items, threads, [&](size_t item) { forItem(item, [&](size_t r) { hits[r] = trace(rays[r], tMin, tMax); }); });
+    const auto traced = Clock::now();
 
     // Shade the base cells that some SSS hit reads, once each.
     std::vector<std::vector<std::vector<Sample>>> baseSamples(mSurfaces.size());
@@ -234,6 +254,7 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
         }, mOptions.showProgress ? "reference: irradiance (" + mSurfaces[c]->name() + ")" : std::string());
     }
 
+    const auto shadedBase = Clock::now();
     std::vector<glm::vec4> out(rays.size());
     parallelFor(items, threads, [&](size_t item) {
         forItem(item, [&](size_t r) {
@@ -242,42 +263,161 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
                               hit.character >= 0 ? &baseSamples[size_t(hit.character)] : nullptr);
         });
     }, mOptions.showProgress ? "reference: scattering" : std::string());
+    const auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+    mStats.traceSeconds = seconds(start, traced);
+    mStats.baseCellSeconds = seconds(traced, shadedBase);
+    mStats.scatterSeconds = seconds(shadedBase, Clock::now());
     mStats.emptyIrradianceReads = 0;
     for (const auto& engine : mEngineValues) {
         if (engine) mStats.emptyIrradianceReads += engine->emptyReads();
     }
+    mStats.sampleLookups = 0;
+    mStats.sampleMemoHits = 0;
+    for (const auto& memo : mExactMemos) {
+        if (!memo) continue;
+        mStats.sampleLookups += memo->lookups();
+        mStats.sampleMemoHits += memo->hits();
+    }
     return out;
 }
 
-Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height) {
+Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, const std::vector<uint32_t>* only) {
     const CameraRays camera(mScene.camera, width, height);
     const int spp = mOptions.samplesPerPixel;
+    std::vector<uint32_t> pixels;
+    if (only) {
+        pixels = *only;
+    } else {
+        pixels.resize(size_t(width) * size_t(height));
+        for (size_t p = 0; p < pixels.size(); ++p) pixels[p] = uint32_t(p);
+    }
     std::vector<Ray> rays;
-    rays.reserve(size_t(width) * size_t(height) * size_t(spp));
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
-                rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
-            }
+    rays.reserve(pixels.size() * size_t(spp));
+    for (const uint32_t p : pixels) {
+        const int x = int(p % uint32_t(width)), y = int(p / uint32_t(width));
+        for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
+            rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
         }
     }
-    // One work item per pixel row.
+    // One work item per pixel row's worth of sub-samples.
     const std::vector<glm::vec4> values =
         evaluate(quantity, rays, mScene.camera.nearM, mScene.camera.farM, &camera, size_t(width) * size_t(spp));
     Image image;
     image.width = width;
     image.height = height;
     image.colourSpace = ColourSpace::Linear;
-    image.texels.resize(size_t(width) * size_t(height));
-    for (size_t p = 0; p < image.texels.size(); ++p) {
+    image.texels.assign(size_t(width) * size_t(height), glm::vec4(0.0f));
+    for (size_t i = 0; i < pixels.size(); ++i) {
         glm::dvec4 sum(0.0);
-        for (size_t s = 0; s < size_t(spp); ++s) sum += glm::dvec4(values[p * size_t(spp) + s]);
-        image.texels[p] = glm::vec4(sum / double(spp));
+        for (size_t s = 0; s < size_t(spp); ++s) sum += glm::dvec4(values[i * size_t(spp) + s]);
+        image.texels[pixels[i]] = glm::vec4(sum / double(spp));
     }
     return image;
 }
 
 Image ReferenceRenderer::renderDiffuse(int width, int height) { return renderPixels(Quantity::Diffuse, width, height); }
+
+void ReferenceRenderer::usePass(uint32_t pass) {
+    if (pass == mPass) return;
+    mPass = pass;
+    // Without an environment every pass's samples have the same values: the memo stays.
+    if (!mLighting->hasEnvironment()) return;
+    for (size_t c = 0; c < mSurfaces.size(); ++c) {
+        mExactMemos[c].reset();
+        mExactValues[c] =
+            std::make_unique<ExactLightingValues>(*mSurfaces[c], *mIntegralLighting, mScene.settings.sss.mix, pass);
+        if (mOptions.sampleMemo) mExactMemos[c] = std::make_unique<SampleMemo>(*mExactValues[c]);
+    }
+}
+
+Image ReferenceRenderer::renderDiffuseProgressive(int width, int height, const ProgressiveSettings& settings) {
+    const size_t pixels = size_t(width) * size_t(height);
+    usePass(0);
+    const Image first = renderPixels(Quantity::Diffuse, width, height);
+    std::vector<glm::dvec3> sum(pixels), sumSquares(pixels);
+    std::vector<uint8_t> covered(pixels);  // alpha 1: the pixels the estimate is over
+    for (size_t p = 0; p < pixels; ++p) {
+        sum[p] = glm::dvec3(first.texels[p]);
+        sumSquares[p] = sum[p] * sum[p];
+        covered[p] = first.texels[p].a == 1.0f;
+    }
+    mStats.passes = 1;
+    mStats.estimatedRelativeRmse = 0.0;
+    if (!mLighting->hasEnvironment()) return first;  // nothing random: the image is exact for its settings
+
+    auto report = [&](const char* what) {
+        log::info("reference: " + std::to_string(mStats.passes) + " pass(es), " + what + " relative RMSE of the noise " +
+                  std::to_string(100.0 * mStats.estimatedRelativeRmse) + " % (target " +
+                  std::to_string(100.0 * settings.targetRelativeRmse) + " %)");
+    };
+    // The relative RMSE of the mean of n passes over `subset` (empty: every covered pixel):
+    // the passes' sample variance / n per pixel and channel, against the mean's RMS.
+    auto estimate = [&](const std::vector<glm::dvec3>& s, const std::vector<glm::dvec3>& s2, double n,
+                        const std::vector<uint32_t>& subset, double passesInImage) {
+        double noise = 0.0, signal = 0.0;
+        auto add = [&](size_t p) {
+            if (!covered[p]) return;
+            const glm::dvec3 mean = s[p] / n;
+            const glm::dvec3 variance = glm::max((s2[p] - n * mean * mean) / (n - 1.0), glm::dvec3(0.0));
+            noise += (variance.r + variance.g + variance.b) / passesInImage;
+            signal += glm::dot(mean, mean);
+        };
+        if (subset.empty()) {
+            for (size_t p = 0; p < pixels; ++p) add(p);
+        } else {
+            for (const uint32_t p : subset) add(p);
+        }
+        return signal > 0.0 ? std::sqrt(noise / signal) : 0.0;
+    };
+
+    // A second pass over every kProbeStride-th covered pixel tells the first pass's noise at
+    // 1/kProbeStride of the cost: often it is already within the target.
+    constexpr uint32_t kProbeStride = 8;
+    std::vector<uint32_t> probe;
+    for (size_t p = 0; p < pixels; ++p) {
+        if (covered[p] && lowbias32(uint32_t(p)) % kProbeStride == 0) probe.push_back(uint32_t(p));
+    }
+    if (probe.empty()) return first;
+    usePass(1);
+    const Image probed = renderPixels(Quantity::Diffuse, width, height, &probe);
+    {
+        std::vector<glm::dvec3> s = sum, s2 = sumSquares;
+        for (const uint32_t p : probe) {
+            const glm::dvec3 v(probed.texels[p]);
+            s[p] += v;
+            s2[p] += v * v;
+        }
+        mStats.estimatedRelativeRmse = estimate(s, s2, 2.0, probe, 1.0);
+    }
+    report("probed");
+    if (mStats.estimatedRelativeRmse <= settings.targetRelativeRmse || settings.maxPasses <= 1) {
+        usePass(0);
+        return first;
+    }
+    std::vector<double> alphaSum(pixels);
+    for (size_t p = 0; p < pixels; ++p) alphaSum[p] = first.texels[p].a;
+    for (int pass = 1; pass < settings.maxPasses; ++pass) {
+        usePass(uint32_t(pass));
+        const Image image = renderPixels(Quantity::Diffuse, width, height);
+        for (size_t p = 0; p < pixels; ++p) {
+            const glm::dvec3 v(image.texels[p]);
+            sum[p] += v;
+            sumSquares[p] += v * v;
+            alphaSum[p] += image.texels[p].a;
+        }
+        ++mStats.passes;
+        const double n = mStats.passes;
+        mStats.estimatedRelativeRmse = estimate(sum, sumSquares, n, {}, n);
+        report("estimated");
+        if (mStats.estimatedRelativeRmse <= settings.targetRelativeRmse) break;
+    }
+    usePass(0);
+    Image image = first;
+    for (size_t p = 0; p < pixels; ++p) {
+        image.texels[p] = glm::vec4(glm::vec3(sum[p] / double(mStats.passes)), float(alphaSum[p] / mStats.passes));
+    }
+    return image;
+}
 
 Image ReferenceRenderer::renderScatterChange(int width, int height) {
     return renderPixels(Quantity::ScatterChange, width, height);

@@ -32,11 +32,13 @@
 #include "core/Image.h"
 #include "core/Result.h"
 #include "raytrace/Bvh.h"
+#include "raytrace/EmbreeBvh.h"
 #include "reference/CharacterSurface.h"
 #include "reference/DiffusionIntegrator.h"
 #include "reference/EngineIrradiance.h"
 #include "reference/PixelSampling.h"
 #include "reference/ReferenceLighting.h"
+#include "reference/SampleMemo.h"
 #include "mesh/Model.h"
 #include "scene/Scene.h"
 
@@ -63,10 +65,27 @@ struct ReferenceOptions {
     // rays per shading point for the environment's light (ReferenceLighting.h), kMinEnvironmentSamples
     // to kMaxEnvironmentSamples; unused without an environment
     int environmentSamples = kEnvironmentSamples;
+    // the same for each sample x_i of the subsurface integral (ReferenceLighting.h); same range
+    int integralEnvironmentSamples = kIntegralEnvironmentSamples;
     // per character (scene order); an empty Image = this character uses the exact lighting
     std::vector<Image> engineIrradiance;   // empty: none at all (EngineIrradiance.h for the layout)
+    // The fast path (Embree, each sample's value computed once) and the slow one it
+    // replaced (the in-house BVH, every value computed where it is needed), kept to check it.
+    bool embree = true;
+    bool sampleMemo = true;
     int threads = 0;            // 0: one per hardware thread
     bool showProgress = false;  // progress bars on stderr
+};
+
+// The progressive mode's default goal: the estimated relative RMSE of the
+// image's sampling noise over its covered pixels (docs/reference.md).
+constexpr double kDefaultTargetRelativeRmse = 0.002;
+constexpr int kMaxProgressivePasses = 64;
+constexpr int kDefaultProgressivePasses = 8;
+
+struct ProgressiveSettings {
+    double targetRelativeRmse = kDefaultTargetRelativeRmse;  // > 0
+    int maxPasses = kDefaultProgressivePasses;                // 1 to kMaxProgressivePasses
 };
 
 struct ReferenceStats {
@@ -75,6 +94,17 @@ struct ReferenceStats {
     size_t shadedBaseCells = 0;  // those the last call needed
     size_t sssHits = 0;        // rays (sub-samples) of the last call that landed on an SSS character
     size_t emptyIrradianceReads = 0;  // engine irradiance reads with no covered texel in reach, all calls
+    size_t sampleLookups = 0;  // exact-lighting values the integral asked for, all calls
+    size_t sampleMemoHits = 0;  // those already computed (SampleMemo.h)
+    // Wall seconds of the last call's stages: the rays' nearest hits, the base
+    // cells' samples, the rest (the integral per sub-sample, its finer cells).
+    double traceSeconds = 0.0;
+    double baseCellSeconds = 0.0;
+    double scatterSeconds = 0.0;
+    // The last progressive render: full passes taken and the estimated relative
+    // RMSE of its noise (0 without an environment: one pass).
+    int passes = 0;
+    double estimatedRelativeRmse = 0.0;
 };
 
 // renderThicknessMm where the ray through the part leaves without meeting the character again.
@@ -94,6 +124,16 @@ public:
     std::vector<glm::vec4> scatterChangeAlongRays(const std::vector<Ray>& rays, float tMin, float tMax);
     // The scene camera's view at width x height, samplesPerPixel sub-samples each.
     Image renderDiffuse(int width, int height);
+    // renderDiffuse (pass 0), then passes with independent environment rays until
+    // the estimated relative RMSE of the mean's noise, from the spread of the
+    // passes over the covered pixels, is at most the target (or maxPasses); the
+    // image is the passes' mean and each estimate is logged. A second pass over
+    // one pixel in 8 first estimates pass 0's noise, which is often within the
+    // target already. Without an environment nothing is random: one pass. The
+    // sub-samples' positions are part of the pixel's definition (the same every
+    // pass) and the quadrature's error (the density) is not noise: docs/reference.md
+    // gives both.
+    Image renderDiffuseProgressive(int width, int height, const ProgressiveSettings& settings);
     // Delta at the same sub-samples as renderDiffuse: 0 on characters without SSS or
     // without an engine texture, and everywhere when SSS is off.
     Image renderScatterChange(int width, int height);
@@ -126,18 +166,24 @@ private:
     // The quantity along each ray; with a camera, maps are read at its pixel footprint.
     std::vector<glm::vec4> evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin, float tMax,
                                     const CameraRays* camera, size_t itemSize);
-    Image renderPixels(Quantity quantity, int width, int height);
+    // Every pixel, or only those listed (the others 0).
+    Image renderPixels(Quantity quantity, int width, int height, const std::vector<uint32_t>* only = nullptr);
+    // Selects pass `pass`'s sub-samples and environment rays (0: the default ones).
+    void usePass(uint32_t pass);
 
     Scene mScene;
     ReferenceOptions mOptions;
     std::vector<std::unique_ptr<CharacterSurface>> mSurfaces;
     std::vector<uint32_t> mFirstTriangle;  // per character, into the BVH's triangle order; plus the total
-    std::unique_ptr<Bvh> mBvh;
-    std::unique_ptr<ReferenceLighting> mLighting;
+    std::unique_ptr<raytrace::TriangleScene> mBvh;
+    std::unique_ptr<ReferenceLighting> mLighting;          // at the points the camera sees
+    std::unique_ptr<ReferenceLighting> mIntegralLighting;  // at the integral's samples
     std::vector<std::unique_ptr<DiffusionIntegrator>> mIntegrators;  // per character, width-scaled profile (null: local)
     std::vector<std::unique_ptr<ExactLightingValues>> mExactValues;    // per character
+    std::vector<std::unique_ptr<SampleMemo>> mExactMemos;              // per character, over mExactValues (or null)
     std::vector<std::unique_ptr<EngineIrradiance>> mEngineValues;      // per character (null: no texture)
     ReferenceStats mStats;
+    uint32_t mPass = 0;
 };
 
 }  // namespace dermis::reference

@@ -11,7 +11,7 @@ glm::vec3 albedoPower(const glm::vec3& albedo, float exponent) {
 
 glm::vec3 ExactLightingValues::valueAt(uint32_t triangle, const glm::vec2& b, LightVisibility* visibility) const {
     const SurfacePoint point = mSurface->pointAt(triangle, b.x, b.y);
-    return mLighting->irradiance(point, visibility) * albedoPower(point.albedo, mMix);
+    return mLighting->irradiance(point, visibility, mSampleSet) * albedoPower(point.albedo, mMix);
 }
 
 }  // namespace dermis::reference

@@ -25,15 +25,17 @@ public:
 // E from ReferenceLighting x albedo^mix, the surface shaded at level 0 of its maps.
 class ExactLightingValues final : public SampleValues {
 public:
-    // `surface` and `lighting` must outlive this object.
-    ExactLightingValues(const CharacterSurface& surface, const ReferenceLighting& lighting, float mix)
-        : mSurface(&surface), mLighting(&lighting), mMix(mix) {}
+    // `surface` and `lighting` must outlive this object; `sampleSet` as ReferenceLighting::irradiance takes it.
+    ExactLightingValues(const CharacterSurface& surface, const ReferenceLighting& lighting, float mix,
+                        uint32_t sampleSet = 0)
+        : mSurface(&surface), mLighting(&lighting), mMix(mix), mSampleSet(sampleSet) {}
     glm::vec3 valueAt(uint32_t triangle, const glm::vec2& b, LightVisibility* visibility) const override;
 
 private:
     const CharacterSurface* mSurface;
     const ReferenceLighting* mLighting;
     float mMix;
+    uint32_t mSampleSet;
 };
 
 // albedo^exponent with x^0 = 1 and 0^e = 0 (shaders/include/Common.glsl albedoPower).

@@ -1,6 +1,8 @@
-// The reference's BVH against brute force: the same nearest hits and the same
-// any-hit answers on random rays through random (and some degenerate) triangles.
+// The reference's ray tracers against brute force, the in-house BVH and
+// Embree's alike: the same nearest hits and the same any-hit answers on random
+// rays through random (and some degenerate) triangles.
 #include "raytrace/Bvh.h"
+#include "raytrace/EmbreeBvh.h"
 
 #include <gtest/gtest.h>
 
@@ -45,12 +47,17 @@ Scene randomTriangles(std::mt19937& rng, int count) {
     return scene;
 }
 
+template <class Tracer>
+class ReferenceBvh : public ::testing::Test {};
+using Tracers = ::testing::Types<Bvh, EmbreeBvh>;
+TYPED_TEST_SUITE(ReferenceBvh, Tracers);
+
 }  // namespace
 
-TEST(ReferenceBvh, ClosestAndAnyHitsMatchBruteForce) {
+TYPED_TEST(ReferenceBvh, ClosestAndAnyHitsMatchBruteForce) {
     std::mt19937 rng(12345);
     const Scene scene = randomTriangles(rng, 2000);
-    const Bvh bvh = Bvh::build(scene.corners);
+    const TypeParam bvh = TypeParam::build(scene.corners);
     ASSERT_EQ(bvh.triangleCount(), scene.corners.size() / 3);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     int hits = 0;
@@ -91,13 +98,13 @@ TEST(ReferenceBvh, ClosestAndAnyHitsMatchBruteForce) {
     EXPECT_GT(hits, 300);  // the test means something
 }
 
-TEST(ReferenceBvh, EmptyAndSingleTriangle) {
-    const Bvh empty = Bvh::build({});
+TYPED_TEST(ReferenceBvh, EmptyAndSingleTriangle) {
+    const TypeParam empty = TypeParam::build({});
     BvhHit hit;
     EXPECT_FALSE(empty.closestHit(Ray{glm::vec3(0.0f), glm::vec3(0, 0, -1)}, 0.0f, 1e30f, &hit));
     EXPECT_FALSE(empty.anyHit(Ray{glm::vec3(0.0f), glm::vec3(0, 0, -1)}, 0.0f, 1e30f));
 
-    const Bvh one = Bvh::build({glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)});
+    const TypeParam one = TypeParam::build({glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)});
     ASSERT_TRUE(one.closestHit(Ray{glm::vec3(0.0f), glm::vec3(0, 0, -1)}, 0.0f, 1e30f, &hit));
     EXPECT_FLOAT_EQ(hit.t, 2.0f);
     EXPECT_FALSE(one.anyHit(Ray{glm::vec3(0.0f), glm::vec3(0, 0, -1)}, 0.0f, 1.5f));  // beyond tMax

@@ -6,6 +6,7 @@
 #include "EnvironmentBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "QualityBenchmarks.h"
+#include "RayBenchmarks.h"
 #include "TechniqueBenchmarks.h"
 #include "TsBenchmarks.h"
 
@@ -63,5 +64,6 @@ int main(int argc, char** argv) {
     dermis::bench::printEnvironmentSummary();
     dermis::bench::printTechniqueSummary();
     dermis::bench::printQualitySummary();
+    dermis::bench::printRaySummary();
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "CommandReference.h"
 
 #include "Args.h"
+#include "ReferenceImages.h"
 #include "Session.h"
 
 #include "core/Image.h"
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 namespace dermis::cli {
 namespace {
@@ -53,6 +55,13 @@ const char* const kHelp =
     "  --env-samples N     rays per shading point for the environment's light, 2 to 65536 (half\n"
     "                      drawn from the map's brightness, half cosine-weighted; default 16);\n"
     "                      the noise falls about as 1/sqrt(N), the time grows about as N\n"
+    "  --integral-env-samples N  the same at each sample of the subsurface integral, which\n"
+    "                      averages thousands of them per pixel (default 16)\n"
+    "  --target-error PCT  progressive: repeat the image with independent environment rays\n"
+    "                      until the estimated relative RMSE of its noise is at most PCT percent\n"
+    "                      (e.g. 0.2), printing the estimate after each pass; the image is the\n"
+    "                      passes' mean. Without it, one pass; without an environment, one pass\n"
+    "  --max-passes N      the progressive mode's limit, up to 64 (default 8)\n"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable (as in\n"
     "                      dermis render: --set sss.mix=0.5 --set camera.position_m=[0,0.1,0.5])\n"
     "  --threads N         worker threads (default: one per hardware thread); the image does not\n"
@@ -66,7 +75,7 @@ const char* const kHelp =
 }  // namespace
 
 int runReference(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "set", "threads"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "integral-env-samples", "target-error", "max-passes", "set", "threads"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::printf("%s", kHelp);
@@ -105,15 +114,23 @@ int runReference(const std::vector<std::string>& rawArgs) {
         }
         options.samplesPerPixel = *spp;
     }
-    if (args->has("env-samples")) {
-        auto samples = parsePositiveInt("--env-samples", args->get("env-samples", ""));
+    for (auto [name, target] : {std::pair<std::string, int*>{"env-samples", &options.environmentSamples},
+                                {"integral-env-samples", &options.integralEnvironmentSamples}}) {
+        if (!args->has(name)) continue;
+        auto samples = parsePositiveInt("--" + name, args->get(name, ""));
         if (!samples.ok()) return usageError(samples.error());
         if (*samples < reference::kMinEnvironmentSamples || *samples > reference::kMaxEnvironmentSamples) {
-            return usageError(makeError("--env-samples " + args->get("env-samples", ""),
+            return usageError(makeError("--" + name + " " + args->get(name, ""),
                                         "expected " + std::to_string(reference::kMinEnvironmentSamples) + " to " +
                                             std::to_string(reference::kMaxEnvironmentSamples)));
         }
-        options.environmentSamples = *samples;
+        *target = *samples;
+    }
+    std::optional<reference::ProgressiveSettings> progressive;
+    if (args->has("target-error") || args->has("max-passes")) {
+        auto settings = progressiveSettingsFromArgs(*args);
+        if (!settings.ok()) return usageError(settings.error());
+        progressive = *settings;
     }
     if (args->has("threads")) {
         auto threads = parsePositiveInt("--threads", args->get("threads", ""));
@@ -135,7 +152,8 @@ int runReference(const std::vector<std::string>& rawArgs) {
               std::to_string(options.quadrature.density) + " per s^2, " + std::to_string(options.samplesPerPixel) +
               " samples per pixel, " +
               std::to_string(raytrace::resolveThreadCount(options.threads)) + " threads");
-    const Image image = renderer->renderDiffuse(size->first, size->second);
+    const Image image = progressive ? renderer->renderDiffuseProgressive(size->first, size->second, *progressive)
+                                    : renderer->renderDiffuse(size->first, size->second);
     const auto done = std::chrono::steady_clock::now();
     if (const Status saved = saveImage(outPath, image); !saved.ok()) return failure(saved.error());
 
@@ -147,6 +165,7 @@ int runReference(const std::vector<std::string>& rawArgs) {
                   stats.sssHits, stats.triangles, stats.shadedBaseCells, stats.baseCells, seconds(start, built),
                   seconds(built, done));
     log::info(summary);
+    log::info(referenceStagesSummary(stats));
     log::info("wrote " + outPath);
     return 0;
 }

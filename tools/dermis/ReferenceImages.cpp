@@ -33,6 +33,21 @@ reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) 
     return options;
 }
 
+// 0.002 -> "0.2".
+std::string percentText(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", 100.0 * fraction);
+    return text;
+}
+
+Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& settings) {
+    auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(settings));
+    if (!renderer.ok()) return renderer.error();
+    Image image = renderer->renderDiffuseProgressive(settings.width, settings.height, settings.progressive);
+    log::info(referenceStagesSummary(renderer->stats()));
+    return image;
+}
+
 }  // namespace
 
 std::string referenceOptionsHelp() {
@@ -41,7 +56,43 @@ std::string referenceOptionsHelp() {
            std::to_string(reference::kDefaultSamplesPerPixel) +
            ")\n"
            "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
-           "                     (default 4096)\n";
+           "                     (default 4096)\n"
+           "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
+           "                     rays until the estimated relative RMSE of their noise is at most PCT\n"
+           "                     percent (default " +
+           percentText(reference::kDefaultTargetRelativeRmse) +
+           ")\n"
+           "  --max-passes N     at most N passes of each, up to " + std::to_string(reference::kMaxProgressivePasses) +
+           " (default " + std::to_string(reference::kDefaultProgressivePasses) + ")\n";
+}
+
+Result<reference::ProgressiveSettings> progressiveSettingsFromArgs(const ParsedArgs& args) {
+    reference::ProgressiveSettings settings;
+    if (args.has("target-error")) {
+        auto percent = parsePositiveFloat("--target-error", args.get("target-error", ""));
+        if (!percent.ok()) return percent.error();
+        settings.targetRelativeRmse = double(*percent) / 100.0;
+    }
+    if (args.has("max-passes")) {
+        auto passes = parsePositiveInt("--max-passes", args.get("max-passes", ""));
+        if (!passes.ok()) return passes.error();
+        if (*passes > reference::kMaxProgressivePasses) {
+            return makeError("--max-passes", "at most " + std::to_string(reference::kMaxProgressivePasses));
+        }
+        settings.maxPasses = *passes;
+    }
+    return settings;
+}
+
+std::string referenceStagesSummary(const reference::ReferenceStats& stats) {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "reference: last pass %.1f s nearest hits, %.1f s base cells, %.1f s integral; "
+                  "%zu sample values asked, %.1f %% reused; %d pass(es), estimated relative RMSE %.3f %%",
+                  stats.traceSeconds, stats.baseCellSeconds, stats.scatterSeconds, stats.sampleLookups,
+                  stats.sampleLookups ? 100.0 * double(stats.sampleMemoHits) / double(stats.sampleLookups) : 0.0,
+                  stats.passes, 100.0 * stats.estimatedRelativeRmse);
+    return text;
 }
 
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
@@ -57,6 +108,9 @@ Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
     auto irradianceSize = parsePositiveInt("--irradiance-size", args.get("irradiance-size", "4096"));
     if (!irradianceSize.ok()) return irradianceSize.error();
     settings.irradianceSizeTexels = *irradianceSize;
+    auto progressive = progressiveSettingsFromArgs(args);
+    if (!progressive.ok()) return progressive.error();
+    settings.progressive = *progressive;
     return settings;
 }
 
@@ -106,7 +160,8 @@ namespace {
 std::string identityOf(const Scene& scene, const ReferenceSettings& settings, const std::string& what) {
     std::ostringstream text;
     text << what << " " << settings.width << "x" << settings.height << " density " << settings.density << " spp "
-         << settings.samplesPerPixel << "\n"
+         << settings.samplesPerPixel << " target " << settings.progressive.targetRelativeRmse << " passes "
+         << settings.progressive.maxPasses << "\n"
          << sceneToJson(lightingOnly(scene));
     return text.str();
 }
@@ -117,9 +172,7 @@ Result<Image> ReferenceImages::full(const Scene& scene) {
     return cached("reference", identityOf(scene, mSettings, "full"), [&]() -> Result<Image> {
         log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
                   std::to_string(mSettings.height));
-        auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(mSettings));
-        if (!renderer.ok()) return renderer.error();
-        return renderer->renderDiffuse(mSettings.width, mSettings.height);
+        return renderProgressive(scene, mSettings);
     });
 }
 
@@ -128,9 +181,7 @@ Result<Image> ReferenceImages::sssOff(const Scene& scene) {
     off.settings.sss.enabled = false;
     return cached("reference_sss_off", identityOf(off, mSettings, "sss off"), [&]() -> Result<Image> {
         log::info("computing the CPU reference with SSS off");
-        auto renderer = reference::ReferenceRenderer::load(off, referenceOptions(mSettings));
-        if (!renderer.ok()) return renderer.error();
-        return renderer->renderDiffuse(mSettings.width, mSettings.height);
+        return renderProgressive(off, mSettings);
     });
 }
 

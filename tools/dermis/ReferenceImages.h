@@ -34,6 +34,8 @@ struct ReferenceSettings {
     // which is not what the causes are about (docs/bench.md, "Sampling").
     int samplesPerPixel = 1;
     int irradianceSizeTexels = 4096;  // the engine's UV irradiance for the matched reference
+    // The full and SSS-off references are progressive (ReferenceRenderer::renderDiffuseProgressive).
+    reference::ProgressiveSettings progressive;
 };
 
 class ReferenceImages {
@@ -62,9 +64,14 @@ private:
 
 // The options that set ReferenceSettings (all but the size), for the option
 // lists and help texts of the commands that take them.
-inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "irradiance-size"};
+inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "irradiance-size", "target-error",
+                                                            "max-passes"};
 std::string referenceOptionsHelp();
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args);
+// --target-error PCT (default kDefaultTargetRelativeRmse) and --max-passes N.
+Result<reference::ProgressiveSettings> progressiveSettingsFromArgs(const ParsedArgs& args);
+// One line: the stages' wall seconds, the samples computed and reused, the passes.
+std::string referenceStagesSummary(const reference::ReferenceStats& stats);
 
 // The scene with the settings that only the real-time techniques read (mode,
 // taps, Gaussians used, blur edges, transmittance, texture-space sizes) set to

@@ -1,0 +1,113 @@
+#include "raytrace/EmbreeBvh.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace dermis::raytrace {
+namespace {
+
+RTCDevice device(void* handle) { return static_cast<RTCDevice>(handle); }
+RTCScene scene(void* handle) { return static_cast<RTCScene>(handle); }
+
+// The next float towards +infinity: Embree accepts t in [tnear, tfar], Bvh only tMin < t < tMax.
+float above(float t) { return std::nextafter(t, std::numeric_limits<float>::infinity()); }
+float below(float t) { return std::nextafter(t, -std::numeric_limits<float>::infinity()); }
+
+// Embree's ray for tMin < t < tMax.
+RTCRay embreeRay(const Ray& ray, float tMin, float tMax) {
+    RTCRay out{};
+    out.org_x = ray.origin.x;
+    out.org_y = ray.origin.y;
+    out.org_z = ray.origin.z;
+    out.dir_x = ray.direction.x;
+    out.dir_y = ray.direction.y;
+    out.dir_z = ray.direction.z;
+    out.tnear = above(tMin);
+    out.tfar = below(tMax);
+    out.mask = 0xFFFFFFFFu;
+    return out;
+}
+
+}  // namespace
+
+EmbreeBvh EmbreeBvh::build(const std::vector<glm::vec3>& cornersM) {
+    EmbreeBvh bvh;
+    // "threads=1": Embree's own build threads would compete with the callers' loops;
+    // the build is a small share of a reference (docs/reference.md).
+    bvh.mDevice = rtcNewDevice("threads=1");
+    if (!bvh.mDevice) throw std::runtime_error("Embree: rtcNewDevice failed");
+    bvh.mScene = rtcNewScene(device(bvh.mDevice));
+    rtcSetSceneFlags(scene(bvh.mScene), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene(bvh.mScene), RTC_BUILD_QUALITY_HIGH);
+    bvh.mTriangleCount = cornersM.size() / 3;
+    if (bvh.mTriangleCount > 0) {
+        RTCGeometry geometry = rtcNewGeometry(device(bvh.mDevice), RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                     RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                     3 * bvh.mTriangleCount));
+        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                       RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
+                                                                       bvh.mTriangleCount));
+        for (size_t i = 0; i < 3 * bvh.mTriangleCount; ++i) {
+            for (int axis = 0; axis < 3; ++axis) vertices[3 * i + size_t(axis)] = cornersM[i][axis];
+            indices[i] = static_cast<uint32_t>(i);
+        }
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(scene(bvh.mScene), geometry);
+        rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(scene(bvh.mScene));
+    return bvh;
+}
+
+EmbreeBvh::EmbreeBvh(EmbreeBvh&& other) noexcept
+    : mDevice(std::exchange(other.mDevice, nullptr)),
+      mScene(std::exchange(other.mScene, nullptr)),
+      mTriangleCount(other.mTriangleCount) {}
+
+EmbreeBvh& EmbreeBvh::operator=(EmbreeBvh&& other) noexcept {
+    if (this != &other) {
+        release();
+        mDevice = std::exchange(other.mDevice, nullptr);
+        mScene = std::exchange(other.mScene, nullptr);
+        mTriangleCount = other.mTriangleCount;
+    }
+    return *this;
+}
+
+EmbreeBvh::~EmbreeBvh() { release(); }
+
+void EmbreeBvh::release() {
+    if (mScene) rtcReleaseScene(scene(mScene));
+    if (mDevice) rtcReleaseDevice(device(mDevice));
+    mScene = nullptr;
+    mDevice = nullptr;
+}
+
+bool EmbreeBvh::closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) const {
+    if (!(tMin < tMax) || mTriangleCount == 0) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray = embreeRay(ray, tMin, tMax);
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene(mScene), &context, &query);
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    *hit = BvhHit{query.ray.tfar, query.hit.primID, query.hit.u, query.hit.v};
+    return true;
+}
+
+bool EmbreeBvh::anyHit(const Ray& ray, float tMin, float tMax) const {
+    if (!(tMin < tMax) || mTriangleCount == 0) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay query = embreeRay(ray, tMin, tMax);
+    rtcOccluded1(scene(mScene), &context, &query);
+    return query.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace dermis::raytrace
