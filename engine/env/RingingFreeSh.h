@@ -19,9 +19,9 @@
 //   kShUnwindowedPowerFraction x 4 pi x median luminance
 // goes through it (luminance decides, the texel's colour is kept); the rest
 // is projected as it is. Then adding light to a texel changes the irradiance
-// anywhere by at least -0.0396 x kShUnwindowedPowerFraction x 4 pi x median,
-// 1.6e-4 of a uniform map's pi x median, and never more than that: a hot
-// texel can only add light. A uniform map is projected exactly (the window
+// anywhere by at least -0.0396 x kShUnwindowedPowerFraction x 4 pi x median
+// (the median of the map with the light added: added light can only raise
+// it), 1.6e-4 of a uniform map's pi x median: a hot texel can only add light. A uniform map is projected exactly (the window
 // leaves band 0 alone).
 
 #include "core/Image.h"

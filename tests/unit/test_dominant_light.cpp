@@ -130,15 +130,16 @@ TEST(DominantLight, LightPlusRemainderIsTheMapWhereverTheSunIs) {
 }
 
 // A uniform map has no light to take out; nor does one whose bright part is
-// a broad area (a cap of 60 degrees radius, 3.1 sr, far above the 0.2 sr
-// allowed); a dim sun below the threshold stays too. Each says why.
+// a broad area (a cap of 26 degrees radius, 0.63 sr, above the 0.2 sr
+// allowed; 100 against a mean of 6); a dim sun below the threshold stays
+// too. Each says why.
 TEST(DominantLight, NothingIsTakenWithoutACompactBrightRegion) {
     const Image uniform = test::latLongImage(64, 32, [](const glm::vec3&) { return glm::vec3(1.0f); });
     EnvironmentSplit split = extractDominantLights(uniform, oneLight());
     EXPECT_TRUE(split.lights.empty());
     EXPECT_NE(split.why.find("no texel reaches"), std::string::npos) << split.why;
 
-    const Image broad = test::latLongImage(128, 64, [](const glm::vec3& d) { return glm::vec3(d.y > 0.5f ? 100.0f : 1.0f); });
+    const Image broad = test::latLongImage(128, 64, [](const glm::vec3& d) { return glm::vec3(d.y > 0.9f ? 100.0f : 1.0f); });
     split = extractDominantLights(broad, oneLight());
     EXPECT_TRUE(split.lights.empty());
     EXPECT_NE(split.why.find("not a compact light"), std::string::npos) << split.why;
@@ -146,7 +147,7 @@ TEST(DominantLight, NothingIsTakenWithoutACompactBrightRegion) {
     // Beside that broad area, a small lamp less bright than it is the light taken out.
     const glm::vec3 lamp = towards(-30.0, -20.0);
     const Image broadAndLamp = test::latLongImage(256, 128, [&](const glm::vec3& d) {
-        return glm::vec3(d.y > 0.5f ? 100.0f : glm::dot(d, lamp) > std::cos(glm::radians(4.0f)) ? 60.0f : 1.0f);
+        return glm::vec3(d.y > 0.9f ? 100.0f : glm::dot(d, lamp) > std::cos(glm::radians(4.0f)) ? 60.0f : 1.0f);
     });
     split = extractDominantLights(broadAndLamp, oneLight());
     ASSERT_EQ(split.lights.size(), 1u) << split.why;
