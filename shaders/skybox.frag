@@ -1,10 +1,13 @@
 // The skybox (passes/SkyboxPass.cpp): the environment map behind everything,
 // at the pixels nothing was drawn on (the far-plane triangle's depth test),
-// its radiance x the intensity in the linear HDR colour before exposure. The
-// map's level 0 is the map itself (include/EnvironmentSpecular.glsl).
+// its radiance x the intensity in the linear HDR colour before exposure. Unit
+// 0 holds the map as loaded (GpuEnvironment::background), dominant light
+// included.
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "Environment.glsl"
+
+layout(binding = 0) uniform sampler2D uBackground;
 
 in vec2 vUv;
 layout(location = 0) out vec4 oColour;
@@ -13,6 +16,6 @@ void main() {
     vec4 viewPoint = uFrame.viewFromClip * vec4(vUv * 2.0 - 1.0, 1.0, 1.0);
     vec3 worldDirection = safeNormalize(mat3(uFrame.worldFromView) * (viewPoint.xyz / viewPoint.w), vec3(0.0, 0.0, -1.0));
     vec3 mapDirection = mat3(uEnvironment.mapFromWorld) * worldDirection;
-    vec3 radiance = textureLod(uEnvironmentMap, latLongUv(mapDirection), 0.0).rgb * uEnvironment.params.w;
+    vec3 radiance = textureLod(uBackground, latLongUv(mapDirection), 0.0).rgb * uEnvironment.params.w;
     oColour = vec4(sanitizeColour(radiance), 1.0);
 }

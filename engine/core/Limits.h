@@ -75,6 +75,10 @@ constexpr int kMaxShBands = 3;
 constexpr double kMaxEnvironmentIntensity = kMaxLightRadiance;
 constexpr double kMaxEnvironmentSpeedDegPerS = 1e4;
 constexpr double kMaxEnvironmentAngleDeg = 1e6;
+// The dominant light's threshold (Environment::extractThreshold), a multiple
+// of the map's mean luminance: near 1 much of the sky would be a "light".
+constexpr double kMinEnvironmentExtractThreshold = 2.0;
+constexpr double kMaxEnvironmentExtractThreshold = 1e9;
 
 // Texture-space irradiance texture side in texels, a power of two (ts.min_size, ts.max_size).
 constexpr int kMinTsSize = 64;

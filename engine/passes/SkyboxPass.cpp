@@ -29,6 +29,7 @@ graph::TextureHandle addSkyboxPass(graph::RenderGraph& graph, const FrameContext
             },
             [frame](const graph::PassResources& resources, const SkyboxData& d) {
                 beginFullscreenPass(frame, resources, {{d.hdr}, d.depth}, frame.gl->programs->skybox.get(), {});
+                glBindTextureUnit(0, frame.gl->environment->background());
                 glEnable(GL_DEPTH_TEST);
                 glDepthFunc(GL_LEQUAL);
                 glDepthMask(GL_FALSE);

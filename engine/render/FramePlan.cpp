@@ -29,13 +29,23 @@ void markVisibleCharacters(const FrameRequest& request, FramePlan& plan) {
     }
 }
 
+// The frame's lights: the scene's first DERMIS_MAX_LIGHTS, then the lights
+// taken out of the environment (render/EnvironmentPlan.h; there are none
+// unless the scene left room for them).
+std::vector<Light> frameLights(const Scene& scene, const EnvironmentPlan& environment) {
+    std::vector<Light> lights(scene.lights.begin(),
+                              scene.lights.begin() + std::min<ptrdiff_t>(ptrdiff_t(scene.lights.size()), DERMIS_MAX_LIGHTS));
+    lights.insert(lights.end(), environment.lights.begin(), environment.lights.end());
+    return lights;
+}
+
 // Each shadowed light's map is fitted to the visible characters (its
 // receivers) and holds the casters that can shade them: chosen with the map
 // fitted to the receivers alone, which sets its axes and texel size, then
 // the map's depth range is stretched to reach them.
-std::vector<ShadowCasters> fitShadows(const Scene& scene, FramePlan& plan) {
+std::vector<ShadowCasters> fitShadows(const Scene& scene, const std::vector<Light>& lights, FramePlan& plan) {
     const Bounds receivers = unionBounds(plan.characters, true);
-    const LightSetup aroundReceivers = setupLights(scene.lights, receivers, scene.settings.shadow);
+    const LightSetup aroundReceivers = setupLights(lights, receivers, scene.settings.shadow);
     std::vector<Bounds> bounds;
     std::vector<bool> visible;
     for (const CharacterPlacement& c : plan.characters) {
@@ -43,12 +53,12 @@ std::vector<ShadowCasters> fitShadows(const Scene& scene, FramePlan& plan) {
         visible.push_back(c.visible);
     }
     std::vector<ShadowCasters> casters;
-    std::vector<Bounds> reach(scene.lights.size(), receivers);
+    std::vector<Bounds> reach(lights.size(), receivers);
     for (int light : aroundReceivers.shadowedLights) {
         casters.push_back(chooseShadowCasters(aroundReceivers.block.lights[light], bounds, visible));
         if (!casters.back().kept.empty()) reach[static_cast<size_t>(light)] = casters.back().reach;
     }
-    plan.lights = setupLights(scene.lights, receivers, scene.settings.shadow, reach);
+    plan.lights = setupLights(lights, receivers, scene.settings.shadow, reach);
     return casters;
 }
 
@@ -57,7 +67,7 @@ std::vector<ShadowCasters> fitShadows(const Scene& scene, FramePlan& plan) {
 // screen has no pixel to transmit it.
 void markBackLights(const Scene& scene, FramePlan& plan) {
     for (int index : plan.lights.shadowedLights) {
-        const Light& light = scene.lights[static_cast<size_t>(index)];
+        const Light& light = plan.lights.sources[static_cast<size_t>(index)];
         // Transmittance reads a 2-D map's thickness: a point light's cube atlas gives none.
         if (light.type == LightType::Point) continue;
         bool behind = false;
@@ -73,8 +83,8 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
     }
 }
 
-std::string shadowPassName(const Scene& scene, int lightIndex) {
-    const LightType type = scene.lights[static_cast<size_t>(lightIndex)].type;
+std::string shadowPassName(const LightSetup& lights, int lightIndex) {
+    const LightType type = lights.sources[static_cast<size_t>(lightIndex)].type;
     return "shadow:light" + std::to_string(lightIndex) +
            (type == LightType::Directional ? "(dir)" : type == LightType::Spot ? "(spot)" : "(point)");
 }
@@ -112,9 +122,9 @@ void planShadows(const Scene& scene, const ShadowCache& cache, std::vector<Shado
     for (size_t slot = 0; slot < plan.lights.shadowedLights.size(); ++slot) {
         ShadowSlotPlan s;
         s.light = plan.lights.shadowedLights[slot];
-        s.passName = shadowPassName(scene, s.light);
+        s.passName = shadowPassName(plan.lights, s.light);
         s.desc = {mapSize, mapSize, graph::TextureFormat::R32F};
-        if (scene.lights[static_cast<size_t>(s.light)].type == LightType::Point) {
+        if (plan.lights.sources[static_cast<size_t>(s.light)].type == LightType::Point) {
             const uint32_t face = cubeShadowFaceSize(scene.settings.shadow.mapSize);
             s.desc = {3 * face, 2 * face, graph::TextureFormat::R32F};  // the cube atlas (render/LightSetup.h)
         }
@@ -202,7 +212,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     }
     plan.worldBounds = unionBounds(plan.characters, false);
     markVisibleCharacters(request, plan);
-    auto environment = geometry.environment(scene.environment);
+    auto environment = geometry.environment(scene.environment, scene.lights.size());
     if (!environment.ok()) return environment.error();
     std::vector<glm::mat4> worldFromObject;
     for (const CharacterPlacement& placement : plan.characters) worldFromObject.push_back(placement.worldFromObject);
@@ -212,7 +222,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     auto sss = planSss(scene, bounds, plan.view, submeshMaterials);
     if (!sss.ok()) return sss.error();
     plan.sss = std::move(*sss);
-    std::vector<ShadowCasters> casters = fitShadows(scene, plan);
+    std::vector<ShadowCasters> casters = fitShadows(scene, frameLights(scene, plan.environment), plan);
     markBackLights(scene, plan);
     planShadows(scene, shadows, std::move(casters), plan);
 

@@ -83,7 +83,7 @@ struct CharacterPlacement {
 
 // One shadow-casting light's map this frame.
 struct ShadowSlotPlan {
-    int light = 0;             // index into Scene::lights
+    int light = 0;             // index into the frame's lights (LightSetup::sources)
     std::string passName;      // "shadow:light<i>(dir)", "(spot)" or "(point)"
     graph::TextureDesc desc;   // the map: R32F linear light depth, metres
     ShadowCasters casters;     // the characters drawn into it, and why the others are not
@@ -101,7 +101,7 @@ struct FramePlan {
     bool lean = false;  // the frame carries LEAN moments (render/SssVariant.h, frameUsesLean)
     std::vector<CharacterPlacement> characters;  // one per scene character
     Bounds worldBounds;                          // of all characters; a unit box at the origin when there are none
-    LightSetup lights;                           // shadowDepth.w marks the back lights
+    LightSetup lights;                           // the scene's and the environment's; shadowDepth.w marks the back lights
     std::vector<ShadowSlotPlan> shadows;         // one per LightSetup::shadowedLights entry
     bool anyBackLight = false;                   // some shadowed light is behind a visible SSS character
     SssPlan sss;

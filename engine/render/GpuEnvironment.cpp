@@ -9,6 +9,25 @@
 #include <cstddef>
 
 namespace dermis {
+namespace {
+
+// An RGBA16F lat-long texture of `levels` (level 0 first), u repeating, v clamped, trilinear.
+gl::Texture uploadLatLong(const std::vector<Image>& levels) {
+    gl::Texture texture = gl::createTexture2D({static_cast<uint32_t>(levels.front().width),
+                                               static_cast<uint32_t>(levels.front().height), graph::TextureFormat::Rgba16F},
+                                              static_cast<int>(levels.size()));
+    for (size_t level = 0; level < levels.size(); ++level) {
+        glTextureSubImage2D(texture.get(), static_cast<GLint>(level), 0, 0, levels[level].width, levels[level].height,
+                            GL_RGBA, GL_FLOAT, levels[level].texels.data());
+    }
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    return texture;
+}
+
+}  // namespace
 
 static_assert(DERMIS_AVERAGE_ALBEDO_SIZE == kEnergyTableSize, "one average per energy-table row");
 static_assert(sizeof(ShScalar9) == DERMIS_SH_COEFFICIENTS * sizeof(float), "three vec3 attributes per vertex");
@@ -38,20 +57,13 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
     gpu::EnvironmentBlock block{};
     if (plan.enabled()) {
         if (mMapLight != plan.light) {
-            const PrefilteredEnvironment prefiltered = PrefilteredEnvironment::build(plan.light->map);
-            const std::vector<Image>& levels = prefiltered.levels();
-            mMap = gl::createTexture2D({static_cast<uint32_t>(levels.front().width),
-                                        static_cast<uint32_t>(levels.front().height), graph::TextureFormat::Rgba16F},
-                                       static_cast<int>(levels.size()));
-            for (size_t level = 0; level < levels.size(); ++level) {
-                glTextureSubImage2D(mMap.get(), static_cast<GLint>(level), 0, 0, levels[level].width,
-                                    levels[level].height, GL_RGBA, GL_FLOAT, levels[level].texels.data());
-            }
-            glTextureParameteri(mMap.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-            glTextureParameteri(mMap.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-            glTextureParameteri(mMap.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-            glTextureParameteri(mMap.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            mMapLevels = static_cast<int>(levels.size());
+            const PrefilteredEnvironment prefiltered = PrefilteredEnvironment::build(plan.light->lit());
+            mMap = uploadLatLong(prefiltered.levels());
+            mMapLevels = static_cast<int>(prefiltered.levels().size());
+            const Image& base = prefiltered.levels().front();
+            mBackground = plan.light->extracted.empty()
+                              ? gl::Texture()
+                              : uploadLatLong({resampleLatLongByArea(plan.light->map, base.width, base.height)});
             mMapLight = plan.light;
         }
         const Environment& environment = scene.environment;

@@ -4,7 +4,10 @@
 // step (a GL context must be current):
 //   - the EnvironmentBlock (binding DERMIS_BINDING_ENVIRONMENT) each frame;
 //   - the map with its prefiltered mips (env/PrefilteredEnvironment.h) on unit
-//     DERMIS_UNIT_ENVIRONMENT, made again only when the source changes;
+//     DERMIS_UNIT_ENVIRONMENT, made again only when the source changes: made
+//     from what is left when a dominant light was taken out (the light itself
+//     is a scene light of the frame), so that the specular does not count it
+//     twice; the skybox shows the whole map (background());
 //   - each character's per-vertex SH transfer (env/ShTransferCache.h: computed
 //     once, then read from the disk cache), a vertex buffer attached to its
 //     vertex arrays at DERMIS_LOCATION_TRANSFER, only when the occlusion is
@@ -42,12 +45,16 @@ public:
     GLuint drawnTransfer(size_t character) const {
         return posedTransfer(character) != 0 ? posedTransfer(character) : restTransfer(character);
     }
+    // The map as loaded, for the skybox: the prefiltered chain's level 0
+    // unless a light was taken out of it, else a copy of the whole map at that size.
+    GLuint background() const { return mBackground.isValid() ? mBackground.get() : mMap.get(); }
     // Attaches a transfer buffer (three vec3 per vertex) to a vertex array.
     static void attachTransfer(GLuint vertexArray, GLuint buffer);
 
 private:
     gl::Buffer mUniforms;
     gl::Texture mMap;
+    gl::Texture mBackground;  // only when the map lit is not the map shown
     std::shared_ptr<const EnvironmentLight> mMapLight;  // what mMap was made from
     int mMapLevels = 0;
     struct Transfer {

@@ -37,6 +37,7 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers
     const float radiusM = std::max(0.5f * glm::length(receivers.size()), 1e-3f);
     const int count = std::min<int>(static_cast<int>(lights.size()), DERMIS_MAX_LIGHTS);
     setup.lightCount = count;
+    setup.sources.assign(lights.begin(), lights.begin() + count);
     for (int i = 0; i < count; ++i) {
         const Light& light = lights[static_cast<size_t>(i)];
         gpu::GpuLight& g = setup.block.lights[i];

@@ -22,6 +22,7 @@ namespace dermis {
 struct LightSetup {
     gpu::LightsBlock block{};
     int lightCount = 0;
+    std::vector<Light> sources;  // the lights set up, one per block entry (the frame's lights, render/FramePlan.h)
     std::vector<int> shadowedLights;  // light index per shadow slot
 };
 

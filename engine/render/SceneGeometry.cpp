@@ -38,12 +38,16 @@ const UvLayout& SceneGeometry::uvLayout(size_t character) {
     return *c.uvLayout;
 }
 
-Result<std::shared_ptr<const EnvironmentLight>> SceneGeometry::environment(const Environment& environment) {
+Result<std::shared_ptr<const EnvironmentLight>> SceneGeometry::environment(const Environment& environment,
+                                                                          size_t sceneLights) {
     if (!environment.enabled()) return std::shared_ptr<const EnvironmentLight>();
+    const LightExtractionSettings extraction = lightExtractionSettings(environment, sceneLights);
     if (!mEnvironment || mEnvironment->source != environment.source) {
-        auto light = loadEnvironmentLight(environment);
+        auto light = loadEnvironmentLight(environment, sceneLights);
         if (!light.ok()) return light.error();
         mEnvironment = std::move(*light);
+    } else if (!(mEnvironment->extraction == extraction)) {
+        mEnvironment = splitEnvironmentLight(environment.source, mEnvironment->map, extraction);
     }
     return mEnvironment;
 }

@@ -48,9 +48,11 @@ public:
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
-    // The environment's map and SH, loaded on first use and again when the
-    // source changes; null when the scene has none. Errors name the map.
-    Result<std::shared_ptr<const EnvironmentLight>> environment(const Environment& environment);
+    // The environment's map, extracted light and SH, loaded on first use and
+    // again when the source changes, split again when the extraction changes
+    // (`sceneLights`: how many lights the scene has); null when the scene has
+    // none. Errors name the map.
+    Result<std::shared_ptr<const EnvironmentLight>> environment(const Environment& environment, size_t sceneLights);
 
 private:
     std::shared_ptr<const EnvironmentLight> mEnvironment;

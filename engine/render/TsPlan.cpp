@@ -1,5 +1,6 @@
 #include "render/TsPlan.h"
 
+#include "core/Luminance.h"
 #include "render/ScreenFootprint.h"
 #include "render/SubmeshScattering.h"
 
@@ -17,17 +18,15 @@ glm::vec3 anyUp(const glm::vec3& direction) {
     return std::fabs(direction.y) < 0.95f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
 }
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 // The brightest shadow-casting light behind the character, or -1.
 int chooseTsmLight(const Scene& scene, const LightSetup& lights, const Bounds& bounds) {
     int best = -1;
     float bestLuminance = 0.0f;
     const glm::vec3 centre = bounds.centre();
     for (int index : lights.shadowedLights) {
-        const Light& light = scene.lights[static_cast<size_t>(index)];
+        const Light& light = lights.sources[static_cast<size_t>(index)];
         if (!isBackLight(light, bounds, scene.camera.positionM)) continue;
-        float value = luminance(light.colour) * light.intensity;
+        float value = relativeLuminance(light.colour) * light.intensity;
         if (light.type != LightType::Directional) {
             const glm::vec3 toLight = light.positionM - centre;
             value /= std::max(glm::dot(toLight, toLight), 1e-6f);

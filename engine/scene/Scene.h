@@ -140,6 +140,11 @@ struct Environment {
     EnvironmentOcclusion occlusion = EnvironmentOcclusion::Transfer;  // what darkens the environment's diffuse light
     EnvironmentSpecular specular = EnvironmentSpecular::Prefiltered;
     int shBands = kMaxShBands;  // SH bands of the diffuse light, 1..3 (1, 4 or 9 coefficients)
+    // The dominant light (env/DominantLight.h): with Auto, the brightest region
+    // whose texels reach extractThreshold x the mean luminance, if compact,
+    // lights the frame as a directional light of its size (threshold: a multiple of the mean luminance).
+    EnvironmentLightExtraction extractLight = EnvironmentLightExtraction::Auto;
+    float extractThreshold = 8.0f;
 
     bool enabled() const { return !source.empty(); }
     // The rotation from map directions to world directions at scene time t.

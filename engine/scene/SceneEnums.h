@@ -104,7 +104,18 @@ inline constexpr EnumTable<EnvironmentSpecular, 3> kEnvironmentSpeculars{
       {EnvironmentSpecular::Prefiltered, "prefiltered",
        "the map prefiltered per roughness for the Beckmann lobe, split sum"}}}};
 
-static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne(),
+// Whether the environment's dominant light is taken out of the map
+// (docs/environment.md, "The dominant light", env/DominantLight.h).
+enum class EnvironmentLightExtraction { Off, Auto };
+
+inline constexpr EnumTable<EnvironmentLightExtraction, 2> kEnvironmentLightExtractions{
+    "environment light extraction",
+    {{{EnvironmentLightExtraction::Off, "off", "the whole map stays in the SH and the prefiltered specular"},
+      {EnvironmentLightExtraction::Auto, "auto",
+       "the brightest compact region becomes a sized directional light with a shadow, when the map has one"}}}};
+
+static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne() &&
+                  kEnvironmentLightExtractions.isOneToOne(),
               "every value and every name appears once");
 
 static_assert(kLightTypes.isOneToOne() && kSssModes.isOneToOne() && kSssTechniques.isOneToOne() && kSssVariants.isOneToOne() &&

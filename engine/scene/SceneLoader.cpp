@@ -410,7 +410,8 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
         return;
     }
     JsonObject object(root.context(), *value, root.pointer("environment"),
-                      {"source", "intensity", "rotation", "background", "occlusion", "specular", "sh_bands"});
+                      {"source", "intensity", "rotation", "background", "occlusion", "specular", "sh_bands",
+                       "extract_light", "extract_threshold"});
     std::string source;
     object.string("source", source, false);
     environment.source = isBuiltInEnvironment(source) ? source : resolveScenePath(sceneFile, source);
@@ -419,6 +420,9 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
     choice(object, "occlusion", kEnvironmentOcclusions, environment.occlusion);
     choice(object, "specular", kEnvironmentSpeculars, environment.specular);
     object.integer("sh_bands", environment.shBands, Range::closed(1, kMaxShBands));
+    choice(object, "extract_light", kEnvironmentLightExtractions, environment.extractLight);
+    object.number("extract_threshold", environment.extractThreshold,
+                  Range::closed(kMinEnvironmentExtractThreshold, kMaxEnvironmentExtractThreshold));
     JsonContext& context = root.context();
     const std::vector<std::string> builtIn(std::begin(kBuiltInEnvironments), std::end(kBuiltInEnvironments));
     if (context.check(object.has("source"), object.pointer("source"),

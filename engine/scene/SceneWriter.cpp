@@ -157,7 +157,9 @@ Json environmentJson(const Environment& e, const std::string& sceneFile) {
                 {"background", e.background},
                 {"occlusion", name(kEnvironmentOcclusions, e.occlusion)},
                 {"specular", name(kEnvironmentSpeculars, e.specular)},
-                {"sh_bands", e.shBands}};
+                {"sh_bands", e.shBands},
+                {"extract_light", name(kEnvironmentLightExtractions, e.extractLight)},
+                {"extract_threshold", number(e.extractThreshold)}};
 }
 
 Json settingsJson(const RenderSettings& settings, const std::string& sceneFile) {

@@ -1021,7 +1021,8 @@ TEST(SceneTransform, TranslationIsNotScaledAndDirectionsIgnoreIt) {
 TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
     const Result<Scene> scene = parseScene(R"({"environment": {"source": "maps/sky.hdr", "intensity": 2.5,
         "rotation": {"axis": [0, 0, 2], "angle_deg": 30, "speed_deg_per_s": -5},
-        "background": false, "occlusion": "ssao", "specular": "sh", "sh_bands": 2}})",
+        "background": false, "occlusion": "ssao", "specular": "sh", "sh_bands": 2,
+        "extract_light": "off", "extract_threshold": 30}})",
                                            "/scenes/x.json");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const Environment& e = scene->environment;
@@ -1034,6 +1035,8 @@ TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
     EXPECT_EQ(e.occlusion, EnvironmentOcclusion::Ssao);
     EXPECT_EQ(e.specular, EnvironmentSpecular::Sh);
     EXPECT_EQ(e.shBands, 2);
+    EXPECT_EQ(e.extractLight, EnvironmentLightExtraction::Off);
+    EXPECT_EQ(e.extractThreshold, 30.0f);
     // The angle grows with time: 30 + (-5) x 2 = 20 degrees about +Z turns +X to (cos 20, sin 20, 0).
     const glm::vec3 turned = e.worldFromMap(2.0f) * glm::vec3(1, 0, 0);
     EXPECT_NEAR(turned.x, std::cos(glm::radians(20.0f)), 1e-6f);
@@ -1050,10 +1053,13 @@ TEST(SceneLoader, EnvironmentParsesAndRoundTrips) {
     EXPECT_EQ(r.occlusion, e.occlusion);
     EXPECT_EQ(r.specular, e.specular);
     EXPECT_EQ(r.shBands, e.shBands);
+    EXPECT_EQ(r.extractLight, e.extractLight);
+    EXPECT_EQ(r.extractThreshold, e.extractThreshold);
 
     const Result<Scene> builtIn = parseScene(R"({"environment": {"source": "studio"}})", "/scenes/x.json");
     ASSERT_TRUE(builtIn.ok());
     EXPECT_EQ(builtIn->environment.source, "studio");  // a built-in name is not a path
+    EXPECT_EQ(builtIn->environment.extractLight, EnvironmentLightExtraction::Auto);  // on unless turned off
     EXPECT_FALSE(parseScene("{}", "x.json")->environment.enabled());
 }
 
@@ -1106,6 +1112,11 @@ TEST(SceneLoader, BadEnvironmentsNameTheKey) {
               0u);
     EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "intensity": -1}})").rfind("/environment/intensity:", 0), 0u);
     EXPECT_EQ(errorOf(R"({"environment": {"source": ""}})").rfind("/environment/source:", 0), 0u);
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "extract_light": "on"}})")
+                  .rfind("/environment/extract_light: unknown environment light extraction", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"environment": {"source": "sky", "extract_threshold": 1}})"),
+              "/environment/extract_threshold: must be in [2, 1e+09], got 1");
 }
 
 }  // namespace

@@ -116,6 +116,13 @@ bool environmentPanel(Scene& scene, EnvironmentEdit& edit) {
     widgets::help(std::string(kEnvironmentSpeculars.description(environment.specular)).c_str());
     changed |= ImGui::SliderInt("SH bands", &environment.shBands, 1, kMaxShBands, "%d", kClamp);
     widgets::help("Bands of the diffuse light's spherical harmonics: 1, 4 or 9 coefficients.");
+    changed |= widgets::comboEnum("extract light", kEnvironmentLightExtractions, environment.extractLight);
+    widgets::help(std::string(kEnvironmentLightExtractions.description(environment.extractLight)).c_str());
+    if (environment.extractLight == EnvironmentLightExtraction::Auto) {
+        changed |= ImGui::SliderFloat("threshold", &environment.extractThreshold, float(kMinEnvironmentExtractThreshold),
+                                      1e4f, "%.1f x mean", ImGuiSliderFlags_Logarithmic | kClamp);
+        widgets::help("A light's texels are this many times the map's mean luminance or brighter.");
+    }
     return changed;
 }
 
