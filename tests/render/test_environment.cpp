@@ -105,9 +105,10 @@ TEST_F(EnvironmentFrame, WhiteFurnaceMatchesEnergyConservationInBothModes) {
 TEST_F(EnvironmentFrame, RotatingEnvironmentAndSceneTogetherLeavesTheImageUnchanged) {
     constexpr float kAngleDeg = 50.0f;
     const glm::mat3 rotation = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(kAngleDeg), glm::vec3(0, 1, 0)));
-    for (const char* mode : {"ss", "ts"}) {
+    for (const char* extraction : {"off", "auto"}) for (const char* mode : {"ss", "ts"}) {
         const std::vector<std::string> common = {"lights=[]", std::string("mode=") + mode,
-                                                 "environment.source=\"studio\"", "ssao.enabled=false"};
+                                                 "environment.source=\"studio\"", "ssao.enabled=false",
+                                                 std::string("environment.extract_light=") + extraction};
         std::vector<std::string> base = common;
         load("default.json", base);
         const Camera camera = mScene->camera;
@@ -137,13 +138,21 @@ TEST_F(EnvironmentFrame, RotatingEnvironmentAndSceneTogetherLeavesTheImageUnchan
                 differing += difference > 1.5f / 255.0f ? 1 : 0;
             }
         }
-        std::printf("rotation invariance %s: largest difference %.1f/255, %d channels over 1/255\n", mode,
-                    largest * 255.0f, differing);
+        std::printf("rotation invariance %s, extract_light %s: largest difference %.1f/255, %d channels over 1/255\n",
+                    mode, extraction, largest * 255.0f, differing);
         // 1/255 (the goal), rounding included: the two frames rasterise the same view-space
         // geometry through differently rounded transforms (measured: at most 1 step). Turning
         // the environment by -50 degrees instead fails by 200 steps; giving the transfer the
         // world-space light instead of the character's object-space one, by 78.
-        EXPECT_EQ(differing, 0) << mode;
+        if (std::string(extraction) == "off") {
+            EXPECT_EQ(differing, 0) << mode;
+        } else {
+            // With the studio's key box taken out as a light, its soft shadow map is rasterised
+            // through the turned transforms too: measured 2 channels of 28,800 at 2/255 (texture
+            // space), none in screen space: rounding at the shadow's edge, bounded at that step.
+            EXPECT_LE(largest, 2.5f / 255.0f) << mode;
+            EXPECT_LE(differing, 8) << mode;
+        }
     }
 }
 
