@@ -1,5 +1,6 @@
-// With the thickness AOV (id 9) it writes, instead, the thickness in mm seen
-// through the first back light (0 where there is none): a check of step 2.
+// With the thickness AOV it writes, instead, the thickness in mm seen
+// through the first back light (0 where there is none, or where the point is
+// the surface nearest that light): a check of step 2.
 //
 // Adds back-normal transmittance (include/Transmittance.glsl) from every
 // shadowed back light into the diffuse irradiance, for SSS pixels only (the
@@ -35,8 +36,7 @@ void main() {
                            vec3(0.0, 1.0, 0.0));
     float shrinkMm = uProfiles.transmittance.x;
 
-    const int kAovThickness = 9;
-    bool writeThickness = int(uFrame.shading.w) == kAovThickness;
+    bool writeThickness = int(uFrame.shading.w) == DERMIS_AOV_THICKNESS;
     vec3 transmitted = vec3(0.0);
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
@@ -47,9 +47,10 @@ void main() {
         vec3 radiance = incidentRadiance(light, worldPositionM, L);
         float sMm = thicknessMm(uShadowMaps[shadowSlot], light, worldPositionM, N, shrinkMm);
         if (writeThickness) {
-            oTransmitted = vec4(vec3(sMm), 0.0);
+            oTransmitted = vec4(vec3(max(sMm, 0.0)), 0.0);
             return;
         }
+        if (sMm < 0.0) continue;
         transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
     }
     float mixRatio = uFrame.shading.y;

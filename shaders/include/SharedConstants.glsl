@@ -60,6 +60,14 @@
 // enough that every depth weight of it is 0. Compare against half of it.
 #define DERMIS_OTHER_PROFILE_DISTANCE_MM 1e30
 
+// Transmittance (include/Transmittance.glsl, include/TextureSpace.glsl): a
+// point less than this (mm) behind the first surface its light meets is that
+// surface itself, lit directly, and takes no transmitted light. The shadow
+// maps' texels and depth filtering blur where that surface is by about this
+// much; at the light's silhouette a point can even be in front of it (or the
+// texel empty). Thin parts (ears, 2-5 mm) lie well above it.
+#define DERMIS_SELF_THICKNESS_MM 0.25
+
 // Outputs of the aov pass (FrameBlock::shading.w); C++: Aov.
 #define DERMIS_AOV_FINAL 0
 #define DERMIS_AOV_ALBEDO 1

@@ -62,8 +62,9 @@
 // Gaussian (listing 2.7 sets "a large distance" the same way).
 const float kTsFrontThicknessMm = 50.0;
 // Nearer than this behind the TSM surface is the surface itself (listing 2.7
-// sets such points to the large distance to remove shadow-map artifacts).
-const float kTsMinThicknessMm = 0.25;
+// sets such points to the large distance to remove shadow-map artifacts);
+// screen space uses the same rule.
+const float kTsMinThicknessMm = DERMIS_SELF_THICKNESS_MM;
 // Covered texels keep alpha above 0; 0 marks an empty texel.
 const float kTsMinAlpha = 1e-4;
 

@@ -5,7 +5,13 @@
 //   1. Shrink the surface point inwards along its normal by `shrinkMm`
 //      (Papanikolaou 2013 §4.3; default 0: see the calibration below).
 //   2. Thickness s = (light-space depth of the shrunk point) - (depth stored
-//      in the shadow map: the surface nearest the light), in mm; >= 0.
+//      in the shadow map: the surface nearest the light), in mm. Where s is
+//      below DERMIS_SELF_THICKNESS_MM the point is that nearest surface (or
+//      lies in front of it, at the light's silhouette, where the map's texel
+//      may be empty): it is lit directly, its neighbours' light reaches it
+//      through the blur, and it takes no transmitted light. Clamping s to 0
+//      there instead gave T = 1 and added up to 1.6 (more than the direct
+//      irradiance) along the scan's shoulders, which a back light grazes.
 //   3. T(s) = sum_i w_i exp(-s^2 / v_i), with the pixel's profile.
 //   4. E = saturate(dot(-N, L)): the cosine at the back face, whose normal
 //      is about -N. Jimenez et al. 2010 add a 0.3 wrap here.
@@ -31,10 +37,12 @@ float shadowMapDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM) 
     return texture(shadowMap, uv).r;
 }
 
+// Thickness in mm (step 2), or -1 where the point is the surface nearest the light.
 float thicknessMm(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, float shrinkMm) {
     vec3 shrunkM = worldPositionM - N * (shrinkMm * 1e-3);
     float occluderM = shadowMapDepthM(shadowMap, light, shrunkM);
-    return max(lightLinearDepth(light, shrunkM) - occluderM, 0.0) * 1000.0;
+    float sMm = (lightLinearDepth(light, shrunkM) - occluderM) * 1000.0;
+    return sMm < DERMIS_SELF_THICKNESS_MM ? -1.0 : sMm;
 }
 
 vec3 profileTransmittance(ProfileParams profile, float sMm) {
