@@ -33,7 +33,7 @@ case "$job" in
 esac
 
 packages=(
-  cmake ninja-build g++ pkg-config python3 python3-glad
+  cmake ninja-build g++ pkg-config python3 python3-glad ccache
   libglfw3-dev libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev libstb-dev
   libosmesa6-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev
@@ -63,7 +63,11 @@ build_into() {
   local dir="$1" target="$2"
   shift 2
   echo "setup: configuring and building into $dir/" >&2
-  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  # ccache (in ~/.cache/ccache) keeps compiled objects across clones: a CI run
+  # on a fresh clone recompiles only what changed since the last one. Paths
+  # under the clone are hashed relative to it.
+  export CCACHE_BASEDIR="$PWD"
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" >/dev/null
   cmake --build "$dir" -j "$(nproc)" --target "$target"
 }
 

@@ -40,8 +40,18 @@ std::string percentText(double fraction) {
     return text;
 }
 
-Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& settings) {
-    auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(settings));
+// Environment rays per pixel of the SSS-off reference. Each of its pixels is
+// one shading point, where the full reference averages thousands of the
+// integral's samples, so its noise per pass is far larger at the same count:
+// the default head under tools/make_sun_map.py's sun at 320x180 stopped at 8
+// passes and 2.85% with 16 rays; with 1024 it reached 0.16% in 2 passes and
+// 6.7 s (docs/reference.md, "Speed").
+constexpr int kSssOffEnvironmentSamples = 1024;
+
+Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& settings, int environmentSamples) {
+    reference::ReferenceOptions options = referenceOptions(settings);
+    options.environmentSamples = environmentSamples;
+    auto renderer = reference::ReferenceRenderer::load(scene, options);
     if (!renderer.ok()) return renderer.error();
     Image image = renderer->renderDiffuseProgressive(settings.width, settings.height, settings.progressive);
     log::info(referenceStagesSummary(renderer->stats()));
@@ -172,16 +182,17 @@ Result<Image> ReferenceImages::full(const Scene& scene) {
     return cached("reference", identityOf(scene, mSettings, "full"), [&]() -> Result<Image> {
         log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
                   std::to_string(mSettings.height));
-        return renderProgressive(scene, mSettings);
+        return renderProgressive(scene, mSettings, reference::kEnvironmentSamples);
     });
 }
 
 Result<Image> ReferenceImages::sssOff(const Scene& scene) {
     Scene off = scene;
     off.settings.sss.enabled = false;
-    return cached("reference_sss_off", identityOf(off, mSettings, "sss off"), [&]() -> Result<Image> {
+    const std::string what = "sss off, " + std::to_string(kSssOffEnvironmentSamples) + " environment rays";
+    return cached("reference_sss_off", identityOf(off, mSettings, what), [&]() -> Result<Image> {
         log::info("computing the CPU reference with SSS off");
-        return renderProgressive(off, mSettings);
+        return renderProgressive(off, mSettings, kSssOffEnvironmentSamples);
     });
 }
 
