@@ -33,12 +33,15 @@ reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) 
     return options;
 }
 
-// 0.002 -> "0.2".
-std::string percentText(double fraction) {
+// 8.0 -> "8", 0.2 -> "0.2".
+std::string shortNumber(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", 100.0 * fraction);
+    std::snprintf(text, sizeof text, "%g", value);
     return text;
 }
+
+// 0.002 -> "0.2".
+std::string percentText(double fraction) { return shortNumber(100.0 * fraction); }
 
 // Environment rays per pixel of the SSS-off reference. Each of its pixels is
 // one shading point, where the full reference averages thousands of the
@@ -61,12 +64,16 @@ Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& set
 }  // namespace
 
 std::string referenceOptionsHelp() {
-    return "  --density N        the references' quadrature density when they are computed (default 8)\n"
-           "  --spp N            the references' samples per pixel, a square (default " +
-           std::to_string(reference::kDefaultSamplesPerPixel) +
+    const ReferenceSettings defaults;
+    return "  --density N        the references' quadrature density when they are computed (default " +
+           shortNumber(defaults.density) +
            ")\n"
+           "  --spp N            the references' samples per pixel, a square (default " +
+           std::to_string(defaults.samplesPerPixel) +
+           ": the pixel centre,\n"
+           "                     where the engine shades)\n"
            "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
-           "                     (default 4096)\n"
+           "                     (default " + std::to_string(defaults.irradianceSizeTexels) + ")\n"
            "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
            "                     rays until the estimated relative RMSE of their noise is at most PCT\n"
            "                     percent (default " +
