@@ -72,6 +72,8 @@ std::string referenceOptionsHelp() {
            std::to_string(defaults.samplesPerPixel) +
            ": the pixel centre,\n"
            "                     where the engine shades)\n"
+           "  --change-spp N     the same for the matched reference's scattering change (default " +
+           std::to_string(defaults.changeSamplesPerPixel) + ")\n"
            "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
            "                     (default " + std::to_string(defaults.irradianceSizeTexels) + ")\n"
            "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
@@ -121,6 +123,11 @@ Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
         auto spp = parsePositiveInt("--spp", args.get("spp", ""));
         if (!spp.ok()) return spp.error();
         settings.samplesPerPixel = *spp;
+    }
+    if (args.has("change-spp")) {
+        auto spp = parsePositiveInt("--change-spp", args.get("change-spp", ""));
+        if (!spp.ok()) return spp.error();
+        settings.changeSamplesPerPixel = *spp;
     }
     auto irradianceSize = parsePositiveInt("--irradiance-size", args.get("irradiance-size", "4096"));
     if (!irradianceSize.ok()) return irradianceSize.error();
@@ -217,8 +224,9 @@ Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
 
 Result<Image> ReferenceImages::scatterChange(Session& session) {
     const Scene& scene = *session.scene;
-    const std::string identity = identityOf(scene, mSettings, "scatter change, engine irradiance " +
-                                                                  std::to_string(mSettings.irradianceSizeTexels));
+    const std::string identity =
+        identityOf(scene, mSettings, "scatter change, engine irradiance " + std::to_string(mSettings.irradianceSizeTexels) +
+                                         ", spp " + std::to_string(mSettings.changeSamplesPerPixel));
     // One file per lighting setup, named by its identity's hash.
     char name[64];
     std::snprintf(name, sizeof name, "scatter_change_%016zx", std::hash<std::string>{}(identity));
@@ -229,8 +237,7 @@ Result<Image> ReferenceImages::scatterChange(Session& session) {
         if (!irradiance.ok()) return irradiance.error();
         reference::ReferenceOptions options = referenceOptions(mSettings);
         options.engineIrradiance = std::move(*irradiance);
-        // The change is taken at pixel centres, where the engine shades.
-        options.samplesPerPixel = 1;
+        options.samplesPerPixel = mSettings.changeSamplesPerPixel;
         auto renderer = reference::ReferenceRenderer::load(scene, options);
         if (!renderer.ok()) return renderer.error();
         return renderer->renderScatterChange(mSettings.width, mSettings.height);

@@ -34,6 +34,10 @@ struct ReferenceSettings {
     // which is not what the causes are about (docs/bench.md, "Sampling").
     int samplesPerPixel = 1;
     int irradianceSizeTexels = 4096;  // the engine's UV irradiance for the matched reference
+    // Sub-samples per pixel of the matched reference's scattering change, a
+    // square: box-filtered over the pixel, as the engine's render it is added
+    // to filters the normal map over the pixel (docs/bench.md, "Sampling").
+    int changeSamplesPerPixel = 4;
     // The full and SSS-off references are progressive (ReferenceRenderer::renderDiffuseProgressive).
     reference::ProgressiveSettings progressive;
 };
@@ -64,7 +68,7 @@ private:
 
 // The options that set ReferenceSettings (all but the size), for the option
 // lists and help texts of the commands that take them.
-inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "irradiance-size", "target-error",
+inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "change-spp", "irradiance-size", "target-error",
                                                             "max-passes"};
 std::string referenceOptionsHelp();
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args);
