@@ -84,11 +84,14 @@ TEST(Cli, ExrAovIsWritten) {
 // tone mapping. On the background it is the scene's background radiance
 // (content/scenes/default.json: 0.02, 0.025, 0.03), which a tone-mapped 8-bit
 // value is not (tone mapping 0.02 gives about 0.15, and a multiple of 1/255 is
-// 0.0196 or 0.0235 at best; the half-float target holds 0.02 to 1e-5); lit skin
-// goes above 1; and the exposure does not change it.
+// 0.0196 or 0.0235 at best; the half-float target holds 0.02 to 1e-5); skin
+// under a key light of intensity 8 goes above 1 (582 pixels, up to 4.7; at the
+// scene's own 1.3 nothing does since the transmittance fix, and the one pixel
+// at 2.5 before was that mistake); and the exposure does not change it.
 TEST(Cli, FinalExrIsLinearRadianceBeforeExposure) {
     TempDir dir;
-    const std::string common = " render " + defaultScene() + " --size 64x36 --frames 1 --quiet --out ";
+    const std::string common =
+        " render " + defaultScene() + " --size 64x36 --frames 1 --quiet --set lights.0.intensity=8 --out ";
     ASSERT_EQ(runProcess(kDermis + common + dir.file("f.exr")).exitCode, 0);
     ASSERT_EQ(runProcess(kDermis + common + dir.file("bright.exr") + " --set exposure=4").exitCode, 0);
     auto image = dermis::loadImage(dir.file("f.exr"), dermis::ColourSpace::Linear);
