@@ -157,6 +157,36 @@ TEST(BenchCli, CompareErrorsWithSssOffHaveNoScatterError) {
     EXPECT_EQ(second["errors"], metrics["errors"]);
 }
 
+// A configuration that turns SSS off is scored against the scene's own
+// scattering change, so leaving SSS out shows as scatter error; it used to read
+// a perfect 0 (the change was computed with SSS off too) and sat on every
+// scatter Pareto front. Both rows share one scattering change: the real-time
+// SSS switches do not change the matched reference.
+TEST(BenchCli, LeavingOutSssIsScatterError) {
+    TempDir dir;
+    const std::string out = dir.file("bench");
+    // At 64x36 a pixel is wider than the profile and SSS changes almost nothing: 320x180.
+    const ProcessResult r = runProcess(kDermis + " bench " + kScene + " --out " + out +
+                                       " --size 320x180 --frames 1 --density 1 --irradiance-size 1024 --quiet"
+                                       " --no-plots --sweep 'ss:sss.enabled=true,false'");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto rows = readCsv(out + "/results.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[1].at("label"), "sss.enabled=false");
+    const double on = std::stod(rows[0].at("scatter_rel_rmse"));
+    const double off = std::stod(rows[1].at("scatter_rel_rmse"));
+    std::printf("scatter error: SSS on %.4f, off %.4f\n", on, off);
+    EXPECT_GT(on, 0.0);
+    // Measured 5.68% against 3.34%; a bound of 1.5x leaves room and still fails a 0.
+    EXPECT_GT(off, 1.5 * on) << "leaving SSS out must cost more than the default technique's own error";
+    int changes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+        const std::string name = entry.path().filename().string();
+        changes += name.rfind("scatter_change_", 0) == 0 && entry.path().extension() == ".exr";
+    }
+    EXPECT_EQ(changes, 1) << "the SSS switches and the technique recomputed the scattering change";
+}
+
 TEST(BenchCli, BadInputFailsBeforeAnythingIsWritten) {
     TempDir dir;
     const std::string out = dir.file("bench");

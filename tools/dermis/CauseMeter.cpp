@@ -13,6 +13,7 @@ namespace dermis::cli {
 Result<CauseMeter> CauseMeter::create(Session& session, ReferenceImages& references, std::optional<Image> fullReference) {
     CauseMeter meter(references);
     const Scene& scene = *session.scene;
+    meter.mSceneScatters = scene.settings.sss.enabled;
     const int width = references.settings().width;
     const int height = references.settings().height;
     if (fullReference) {
@@ -63,7 +64,7 @@ Result<bench::CauseErrors> CauseMeter::measure(Session& session, const Image& di
     auto off = renderSssOff(session, renderWidth, renderHeight);
     if (!off.ok()) return off.error();
     bench::measureCause(errors, bench::ErrorCause::Irradiance, mSssOff, *off, mRegions);
-    auto change = mReferences->scatterChange(session);
+    auto change = mReferences->scatterChange(session, mSceneScatters);
     if (!change.ok()) return change.error();
     bench::measureCause(errors, bench::ErrorCause::Scatter, bench::addImages(*off, *change), diffuse, mRegions);
     return errors;

@@ -51,6 +51,10 @@ private:
     std::vector<uint8_t> mRegions;
     size_t mUncoveredPixels = 0;
     std::map<std::string, Image> mSssOffRenders;  // configuration (SSS off) and size -> diffuse
+    // Whether the scene the references were made for scatters: a configuration
+    // that turns SSS off is scored against that scene's scattering change, so
+    // that leaving out SSS shows as scatter error instead of a perfect 0.
+    bool mSceneScatters = true;
 };
 
 }  // namespace dermis::cli

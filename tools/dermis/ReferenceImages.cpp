@@ -143,6 +143,9 @@ Scene lightingOnly(const Scene& scene) {
     const RenderSettings defaults;
     RenderSettings& settings = lighting.settings;
     settings.mode = defaults.mode;
+    settings.sss.technique = defaults.sss.technique;
+    settings.sss.separableSamples = defaults.sss.separableSamples;
+    settings.sss.diskSamples = defaults.sss.diskSamples;
     settings.sss.taps = defaults.sss.taps;
     settings.sss.blur = defaults.sss.blur;
     settings.sss.bilateralDepthMm = defaults.sss.bilateralDepthMm;
@@ -222,8 +225,9 @@ Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
     });
 }
 
-Result<Image> ReferenceImages::scatterChange(Session& session) {
-    const Scene& scene = *session.scene;
+Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
+    Scene scene = *session.scene;
+    scene.settings.sss.enabled = scatters;
     const std::string identity =
         identityOf(scene, mSettings, "scatter change, engine irradiance " + std::to_string(mSettings.irradianceSizeTexels) +
                                          ", spp " + std::to_string(mSettings.changeSamplesPerPixel));
@@ -233,7 +237,11 @@ Result<Image> ReferenceImages::scatterChange(Session& session) {
     return cached(name, identity, [&]() -> Result<Image> {
         log::info("capturing the engine's irradiance at " + std::to_string(mSettings.irradianceSizeTexels) +
                   " texels and scattering it exactly (the matched reference)");
+        // The capture plans the SSS characters of the session's scene: they are there only with SSS on.
+        const bool configured = session.scene->settings.sss.enabled;
+        session.scene->settings.sss.enabled = scatters;
         auto irradiance = session.renderer->captureIrradianceTextures(mSettings.irradianceSizeTexels);
+        session.scene->settings.sss.enabled = configured;
         if (!irradiance.ok()) return irradiance.error();
         reference::ReferenceOptions options = referenceOptions(mSettings);
         options.engineIrradiance = std::move(*irradiance);

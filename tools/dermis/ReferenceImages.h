@@ -51,9 +51,10 @@ public:
     Result<Image> sssOff(const Scene& scene);
     Result<Image> thicknessMm(const Scene& scene);
     // The exact scattering change of the engine's irradiance for the session's
-    // current scene (a GL context must be current): computed once per
-    // lighting setup, the real-time SSS knobs do not change it.
-    Result<Image> scatterChange(Session& session);
+    // current scene with SSS on or off as `scatters` says (a GL context must be
+    // current): computed once per lighting setup, the real-time SSS knobs
+    // (technique, taps, SSS on or off in the configuration) do not change it.
+    Result<Image> scatterChange(Session& session, bool scatters);
 
     const ReferenceSettings& settings() const { return mSettings; }
 
