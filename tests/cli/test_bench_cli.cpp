@@ -202,12 +202,16 @@ TEST(BenchCli, BadInputFailsBeforeAnythingIsWritten) {
         {kScene + " --size 64x36 --reference " + dir.file("missing.exr"), 1, "missing.exr"},
         {dir.file("nope.json"), 1, "nope.json"},
         {kScene + " --frames 0", 2, "--frames"},
+        // Refused before the full and SSS-off references are computed, not after.
+        {kScene + " --change-spp 3", 2, "--change-spp: must be a perfect square from 1 to 256, got 3"},
+        {kScene + " --spp 2", 2, "--spp: must be a perfect square"},
     };
     for (const Case& c : cases) {
         const ProcessResult r = runProcess(kDermis + " bench " + c.arguments + " --out " + out + " --quiet");
         EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.err;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.arguments << "\n" << r.err;
         EXPECT_FALSE(std::filesystem::exists(out + "/results.csv")) << c.arguments;
+        EXPECT_FALSE(std::filesystem::exists(out + "/reference.exr")) << c.arguments;
     }
     const ProcessResult noOut = runProcess(kDermis + " bench " + kScene + " --quiet");
     EXPECT_EQ(noOut.exitCode, 2);

@@ -231,8 +231,9 @@ protected:
             // meets and takes nothing (include/Transmittance.glsl); within 10% of it the map's
             // texels and depth filtering may put the point on either side, so it is not checked.
             if (trueMm < 0.9 * DERMIS_SELF_THICKNESS_MM) {
+                const glm::vec4 through = transmitted.at(x, row);
                 ++r.selfPixels;
-                r.selfWorst = std::max(r.selfWorst, double(std::max({transmitted.at(x, row).r, transmitted.at(x, row).g, transmitted.at(x, row).b})));
+                r.selfWorst = std::max(r.selfWorst, double(std::max({through.r, through.g, through.b})));
                 continue;
             }
             if (trueMm < 1.1 * DERMIS_SELF_THICKNESS_MM) continue;

@@ -2,6 +2,7 @@
 
 #include "core/Log.h"
 #include "core/TextFile.h"
+#include "reference/PixelSampling.h"
 #include "reference/ReferenceRenderer.h"
 #include "scene/SceneLoader.h"
 
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <utility>
 
 namespace dermis::cli {
 namespace {
@@ -115,23 +117,31 @@ std::string referenceStagesSummary(const reference::ReferenceStats& stats) {
 }
 
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
-    ReferenceSettings settings;
-    auto density = parsePositiveFloat("--density", args.get("density", "8"));
-    if (!density.ok()) return density.error();
-    settings.density = *density;
-    if (args.has("spp")) {
-        auto spp = parsePositiveInt("--spp", args.get("spp", ""));
-        if (!spp.ok()) return spp.error();
-        settings.samplesPerPixel = *spp;
+    ReferenceSettings settings;  // its defaults stand where an option is absent (and in the help)
+    if (args.has("density")) {
+        auto density = parsePositiveFloat("--density", args.get("density", ""));
+        if (!density.ok()) return density.error();
+        settings.density = *density;
     }
-    if (args.has("change-spp")) {
-        auto spp = parsePositiveInt("--change-spp", args.get("change-spp", ""));
-        if (!spp.ok()) return spp.error();
-        settings.changeSamplesPerPixel = *spp;
+    const struct {
+        const char* name;
+        int* target;
+        bool square;  // sub-samples per pixel: checked here, before any reference is computed and written
+    } integers[] = {{"spp", &settings.samplesPerPixel, true},
+                    {"change-spp", &settings.changeSamplesPerPixel, true},
+                    {"irradiance-size", &settings.irradianceSizeTexels, false}};
+    for (const auto& integer : integers) {
+        if (!args.has(integer.name)) continue;
+        const std::string option = std::string("--") + integer.name;
+        auto value = parsePositiveInt(option, args.get(integer.name, ""));
+        if (!value.ok()) return value.error();
+        if (integer.square && reference::strataPerSide(*value) == 0) {
+            return makeError(option, "must be a perfect square from 1 to " +
+                                         std::to_string(reference::kMaxSamplesPerPixel) + ", got " +
+                                         std::to_string(*value));
+        }
+        *integer.target = *value;
     }
-    auto irradianceSize = parsePositiveInt("--irradiance-size", args.get("irradiance-size", "4096"));
-    if (!irradianceSize.ok()) return irradianceSize.error();
-    settings.irradianceSizeTexels = *irradianceSize;
     auto progressive = progressiveSettingsFromArgs(args);
     if (!progressive.ok()) return progressive.error();
     settings.progressive = *progressive;

@@ -69,8 +69,8 @@ private:
 
 // The options that set ReferenceSettings (all but the size), for the option
 // lists and help texts of the commands that take them.
-inline const std::set<std::string> kReferenceOptionNames = {"density", "spp", "change-spp", "irradiance-size", "target-error",
-                                                            "max-passes"};
+inline const std::set<std::string> kReferenceOptionNames = {"density",      "spp",          "change-spp",
+                                                            "irradiance-size", "target-error", "max-passes"};
 std::string referenceOptionsHelp();
 Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args);
 // --target-error PCT (default kDefaultTargetRelativeRmse) and --max-passes N.
