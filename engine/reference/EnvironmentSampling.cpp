@@ -2,6 +2,8 @@
 
 #include "env/SphericalHarmonics.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -43,24 +45,27 @@ std::pair<int, double> pickBin(const double* cdf, int bins, double u, const uint
     const int bin = std::clamp(int(std::upper_bound(first, last, u) - cdf) - 1, 0, bins - 1);
     const double width = cdf[bin + 1] - cdf[bin];
     const double within = width > 0.0 ? (u - cdf[bin]) / width : 0.5;
-    return {bin, std::clamp(within, 0.0, std::nextafter(1.0, 0.0))};
+    constexpr double kBelowOne = 1.0 - 0x1p-53;  // the largest double below 1
+    return {bin, std::clamp(within, 0.0, kBelowOne)};
 }
 
 }  // namespace
 
-EnvironmentDistribution::EnvironmentDistribution(Image map) : mMap(std::move(map)) {
-    const int width = mMap.width;
-    const int height = mMap.height;
-    if (mMap.empty() || width <= 0 || height <= 0) return;
-    mLuminance.resize(size_t(width) * size_t(height));
+EnvironmentDistribution::EnvironmentDistribution(Image map) {
+    const int width = map.width;
+    const int height = map.height;
+    if (map.empty() || width <= 0 || height <= 0) return;
+    mWidth = width;
+    mHeight = height;
+    std::vector<float> texelLuminance(size_t(width) * size_t(height));
     mRowCdf.assign(size_t(height) + 1, 0.0);
     mColumnCdfs.assign(size_t(height) * (size_t(width) + 1), 0.0);
     for (int v = 0; v < height; ++v) {
         double* columnCdf = &mColumnCdfs[size_t(v) * (size_t(width) + 1)];
         for (int u = 0; u < width; ++u) {
-            const float texelLuminance = std::max(luminance(mMap.at(u, v)), 0.0f);
-            mLuminance[size_t(v) * size_t(width) + size_t(u)] = texelLuminance;
-            columnCdf[u + 1] = columnCdf[u] + double(texelLuminance);
+            const float l = std::max(luminance(map.at(u, v)), 0.0f);
+            texelLuminance[size_t(v) * size_t(width) + size_t(u)] = l;
+            columnCdf[u + 1] = columnCdf[u] + double(l);
         }
         // Every texel of a row has the same solid angle: it weights the row, not the columns.
         const double rowWeight = columnCdf[width] * double(latLongTexelSolidAngle(v, width, height));
@@ -75,60 +80,65 @@ EnvironmentDistribution::EnvironmentDistribution(Image map) : mMap(std::move(map
     for (int v = 0; v < height; ++v) {
         buildGuide(&mColumnCdfs[size_t(v) * (size_t(width) + 1)], width, &mColumnGuides[size_t(v) * (kGuideSize + 1)]);
     }
+    mRowEdgeCos.resize(size_t(height) + 1);
+    for (int v = 0; v <= height; ++v) mRowEdgeCos[size_t(v)] = std::cos(kPi * v / height);
+    mTexels.resize(texelLuminance.size());
+    for (int v = 0; v < height; ++v) {
+        for (int u = 0; u < width; ++u) {
+            const size_t i = size_t(v) * size_t(width) + size_t(u);
+            const float pdf = canSample() ? float(double(texelLuminance[i]) / mTotalWeight) : 0.0f;
+            mTexels[i] = glm::vec4(glm::vec3(map.at(u, v)), pdf);
+        }
+    }
 }
 
 EnvironmentSample EnvironmentDistribution::sample(const glm::vec2& u) const {
-    const int width = mMap.width;
-    const int height = mMap.height;
-    const auto [row, withinRow] = pickBin(mRowCdf.data(), height, double(u.x), mRowGuide.data());
-    const auto [column, withinColumn] = pickBin(&mColumnCdfs[size_t(row) * (size_t(width) + 1)], width, double(u.y),
+    const auto [row, withinRow] = pickBin(mRowCdf.data(), mHeight, double(u.x), mRowGuide.data());
+    const auto [column, withinColumn] = pickBin(&mColumnCdfs[size_t(row) * (size_t(mWidth) + 1)], mWidth, double(u.y),
                                                 &mColumnGuides[size_t(row) * (kGuideSize + 1)]);
     // Uniform in (phi, cos theta) over the texel's patch: uniform in solid angle.
-    const double cosTop = std::cos(kPi * row / height);
-    const double cosBottom = std::cos(kPi * (row + 1) / height);
-    const double cosTheta = cosTop + withinRow * (cosBottom - cosTop);
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    const double phi = 2.0 * kPi * (column + withinColumn) / width;
+    const double cosTop = mRowEdgeCos[size_t(row)];
+    const double cosTheta = cosTop + withinRow * (mRowEdgeCos[size_t(row) + 1] - cosTop);
+    const float sinTheta = float(std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta)));
+    const float phi = float(2.0 * kPi * (column + withinColumn) / mWidth);
+    const glm::vec4& record = texel({column, row});
     EnvironmentSample sample;
-    sample.direction = glm::vec3(float(sinTheta * std::sin(phi)), float(cosTheta), float(sinTheta * std::cos(phi)));
-    sample.pdfPerSr = pdfOfTexel({column, row});
-    sample.radiance = glm::vec3(mMap.at(column, row));
+    sample.direction = glm::vec3(sinTheta * std::sin(phi), float(cosTheta), sinTheta * std::cos(phi));
+    sample.pdfPerSr = record.a;
+    sample.radiance = glm::vec3(record);
     return sample;
 }
 
 glm::ivec2 EnvironmentDistribution::texelOf(const glm::vec3& direction) const {
-    double phi = std::atan2(double(direction.x), double(direction.z));
-    if (phi < 0.0) phi += 2.0 * kPi;
-    const double theta = std::acos(std::clamp(double(direction.y), -1.0, 1.0));
-    const int u = std::clamp(int(phi / (2.0 * kPi) * mMap.width), 0, mMap.width - 1);
-    const int v = std::clamp(int(theta / kPi * mMap.height), 0, mMap.height - 1);
+    // Single precision: a direction within a float's rounding of a texel edge may land in
+    // the neighbour, as it may after the float direction sample() returns.
+    constexpr float kTwoPi = 2.0f * glm::pi<float>();
+    float phi = std::atan2(direction.x, direction.z);
+    if (phi < 0.0f) phi += kTwoPi;
+    const float theta = std::acos(std::clamp(direction.y, -1.0f, 1.0f));
+    const int u = std::clamp(int(phi * (float(mWidth) / kTwoPi)), 0, mWidth - 1);
+    const int v = std::clamp(int(theta * (float(mHeight) / glm::pi<float>())), 0, mHeight - 1);
     return {u, v};
-}
-
-float EnvironmentDistribution::pdfOfTexel(const glm::ivec2& texel) const {
-    if (!canSample()) return 0.0f;
-    return float(double(mLuminance[size_t(texel.y) * size_t(mMap.width) + size_t(texel.x)]) / mTotalWeight);
 }
 
 float EnvironmentDistribution::pdfPerSr(const glm::vec3& direction) const {
     if (empty()) return 0.0f;
-    return pdfOfTexel(texelOf(direction));
+    return texel(texelOf(direction)).a;
 }
 
 EnvironmentSample EnvironmentDistribution::lookUp(const glm::vec3& direction) const {
     EnvironmentSample sample;
     sample.direction = direction;
     if (empty()) return sample;
-    const glm::ivec2 texel = texelOf(direction);
-    sample.pdfPerSr = pdfOfTexel(texel);
-    sample.radiance = glm::vec3(mMap.at(texel.x, texel.y));
+    const glm::vec4& record = texel(texelOf(direction));
+    sample.pdfPerSr = record.a;
+    sample.radiance = glm::vec3(record);
     return sample;
 }
 
 glm::vec3 EnvironmentDistribution::radiance(const glm::vec3& direction) const {
     if (empty()) return glm::vec3(0.0f);
-    const glm::ivec2 texel = texelOf(direction);
-    return glm::vec3(mMap.at(texel.x, texel.y));
+    return glm::vec3(texel(texelOf(direction)));
 }
 
 }  // namespace dermis::reference

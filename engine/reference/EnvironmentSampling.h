@@ -34,7 +34,7 @@ public:
     // `map`: linear RGB radiance, lat-long, width = 2 height (checkEnvironmentMap's maps).
     explicit EnvironmentDistribution(Image map);
 
-    bool empty() const { return mMap.empty(); }
+    bool empty() const { return mWidth == 0; }
     // False when every texel is black: sample() cannot be used then.
     bool canSample() const { return mTotalWeight > 0.0; }
 
@@ -50,16 +50,20 @@ public:
 
 private:
     glm::ivec2 texelOf(const glm::vec3& direction) const;
-    float pdfOfTexel(const glm::ivec2& texel) const;
+    const glm::vec4& texel(const glm::ivec2& at) const { return mTexels[size_t(at.y) * size_t(mWidth) + size_t(at.x)]; }
 
-    Image mMap;
-    std::vector<float> mLuminance;        // per texel, row-major
+    int mWidth = 0;
+    int mHeight = 0;
+    // Per texel, row-major: the radiance (rgb) and pdfPerSr (a) together, so that a
+    // look-up (the cosine technique's, at random texels) misses the cache once.
+    std::vector<glm::vec4> mTexels;
+    std::vector<double> mRowEdgeCos;      // height + 1 entries: cos theta at each row's top edge
     std::vector<double> mRowCdf;          // height + 1 entries, 0 .. 1
-    std::vector<double> mColumnCdfs;      // per row, width + 1 entries each, 0 .. 1
+    std::vector<double> mColumnCdfs;     // per row, width + 1 entries each, 0 .. 1
     // Guide tables (Chen & Asau 1974, the indexed search): entry g of a CDF's table is the
     // first index whose value exceeds g / kGuideSize, so a search starts next to its answer.
     std::vector<uint32_t> mRowGuide;      // kGuideSize + 1 entries
-    std::vector<uint32_t> mColumnGuides;  // per row, kGuideSize + 1 entries each
+    std::vector<uint32_t> mColumnGuides; // per row, kGuideSize + 1 entries each
     double mTotalWeight = 0.0;            // sum of luminance x texel solid angle
 };
 

@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -221,38 +222,63 @@ glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point, ui
     // (Veach 1997 eq. 9.12 with 9.15): for a direction drawn by technique t,
     //   w_t f / (n_t p_t) = f n_t p_t / ((n_map p_map)^2 + (n_cos p_cos)^2),
     // p_cos = max(N.omega, 0) / pi.
-    auto term = [&](const glm::vec3& omega, const glm::vec3& radiance, float mapPdfPerSr, bool fromMap) {
-        const float cosTheta = glm::dot(n, omega);
-        if (!(cosTheta > 0.0f) || radiance == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    auto term = [&](float cosTheta, const glm::vec3& radiance, float mapPdfPerSr, bool fromMap) {
         const float mapDensity = mapCount * mapPdfPerSr;
         const float cosineDensity = cosineCount * cosTheta * glm::one_over_pi<float>();
         const float density =
             (mapDensity * mapDensity + cosineDensity * cosineDensity) / (fromMap ? mapDensity : cosineDensity);
-        if (mOccluders->anyHit(Ray{rayOrigin(point, omega), omega}, 0.0f, std::numeric_limits<float>::infinity())) {
-            return glm::vec3(0.0f);
-        }
         const float share = mEnergyConservation ? energyLeftForDiffuse(cosTheta, point.roughness, point.rhoS) : 1.0f;
         return radiance * (cosTheta * share / density);
     };
     const uint32_t seed = positionSeed(point.positionM) ^ (sampleSet == 0 ? 0u : lowbias32(sampleSet * 0x85ebca6bu));
     const glm::vec2 mapShift(unitFromHash(lowbias32(seed + 1u)), unitFromHash(lowbias32(seed + 2u)));
     const glm::vec2 cosineShift(unitFromHash(lowbias32(seed + 3u)), unitFromHash(lowbias32(seed + 4u)));
-    glm::dvec3 sum(0.0);
-    for (const glm::vec2& square : mMapSquareSamples) {
-        const EnvironmentSample sample = mEnvironment.sample(shiftedModuloOne(square, mapShift));
-        sum += glm::dvec3(term(mWorldFromMap * sample.direction, sample.radiance, sample.pdfPerSr, true));
-    }
     glm::vec3 t, b;
     tangentFrame(n, t, b);
-    for (const glm::vec2& square : mCosineSquareSamples) {
-        // Malley's method: a uniform disc point lifted onto the hemisphere is cosine-distributed
-        // (Pharr, Jakob & Humphreys 2016 §13.6.3).
-        const glm::vec2 u = shiftedModuloOne(square, cosineShift);
-        const glm::vec2 disc = raytrace::concentricDisc(u);
-        const float up = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));
-        const glm::vec3 omega = glm::normalize(disc.x * t + disc.y * b + up * n);
-        const EnvironmentSample seen = mEnvironment.lookUp(glm::transpose(mWorldFromMap) * omega);
-        sum += glm::dvec3(term(omega, seen.radiance, seen.pdfPerSr, false));
+    // In batches, each step over the whole batch before the next: the random look-ups into the
+    // map and its CDFs miss the cache, and independent misses overlap. A cosine-drawn direction
+    // is looked up only if its ray escapes (an occluded one contributes nothing).
+    constexpr size_t kBatch = 16;
+    std::array<EnvironmentSample, kBatch> batch;
+    std::array<float, kBatch> cosines;
+    std::array<bool, kBatch> lit;
+    glm::dvec3 sum(0.0);
+    const size_t mapSamples = mMapSquareSamples.size();
+    const size_t total = mapSamples + mCosineSquareSamples.size();
+    for (size_t first = 0; first < total; first += kBatch) {
+        const size_t last = std::min(total, first + kBatch);
+        for (size_t i = first; i < last; ++i) {
+            EnvironmentSample& sample = batch[i - first];
+            if (i < mapSamples) {
+                sample = mEnvironment.sample(shiftedModuloOne(mMapSquareSamples[i], mapShift));
+                sample.direction = mWorldFromMap * sample.direction;
+                continue;
+            }
+            // Malley's method: a uniform disc point lifted onto the hemisphere is cosine-distributed
+            // (Pharr, Jakob & Humphreys 2016 §13.6.3).
+            const glm::vec2 u = shiftedModuloOne(mCosineSquareSamples[i - mapSamples], cosineShift);
+            const glm::vec2 disc = raytrace::concentricDisc(u);
+            const float up = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));
+            sample.direction = glm::normalize(disc.x * t + disc.y * b + up * n);
+        }
+        for (size_t i = first; i < last; ++i) {
+            const EnvironmentSample& sample = batch[i - first];
+            const float cosTheta = glm::dot(n, sample.direction);
+            cosines[i - first] = cosTheta;
+            // A map-drawn direction towards a black texel has density 0 and was not drawn.
+            const bool counts = cosTheta > 0.0f && (i >= mapSamples || sample.radiance != glm::vec3(0.0f));
+            lit[i - first] = counts && !mOccluders->anyHit(Ray{rayOrigin(point, sample.direction), sample.direction},
+                                                           0.0f, std::numeric_limits<float>::infinity());
+        }
+        for (size_t i = std::max(first, mapSamples); i < last; ++i) {
+            EnvironmentSample& sample = batch[i - first];
+            if (lit[i - first]) sample = mEnvironment.lookUp(glm::transpose(mWorldFromMap) * sample.direction);
+        }
+        for (size_t i = first; i < last; ++i) {
+            const EnvironmentSample& sample = batch[i - first];
+            if (!lit[i - first] || sample.radiance == glm::vec3(0.0f)) continue;
+            sum += glm::dvec3(term(cosines[i - first], sample.radiance, sample.pdfPerSr, i < mapSamples));
+        }
     }
     return glm::vec3(sum) * mEnvironmentIntensity;
 }
