@@ -16,7 +16,7 @@
 namespace dermis {
 
 struct AccessorView {
-    const unsigned char* data = nullptr;
+    const unsigned char* data = nullptr;  // null for a sparse accessor without a bufferView (zeros)
     size_t count = 0;
     size_t stride = 0;
     size_t componentSize = 0;
@@ -31,12 +31,18 @@ public:
     Error fail(const std::string& what) const { return makeError(mPath, what); }
     Result<AccessorView> view(int index, const std::string& where) const;
     // Every element as floats (normalised integers are scaled); `type` is a
-    // TINYGLTF_TYPE_*; values that are not finite are refused.
+    // TINYGLTF_TYPE_*; values that are not finite are refused. A sparse accessor
+    // (glTF 2.0 §3.6.2.3) is its base (its bufferView, or zeros) with the listed
+    // elements replaced.
     Result<std::vector<float>> readFloats(int index, int type, const std::string& where) const;
     // Triangle indices, each checked against the vertex count.
     Result<std::vector<uint32_t>> readIndices(int index, size_t vertexCount, const std::string& where) const;
 
 private:
+    // `bytes` bytes at `byteOffset` into bufferView `index`, checked against the view and its buffer.
+    Result<const unsigned char*> viewBytes(int index, size_t byteOffset, size_t bytes, const std::string& name) const;
+    Status applySparse(int index, std::vector<float>& values, const std::string& name) const;
+
     const tinygltf::Model& mGltf;
     std::string mPath;
 };

@@ -16,6 +16,7 @@
 #undef TINYGLTF_IMPLEMENTATION
 
 #include "import/GltfAccessors.h"
+#include "import/GltfTextureTransform.h"
 #include "import/GltfRig.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -256,13 +257,14 @@ private:
     // Required extensions it cannot honour are refused or named; optional
     // ones it ignores are named in one warning.
     Status checkExtensions() {
-        const std::vector<std::string> supported = {"KHR_mesh_quantization"};
-        auto isSupported = [&](const std::string& e) { return std::find(supported.begin(), supported.end(), e) != supported.end(); };
+        auto isSupported = [&](const std::string& e) {
+            return std::find(std::begin(kSupportedGltfExtensions), std::end(kSupportedGltfExtensions), e) !=
+                   std::end(kSupportedGltfExtensions);
+        };
+        // glTF 2.0 §3.12: a loader refuses a file whose extensionsRequired it does not support.
         for (const std::string& extension : mGltf.extensionsRequired) {
-            if (isSupported(extension)) continue;
-            if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression")
-                return fail("requires " + extension + ", which is not supported");
-            log::warn(mPath + ": requires " + extension + ", which is ignored");
+            if (!isSupported(extension))
+                return fail("requires " + extension + ", which Dermis does not support (docs/gltf.md lists what it reads)");
         }
         std::string ignored;
         for (const std::string& extension : mGltf.extensionsUsed) {
@@ -402,6 +404,18 @@ private:
                             std::to_string(mGltf.accessors[static_cast<size_t>(accessor)].count) +
                             " elements, POSITION has " + std::to_string(vertexCount));
             *optional.out = std::move(values.value());
+        }
+
+        if (uvs) {
+            Result<UvTransform> transform = uvTransformOf(primitive.material);
+            if (!transform) return transform.error();
+            if (!transform->identity) {
+                for (size_t i = 0; i + 1 < uvs->size(); i += 2) {
+                    const glm::vec2 uv = transform->apply(glm::vec2((*uvs)[i], (*uvs)[i + 1]));
+                    (*uvs)[i] = uv.x;
+                    (*uvs)[i + 1] = uv.y;
+                }
+            }
         }
 
         Result<std::vector<glm::vec4>> colours = readColours(attribute("COLOR_0"), vertexCount, where);
@@ -564,6 +578,16 @@ private:
         for (uint32_t index : piece.indices) merged.indices.push_back(index + offset);
     }
 
+    // KHR_texture_transform of a material, read (and warned about) once.
+    Result<UvTransform> uvTransformOf(int material) {
+        auto it = mUvTransforms.find(material);
+        if (it != mUvTransforms.end()) return it->second;
+        Result<UvTransform> transform = materialUvTransform(mGltf, material, mPath);
+        if (!transform) return transform.error();
+        mUvTransforms.emplace(material, *transform);
+        return transform;
+    }
+
     // Model::materials[i] is the glTF material mUsedMaterials[i] (-1: glTF's default material).
     Status loadMaterials() {
         mModel.materials.clear();
@@ -656,6 +680,7 @@ private:
     std::vector<int> mUsedMaterials;  // glTF material indices in first-use order, -1 the default material
     std::map<std::pair<int, ColourSpace>, Image> mDecoded;  // images shared by several materials decode once
     std::optional<GltfRigBuilder> mRig;  // when the file moves vertices
+    std::map<int, UvTransform> mUvTransforms;  // by glTF material index
 };
 
 Result<Model> loadGltfUnguarded(const std::string& path) {

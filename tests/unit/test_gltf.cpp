@@ -843,7 +843,7 @@ TEST_F(GltfTest, BadSkinsAndClipsAreRefusedNamingThePlace) {
     extension.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
     extension.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     extension.writeGltf(path("draco.gltf"));
-    expectError(path("draco.gltf"), "requires KHR_draco_mesh_compression, which is not supported");
+    expectError(path("draco.gltf"), "requires KHR_draco_mesh_compression, which Dermis does not support");
 }
 
 TEST_F(GltfTest, WeightsOffOneAreNormalisedWithOneWarning) {
@@ -890,12 +890,187 @@ TEST_F(GltfTest, WeightsOffOneAreNormalisedWithOneWarning) {
 
 TEST_F(GltfTest, UnsupportedOptionalExtensionsAreNamedInOneWarning) {
     GltfBuilder b = quadBuilder(kUnsignedShort);
-    b.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_clearcoat"};
+    b.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_clearcoat", "KHR_materials_sheen"};
     b.writeGltf(path("used.gltf"));
     ::testing::internal::CaptureStderr();
     ASSERT_TRUE(loadGltf(path("used.gltf").string()));
     const std::string err = ::testing::internal::GetCapturedStderr();
-    EXPECT_NE(err.find("used.gltf: uses KHR_texture_transform, KHR_materials_clearcoat, which this loader ignores"),
+    EXPECT_NE(err.find("used.gltf: uses KHR_materials_clearcoat, KHR_materials_sheen, which this loader ignores"),
               std::string::npos)
         << err;
+}
+
+// glTF 2.0 §3.12: a file whose extensionsRequired names an extension the loader
+// does not support must be refused; the two it supports load.
+TEST_F(GltfTest, UnsupportedRequiredExtensionsAreRefusedInOneLine) {
+    for (const char* extension : {"KHR_materials_clearcoat", "EXT_made_up"}) {
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["extensionsUsed"] = {extension};
+        b.doc["extensionsRequired"] = {extension};
+        b.writeGltf(path("required.gltf"));
+        Result<Model> model = loadGltf(path("required.gltf").string());
+        ASSERT_FALSE(model) << extension;
+        EXPECT_EQ(model.error().message().find('\n'), std::string::npos);
+        EXPECT_NE(model.error().message().find(std::string("required.gltf: requires ") + extension +
+                                               ", which Dermis does not support"),
+                  std::string::npos)
+            << model.error().message();
+    }
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["extensionsUsed"] = {"KHR_mesh_quantization", "KHR_texture_transform"};
+    b.doc["extensionsRequired"] = {"KHR_mesh_quantization", "KHR_texture_transform"};
+    b.writeGltf(path("supported.gltf"));
+    Result<Model> model = loadGltf(path("supported.gltf").string());
+    EXPECT_TRUE(model) << model.error().message();
+}
+
+namespace {
+void writeTestPng(const fs::path& file) {
+    Image pixel;
+    pixel.width = 2;
+    pixel.height = 2;
+    pixel.texels.assign(4, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    ASSERT_TRUE(saveImage(file.string(), pixel));
+}
+
+// The quad with a base colour texture whose KHR_texture_transform is `transform`.
+GltfBuilder texturedQuad(const json& transform) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["images"] = {{{"uri", "albedo.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {{{"pbrMetallicRoughness",
+                            {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}}}};
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    return b;
+}
+}  // namespace
+
+TEST_F(GltfTest, TextureTransformFollowsTheExtensionsWorkedExample) {
+    writeTestPng(path("albedo.png"));
+    // The extension's example: offset [0, 1], rotation pi/2, scale 0.5 reads the image's
+    // lower-left quadrant turned a quarter: (u, v) -> (v / 2, 1 - u / 2).
+    texturedQuad({{"offset", {0.0, 1.0}}, {"rotation", 1.57079632679}, {"scale", {0.5, 0.5}}})
+        .writeGltf(path("turned.gltf"));
+    Result<Model> model = loadGltf(path("turned.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    for (size_t v = 0; v < 4; ++v) {
+        const glm::vec2 file(kQuadUvs[2 * v], kQuadUvs[2 * v + 1]);
+        const glm::vec2 expected(file.y / 2.0f, 1.0f - file.x / 2.0f);
+        EXPECT_NEAR(glm::distance(model->mesh.vertices[v].uv, expected), 0.0f, 1e-6f) << v;
+    }
+}
+
+TEST_F(GltfTest, QuantizedUvsAreScaledBackByTheirTextureTransform) {
+    writeTestPng(path("albedo.png"));
+    // As gltfpack writes them: UVs as normalised uint16 of (uv - offset) / scale, with the
+    // transform restoring them (KHR_mesh_quantization with KHR_texture_transform).
+    const glm::vec2 offset(-0.25f, -1.0f), scale(1.5f, 2.0f);  // spans [-0.25, 1.25] and [-1, 1]
+    std::vector<uint16_t> quantized;
+    for (size_t i = 0; i < kQuadUvs.size(); ++i)
+        quantized.push_back(uint16_t(std::lround((kQuadUvs[i] - offset[int(i % 2)]) / scale[int(i % 2)] * 65535.0)));
+    GltfBuilder b = texturedQuad({{"offset", {offset.x, offset.y}}, {"scale", {scale.x, scale.y}}});
+    const int uvs = b.accessor(quantized, kUnsignedShort, "VEC2", 4);
+    b.doc["accessors"][uvs]["normalized"] = true;
+    b.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = uvs;
+    b.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_mesh_quantization"};
+    b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+    b.writeGltf(path("quantized.gltf"));
+    Result<Model> model = loadGltf(path("quantized.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    // 16-bit quantization of a span of 1 / scale: within half a step of 1/65535.
+    for (size_t v = 0; v < 4; ++v) {
+        const glm::vec2 expected(kQuadUvs[2 * v], kQuadUvs[2 * v + 1]);
+        EXPECT_NEAR(model->mesh.vertices[v].uv.x, expected.x, 0.5f * scale.x / 65535.0f + 1e-7f) << v;
+        EXPECT_NEAR(model->mesh.vertices[v].uv.y, expected.y, 0.5f * scale.y / 65535.0f + 1e-7f) << v;
+    }
+}
+
+TEST_F(GltfTest, MalformedTextureTransformIsRefusedNamingTheMap) {
+    writeTestPng(path("albedo.png"));
+    texturedQuad({{"scale", {1.0}}}).writeGltf(path("bad_transform.gltf"));
+    Result<Model> model = loadGltf(path("bad_transform.gltf").string());
+    ASSERT_FALSE(model);
+    EXPECT_NE(model.error().message().find(
+                  "material 0 baseColorTexture: KHR_texture_transform scale must be an array of two numbers"),
+              std::string::npos)
+        << model.error().message();
+}
+
+// glTF 2.0 §3.6.2.3: a sparse accessor is its base (a bufferView, or zeros) with
+// listed elements replaced; Blender writes morph targets this way.
+TEST_F(GltfTest, SparseMorphTargetWithoutBaseMovesOnlyItsListedVertices) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    const int indexView = b.imageView({1, 0, 3, 0});  // uint16 vertices 1 and 3
+    std::vector<unsigned char> deltas(2 * 3 * sizeof(float));
+    const float values[6] = {0, 0, 2, 0, 0, 4};
+    std::memcpy(deltas.data(), values, sizeof values);
+    const int valueView = b.imageView(deltas);
+    b.doc["accessors"].push_back({{"componentType", kFloat},
+                                  {"count", 4},
+                                  {"type", "VEC3"},
+                                  {"sparse",
+                                   {{"count", 2},
+                                    {"indices", {{"bufferView", indexView}, {"componentType", kUnsignedShort}}},
+                                    {"values", {{"bufferView", valueView}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", b.doc["accessors"].size() - 1}}};
+    b.doc["meshes"][0]["weights"] = {0.5};
+    b.writeGltf(path("sparse.gltf"));
+    Result<Model> model = loadGltf(path("sparse.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    // Vertices 0 and 2 keep z = 0 (zeros); 1 and 3 move by 0.5 x their delta.
+    const float expected[4] = {0.0f, 1.0f, 0.0f, 2.0f};
+    for (size_t v = 0; v < 4; ++v) EXPECT_NEAR(model->mesh.vertices[v].position.z, expected[v], 1e-6f) << v;
+}
+
+TEST_F(GltfTest, SparseAccessorReplacesElementsOfItsBase) {
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    // The UVs again, with vertex 2's replaced by (0.5, 0.25) through a uint8 index.
+    const int indexView = b.imageView({2});
+    std::vector<unsigned char> uv(2 * sizeof(float));
+    const float replacement[2] = {0.5f, 0.25f};
+    std::memcpy(uv.data(), replacement, sizeof replacement);
+    const int valueView = b.imageView(uv);
+    json& uvs = b.doc["accessors"][b.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"].get<int>()];
+    uvs["sparse"] = {{"count", 1},
+                     {"indices", {{"bufferView", indexView}, {"componentType", kUnsignedByte}}},
+                     {"values", {{"bufferView", valueView}}}};
+    b.writeGltf(path("sparse_uv.gltf"));
+    Result<Model> model = loadGltf(path("sparse_uv.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->mesh.vertices[2].uv, glm::vec2(0.5f, 0.25f));
+    EXPECT_EQ(model->mesh.vertices[0].uv, glm::vec2(kQuadUvs[0], kQuadUvs[1]));
+    EXPECT_EQ(model->mesh.vertices[3].uv, glm::vec2(kQuadUvs[6], kQuadUvs[7]));
+}
+
+TEST_F(GltfTest, BadSparseAccessorsAreRefusedNamingTheAccessor) {
+    struct Case {
+        const char* name;
+        std::vector<unsigned char> indices;
+        int count;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"index out of range", {9}, 1, "sparse: index 9 at 0 is out of range for 4 elements"},
+        {"values past their view", {0, 1}, 2, "sparse values (24 bytes at 0) runs past the end of bufferView"},
+        {"count above the accessor's", {0, 1, 2, 3, 0}, 5, "sparse count 5 is not in [1, 4]"},
+    };
+    for (const Case& c : cases) {
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        const int indexView = b.imageView(c.indices);
+        const int valueView = b.imageView(std::vector<unsigned char>(12, 0));  // one VEC3 of floats
+        b.doc["accessors"].push_back({{"componentType", kFloat},
+                                      {"count", 4},
+                                      {"type", "VEC3"},
+                                      {"sparse",
+                                       {{"count", c.count},
+                                        {"indices", {{"bufferView", indexView}, {"componentType", kUnsignedByte}}},
+                                        {"values", {{"bufferView", valueView}}}}}});
+        b.doc["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", b.doc["accessors"].size() - 1}}};
+        b.writeGltf(path("bad_sparse.gltf"));
+        Result<Model> model = loadGltf(path("bad_sparse.gltf").string());
+        ASSERT_FALSE(model) << c.name;
+        EXPECT_NE(model.error().message().find(c.message), std::string::npos) << c.name << ": " << model.error().message();
+        EXPECT_NE(model.error().message().find("bad_sparse.gltf"), std::string::npos) << c.name;
+    }
 }
