@@ -16,6 +16,7 @@
 #undef TINYGLTF_IMPLEMENTATION
 
 #include "import/GltfAccessors.h"
+#include "import/GltfMeshopt.h"
 #include "import/GltfTextureTransform.h"
 #include "import/GltfRig.h"
 
@@ -175,6 +176,25 @@ Result<GlbLayout> checkGlb(const std::vector<unsigned char>& bytes, const std::s
             return makeError(path, "truncated GLB: the BIN chunk runs past the end");
     }
     return layout;
+}
+
+// The GLB with its JSON chunk replaced by `json` (padded with spaces, as GLB requires)
+// and the rest as it was; `layout` is updated to the new bytes.
+std::vector<unsigned char> replaceGlbJson(const std::vector<unsigned char>& bytes, const GlbLayout& old,
+                                          std::string json, GlbLayout* layout) {
+    while (json.size() % 4) json += ' ';
+    const size_t rest = old.jsonOffset + old.jsonLength;
+    std::vector<unsigned char> out(bytes.begin(), bytes.begin() + long(old.jsonOffset));
+    out.insert(out.end(), json.begin(), json.end());
+    out.insert(out.end(), bytes.begin() + long(rest), bytes.begin() + long(old.length));
+    auto writeU32 = [&out](size_t at, size_t value) {
+        for (int i = 0; i < 4; ++i) out[at + size_t(i)] = static_cast<unsigned char>(uint32_t(value) >> (8 * i));
+    };
+    writeU32(8, out.size());
+    writeU32(12, json.size());
+    layout->length = out.size();
+    layout->jsonLength = json.size();
+    return out;
 }
 
 std::string percentDecode(const std::string& uri) {
@@ -706,6 +726,13 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
     }
     if (jsonNestingDepth(json.data(), json.size()) > kMaxJsonNesting)
         return makeError(path, "JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+    MeshoptFallbacks fallbacks;
+    Result<std::string> prepared = setAsideMeshoptFallbacks(json, fallbacks, path);
+    if (!prepared) return prepared.error();
+    if (!fallbacks.empty()) {
+        json = std::move(prepared.value());
+        if (glb) bytes = replaceGlbJson(bytes, *glb, json, &glb.value());
+    }
     const bool loaded =
         glb ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), static_cast<unsigned int>(glb->length),
                                           baseDir)
@@ -713,6 +740,7 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
                                          baseDir);
     if (!warn.empty()) log::warn(path + ": " + oneLine(warn));
     if (!loaded) return makeError(path, describeLoadError(err, json));
+    if (Status decoded = decodeMeshoptViews(gltf, fallbacks, path); !decoded) return decoded.error();
     return GltfConverter(gltf, path).convert();
 }
 

@@ -13,7 +13,8 @@ namespace dermis {
 
 // The glTF extensions a file may list in extensionsRequired (docs/gltf.md says what each
 // does); a file requiring any other is refused in one line naming it.
-inline constexpr const char* kSupportedGltfExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform"};
+inline constexpr const char* kSupportedGltfExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform",
+                                                             "EXT_meshopt_compression"};
 
 Result<Model> loadGltf(const std::string& path);
 
