@@ -11,11 +11,13 @@
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 // tiny_gltf.h guards its declarations only: the headers below include it again.
 #undef TINYGLTF_IMPLEMENTATION
 
 #include "import/GltfAccessors.h"
+#include "import/GltfDraco.h"
 #include "import/GltfMeshopt.h"
 #include "import/GltfTextureTransform.h"
 #include "import/GltfRig.h"
@@ -726,12 +728,19 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
     }
     if (jsonNestingDepth(json.data(), json.size()) > kMaxJsonNesting)
         return makeError(path, "JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+    // What tinygltf would refuse in compressed files is set aside in the JSON first.
     MeshoptFallbacks fallbacks;
-    Result<std::string> prepared = setAsideMeshoptFallbacks(json, fallbacks, path);
-    if (!prepared) return prepared.error();
-    if (!fallbacks.empty()) {
-        json = std::move(prepared.value());
-        if (glb) bytes = replaceGlbJson(bytes, *glb, json, &glb.value());
+    if (json.find("EXT_meshopt_compression") != std::string::npos ||
+        json.find("KHR_draco_mesh_compression") != std::string::npos) {
+        nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
+        if (!document.is_discarded()) {
+            if (Status status = setAsideMeshoptFallbacks(document, fallbacks, path); !status) return status.error();
+            const bool detached = detachDracoIndices(document);
+            if (!fallbacks.empty() || detached) {
+                json = document.dump();
+                if (glb) bytes = replaceGlbJson(bytes, *glb, json, &glb.value());
+            }
+        }
     }
     const bool loaded =
         glb ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), static_cast<unsigned int>(glb->length),
@@ -741,6 +750,7 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
     if (!warn.empty()) log::warn(path + ": " + oneLine(warn));
     if (!loaded) return makeError(path, describeLoadError(err, json));
     if (Status decoded = decodeMeshoptViews(gltf, fallbacks, path); !decoded) return decoded.error();
+    if (Status decoded = decodeDracoPrimitives(gltf, path); !decoded) return decoded.error();
     return GltfConverter(gltf, path).convert();
 }
 

@@ -1,7 +1,6 @@
 #include "import/GltfMeshopt.h"
 
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 #include <cstring>
 
@@ -42,14 +41,10 @@ std::string readString(const tinygltf::Value& object, const char* key, const cha
 
 }  // namespace
 
-Result<std::string> setAsideMeshoptFallbacks(const std::string& json, MeshoptFallbacks& fallbacks,
-                                             const std::string& path) {
+Status setAsideMeshoptFallbacks(nlohmann::json& document, MeshoptFallbacks& fallbacks, const std::string& path) {
     fallbacks = {};
-    if (json.find(kExtension) == std::string::npos) return json;
-    nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
-    if (document.is_discarded() || !document.is_object() || !document.contains("buffers") ||
-        !document["buffers"].is_array())
-        return json;  // tinygltf reports what is wrong with it
+    if (!document.is_object() || !document.contains("buffers") || !document["buffers"].is_array())
+        return success();  // tinygltf reports what is wrong with it
     nlohmann::json& buffers = document["buffers"];
     for (size_t i = 0; i < buffers.size(); ++i) {
         nlohmann::json& buffer = buffers[i];
@@ -73,8 +68,7 @@ Result<std::string> setAsideMeshoptFallbacks(const std::string& json, MeshoptFal
         buffer["byteLength"] = kPlaceholderBytes;
         buffer["uri"] = kPlaceholderDataUri;
     }
-    if (fallbacks.empty()) return json;
-    return document.dump();
+    return success();
 }
 
 Status decodeMeshoptViews(tinygltf::Model& gltf, const MeshoptFallbacks& fallbacks, const std::string& path) {

@@ -10,6 +10,7 @@
 
 #include "core/Result.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cstddef>
@@ -23,10 +24,9 @@ struct MeshoptFallbacks {
     bool empty() const { return buffers.empty(); }
 };
 
-// `json` rewritten so that tinygltf accepts its fallback buffers (a placeholder data URI each),
-// and what was set aside; the text unchanged when the file has none.
-Result<std::string> setAsideMeshoptFallbacks(const std::string& json, MeshoptFallbacks& fallbacks,
-                                             const std::string& path);
+// `document` rewritten so that tinygltf accepts its fallback buffers (a placeholder data URI
+// each), and what was set aside; the document unchanged when it has none.
+Status setAsideMeshoptFallbacks(nlohmann::json& document, MeshoptFallbacks& fallbacks, const std::string& path);
 
 // Gives each fallback buffer its length back and decodes every compressed buffer view
 // into its buffer; every offset, length, count, stride, mode and filter is checked first.
