@@ -4,6 +4,7 @@
 #include "BenchContext.h"
 #include "CrowdBenchmarks.h"
 #include "EnvironmentBenchmarks.h"
+#include "GltfDecodeBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "QualityBenchmarks.h"
 #include "RayBenchmarks.h"
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     dermis::bench::printTextureSpaceSummary();
     dermis::bench::printLeanSummary();
     dermis::bench::printCrowdSummary();
+    dermis::bench::printGltfDecodeSummary();
     dermis::bench::printAnimatedCrowdSummary();
     dermis::bench::printEnvironmentSummary();
     dermis::bench::printTechniqueSummary();
