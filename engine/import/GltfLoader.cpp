@@ -652,7 +652,19 @@ private:
                           "; only TEXCOORD_0 is loaded");
             if (static_cast<size_t>(map.texture) >= mGltf.textures.size())
                 return fail(where + ": texture " + std::to_string(map.texture) + " is out of range");
-            int source = mGltf.textures[static_cast<size_t>(map.texture)].source;
+            const tinygltf::Texture& texture = mGltf.textures[static_cast<size_t>(map.texture)];
+            const int source = texture.source;
+            // KTX2 (KHR_texture_basisu): no Debian package decodes it. Without a PNG or JPEG
+            // fallback in `source`, the map is skipped with one warning and the material's
+            // factors stand; the rest of the file loads.
+            const bool basisOnly = source < 0 && texture.extensions.count("KHR_texture_basisu") != 0;
+            if (basisOnly || (source >= 0 && static_cast<size_t>(source) < mGltf.images.size() &&
+                              isKtx2(mGltf.images[static_cast<size_t>(source)]))) {
+                log::warn(mPath + ": " + where + ": texture " + std::to_string(map.texture) +
+                          " is KTX2 (KHR_texture_basisu), which Dermis cannot decode; drawn with the material's "
+                          "factors. Re-export with PNG or JPEG textures (gltfpack without -tc)");
+                continue;
+            }
             if (source < 0 || static_cast<size_t>(source) >= mGltf.images.size())
                 return fail(where + ": texture " + std::to_string(map.texture) + " has no image this loader can read");
             auto decoded = mDecoded.find({source, map.colourSpace});
@@ -664,6 +676,11 @@ private:
             *map.out = decoded->second;
         }
         return success();
+    }
+
+    static bool isKtx2(const tinygltf::Image& image) {
+        const std::string& uri = image.uri;
+        return image.mimeType == "image/ktx2" || (uri.size() >= 5 && uri.compare(uri.size() - 5, 5, ".ktx2") == 0);
     }
 
     Result<Image> decodeImage(int index, ColourSpace colourSpace) const {

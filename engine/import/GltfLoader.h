@@ -14,7 +14,10 @@ namespace dermis {
 // The glTF extensions a file may list in extensionsRequired (docs/gltf.md says what each
 // does); a file requiring any other is refused in one line naming it.
 inline constexpr const char* kSupportedGltfExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform",
-                                                             "EXT_meshopt_compression", "KHR_draco_mesh_compression"};
+                                                             "EXT_meshopt_compression", "KHR_draco_mesh_compression",
+                                                             // read as far as it can be: each KTX2 texture is skipped
+                                                             // with a warning (no Debian decoder), the rest loads
+                                                             "KHR_texture_basisu"};
 
 Result<Model> loadGltf(const std::string& path);
 

@@ -840,10 +840,10 @@ TEST_F(GltfTest, BadSkinsAndClipsAreRefusedNamingThePlace) {
     expectError(path("bare.gltf"), "has skin 0 but the primitive has no JOINTS_0/WEIGHTS_0");
 
     GltfBuilder extension = quadBuilder(kUnsignedShort);
-    extension.doc["extensionsUsed"] = {"KHR_texture_basisu"};
-    extension.doc["extensionsRequired"] = {"KHR_texture_basisu"};
-    extension.writeGltf(path("basisu.gltf"));
-    expectError(path("basisu.gltf"), "requires KHR_texture_basisu, which Dermis does not support");
+    extension.doc["extensionsUsed"] = {"KHR_materials_volume"};
+    extension.doc["extensionsRequired"] = {"KHR_materials_volume"};
+    extension.writeGltf(path("volume.gltf"));
+    expectError(path("volume.gltf"), "requires KHR_materials_volume, which Dermis does not support");
 }
 
 TEST_F(GltfTest, WeightsOffOneAreNormalisedWithOneWarning) {
@@ -1073,4 +1073,38 @@ TEST_F(GltfTest, BadSparseAccessorsAreRefusedNamingTheAccessor) {
         EXPECT_NE(model.error().message().find(c.message), std::string::npos) << c.name << ": " << model.error().message();
         EXPECT_NE(model.error().message().find("bad_sparse.gltf"), std::string::npos) << c.name;
     }
+}
+
+// KHR_texture_basisu: KTX2 textures have no Debian decoder. A texture with only a KTX2 source
+// is skipped with one warning naming the map and how to convert; one with a PNG fallback in
+// `source` uses it; the file loads either way.
+TEST_F(GltfTest, Ktx2TexturesAreSkippedWithOneWarningAndFallbacksUsed) {
+    writeTestPng(path("albedo.png"));
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["images"] = {{{"uri", "skin.ktx2"}, {"mimeType", "image/ktx2"}}, {{"uri", "albedo.png"}}};
+    b.doc["textures"] = {{{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}},
+                         {{"source", 1}, {"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}}};
+    b.doc["materials"] = {{{"name", "Skin"},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {0.8, 0.5, 0.4, 1.0}}}}},
+                          {{"name", "Cloth"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}}};
+    json second = b.doc["meshes"][0]["primitives"][0];
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    second["material"] = 1;
+    b.doc["meshes"][0]["primitives"].push_back(second);
+    b.doc["extensionsUsed"] = {"KHR_texture_basisu"};
+    b.doc["extensionsRequired"] = {"KHR_texture_basisu"};
+    b.writeGltf(path("ktx2.gltf"));
+    ::testing::internal::CaptureStderr();
+    Result<Model> model = loadGltf(path("ktx2.gltf").string());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    ASSERT_TRUE(model) << model.error().message();
+    ASSERT_EQ(model->materials.size(), 2u);
+    EXPECT_TRUE(model->materials[0].albedoMap.empty());
+    EXPECT_EQ(model->materials[0].baseColourFactor, glm::vec4(0.8f, 0.5f, 0.4f, 1.0f));
+    EXPECT_FALSE(model->materials[1].albedoMap.empty());  // the PNG fallback
+    EXPECT_NE(err.find("ktx2.gltf: material 0 'Skin' baseColorTexture: texture 0 is KTX2 (KHR_texture_basisu), which "
+                       "Dermis cannot decode; drawn with the material's factors. Re-export with PNG or JPEG textures"),
+              std::string::npos)
+        << err;
+    EXPECT_EQ(err.find("texture 1 is KTX2"), std::string::npos) << err;
 }
