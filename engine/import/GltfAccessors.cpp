@@ -103,15 +103,10 @@ Result<AccessorView> GltfAccessors::view(int index, const std::string& where) co
     }
     if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= mGltf.bufferViews.size())
         return fail(name + " has no valid bufferView");
+    Result<const unsigned char*> start = bufferViewStart(accessor.bufferView);
+    if (!start) return start.error();
     const tinygltf::BufferView& bufferView = mGltf.bufferViews[static_cast<size_t>(accessor.bufferView)];
     const std::string viewName = "bufferView " + std::to_string(accessor.bufferView);
-    if (bufferView.buffer < 0 || static_cast<size_t>(bufferView.buffer) >= mGltf.buffers.size())
-        return fail(viewName + ": buffer " + std::to_string(bufferView.buffer) + " is out of range");
-    const std::vector<unsigned char>& buffer = mGltf.buffers[static_cast<size_t>(bufferView.buffer)].data;
-    if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
-        return fail(viewName + " (" + std::to_string(bufferView.byteLength) + " bytes at " +
-                    std::to_string(bufferView.byteOffset) + ") is outside its buffer of " +
-                    std::to_string(buffer.size()) + " bytes");
     const size_t elementSize = view.componentSize * static_cast<size_t>(components);
     view.stride = bufferView.byteStride == 0 ? elementSize : bufferView.byteStride;
     if (view.stride < elementSize)
@@ -121,8 +116,21 @@ Result<AccessorView> GltfAccessors::view(int index, const std::string& where) co
     if (bufferView.byteLength < elementSize || accessor.byteOffset > bufferView.byteLength - elementSize ||
         accessor.count - 1 > (bufferView.byteLength - elementSize - accessor.byteOffset) / view.stride)
         return fail(name + " (" + std::to_string(accessor.count) + " elements) runs past the end of " + viewName);
-    view.data = buffer.data() + bufferView.byteOffset + accessor.byteOffset;
+    view.data = *start + accessor.byteOffset;
     return view;
+}
+
+Result<const unsigned char*> GltfAccessors::bufferViewStart(int index) const {
+    const tinygltf::BufferView& bufferView = mGltf.bufferViews[static_cast<size_t>(index)];
+    const std::string viewName = "bufferView " + std::to_string(index);
+    if (bufferView.buffer < 0 || static_cast<size_t>(bufferView.buffer) >= mGltf.buffers.size())
+        return fail(viewName + ": buffer " + std::to_string(bufferView.buffer) + " is out of range");
+    const std::vector<unsigned char>& buffer = mGltf.buffers[static_cast<size_t>(bufferView.buffer)].data;
+    if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
+        return fail(viewName + " (" + std::to_string(bufferView.byteLength) + " bytes at " +
+                    std::to_string(bufferView.byteOffset) + ") is outside its buffer of " +
+                    std::to_string(buffer.size()) + " bytes");
+    return buffer.data() + bufferView.byteOffset;
 }
 
 Result<std::vector<float>> GltfAccessors::readFloats(int index, int type, const std::string& where) const {
@@ -152,19 +160,13 @@ Result<const unsigned char*> GltfAccessors::viewBytes(int index, size_t byteOffs
                                                       const std::string& name) const {
     if (index < 0 || static_cast<size_t>(index) >= mGltf.bufferViews.size())
         return fail(name + ": bufferView " + std::to_string(index) + " is out of range");
+    Result<const unsigned char*> start = bufferViewStart(index);
+    if (!start) return start.error();
     const tinygltf::BufferView& bufferView = mGltf.bufferViews[static_cast<size_t>(index)];
-    const std::string viewName = "bufferView " + std::to_string(index);
-    if (bufferView.buffer < 0 || static_cast<size_t>(bufferView.buffer) >= mGltf.buffers.size())
-        return fail(viewName + ": buffer " + std::to_string(bufferView.buffer) + " is out of range");
-    const std::vector<unsigned char>& buffer = mGltf.buffers[static_cast<size_t>(bufferView.buffer)].data;
-    if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
-        return fail(viewName + " (" + std::to_string(bufferView.byteLength) + " bytes at " +
-                    std::to_string(bufferView.byteOffset) + ") is outside its buffer of " +
-                    std::to_string(buffer.size()) + " bytes");
     if (byteOffset > bufferView.byteLength || bytes > bufferView.byteLength - byteOffset)
         return fail(name + " (" + std::to_string(bytes) + " bytes at " + std::to_string(byteOffset) +
-                    ") runs past the end of " + viewName);
-    return buffer.data() + bufferView.byteOffset + byteOffset;
+                    ") runs past the end of bufferView " + std::to_string(index));
+    return *start + byteOffset;
 }
 
 Status GltfAccessors::applySparse(int index, std::vector<float>& values, const std::string& name) const {

@@ -39,6 +39,8 @@ public:
     Result<std::vector<uint32_t>> readIndices(int index, size_t vertexCount, const std::string& where) const;
 
 private:
+    // The first byte of bufferView `index` (in range), the view checked against its buffer.
+    Result<const unsigned char*> bufferViewStart(int index) const;
     // `bytes` bytes at `byteOffset` into bufferView `index`, checked against the view and its buffer.
     Result<const unsigned char*> viewBytes(int index, size_t byteOffset, size_t bytes, const std::string& name) const;
     Status applySparse(int index, std::vector<float>& values, const std::string& name) const;

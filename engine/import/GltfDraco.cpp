@@ -24,6 +24,21 @@ int appendView(tinygltf::Model& gltf, int buffer, const void* bytes, size_t size
     return int(gltf.bufferViews.size() - 1);
 }
 
+// Each point's value of `attribute` as `components` values of type T, appended to `buffer` as a
+// new view (its index in *view); false if Draco cannot convert a value.
+template <class T>
+bool appendConverted(tinygltf::Model& gltf, int buffer, const draco::PointAttribute& attribute, size_t points,
+                     int components, int* view) {
+    std::vector<T> values(points * size_t(components));
+    for (size_t p = 0; p < points; ++p) {
+        if (!attribute.ConvertValue<T>(attribute.mapped_index(draco::PointIndex(uint32_t(p))), int8_t(components),
+                                       &values[p * size_t(components)]))
+            return false;
+    }
+    *view = appendView(gltf, buffer, values.data(), values.size() * sizeof(T));
+    return true;
+}
+
 Status decodePrimitive(tinygltf::Model& gltf, tinygltf::Primitive& primitive, const tinygltf::Value& extension,
                        const std::string& where, const std::string& path) {
     auto fail = [&](const std::string& what) { return makeError(path, where + ": " + kExtension + " " + what); };
@@ -67,20 +82,12 @@ Status decodePrimitive(tinygltf::Model& gltf, tinygltf::Primitive& primitive, co
         // rest become floats (ConvertValue scales normalised integers as glTF does).
         const bool keepUnsigned = !accessor.normalized && (accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                                            accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-        bool converted = true;
+        bool converted = false;
         if (keepUnsigned) {
-            std::vector<uint16_t> values(points * size_t(components));
-            for (size_t p = 0; p < points && converted; ++p)
-                converted = attribute->ConvertValue<uint16_t>(attribute->mapped_index(draco::PointIndex(uint32_t(p))),
-                                                              int8_t(components), &values[p * size_t(components)]);
-            accessor.bufferView = appendView(gltf, buffer, values.data(), values.size() * sizeof(uint16_t));
+            converted = appendConverted<uint16_t>(gltf, buffer, *attribute, points, components, &accessor.bufferView);
             accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         } else {
-            std::vector<float> values(points * size_t(components));
-            for (size_t p = 0; p < points && converted; ++p)
-                converted = attribute->ConvertValue<float>(attribute->mapped_index(draco::PointIndex(uint32_t(p))),
-                                                           int8_t(components), &values[p * size_t(components)]);
-            accessor.bufferView = appendView(gltf, buffer, values.data(), values.size() * sizeof(float));
+            converted = appendConverted<float>(gltf, buffer, *attribute, points, components, &accessor.bufferView);
             accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
             accessor.normalized = false;
         }

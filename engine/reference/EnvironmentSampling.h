@@ -59,11 +59,11 @@ private:
     std::vector<glm::vec4> mTexels;
     std::vector<double> mRowEdgeCos;      // height + 1 entries: cos theta at each row's top edge
     std::vector<double> mRowCdf;          // height + 1 entries, 0 .. 1
-    std::vector<double> mColumnCdfs;     // per row, width + 1 entries each, 0 .. 1
+    std::vector<double> mColumnCdfs;      // per row, width + 1 entries each, 0 .. 1
     // Guide tables (Chen & Asau 1974, the indexed search): entry g of a CDF's table is the
     // first index whose value exceeds g / kGuideSize, so a search starts next to its answer.
     std::vector<uint32_t> mRowGuide;      // kGuideSize + 1 entries
-    std::vector<uint32_t> mColumnGuides; // per row, kGuideSize + 1 entries each
+    std::vector<uint32_t> mColumnGuides;  // per row, kGuideSize + 1 entries each
     double mTotalWeight = 0.0;            // sum of luminance x texel solid angle
 };
 
