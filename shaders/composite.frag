@@ -37,7 +37,8 @@ void main() {
     vec4 accumulated = texelFetch(uDiffuse, pixel, 0);
     vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
     vec4 lightingSpecular = texelFetch(uSpecular, pixel, 0);
-    vec3 diffuse = outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, accumulated.rgb, normalMaterial, depth);
+    vec3 diffuse = outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, scatteredIrradiance(pixel, accumulated.rgb),
+                                     normalMaterial, depth);
 #ifdef COMPOSITE_LEAN
     vec3 specular = leanPixelSpecular(pixel, vUv, depth, lightingSpecular, accumulated.a, normalMaterial.w,
                                       uLeanMoments, uVisibility);

@@ -4,12 +4,14 @@
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s (include/Material.glsl)
 //   target 2       R32UI: profile slot and view depth packed, the key that
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
+//   target 3       RG16F: the scattering share s and the KHR_materials_volume
+//                  thickness in mm (DERMIS_GBUFFER_SCATTER_LOCATION, docs/materials.md)
 // With GBUFFER_LEAN defined (variants lcb and lbb, render/SssVariant.h):
-//   target 3       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
-//   target 4       R16F: LEAN M'.xy
+//   target 4       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
+//   target 5       R16F: LEAN M'.xy
 //   (include/Lean.glsl: the space, the projection and the packing). The
 //   normal is then the LEAN mean normal, so the normal map is not read.
-// With GBUFFER_TRANSFER defined as the next free target (3, or 5 with LEAN),
+// With GBUFFER_TRANSFER defined as the next free target (4, or 6 with LEAN),
 // when the environment's occlusion is "transfer" (include/EnvironmentTransfer.glsl):
 //   target N       RGBA16F: the environment irradiance L.T interpolated from
 //                  the vertices, a = the share of the sky they see
@@ -23,6 +25,8 @@
 
 layout(binding = 0) uniform sampler2D uAlbedoMap;
 layout(binding = 1) uniform sampler2D uNormalMap;
+layout(binding = DERMIS_UNIT_SCATTER_MAP) uniform sampler2D uScatterMap;
+layout(binding = DERMIS_UNIT_THICKNESS_MAP) uniform sampler2D uThicknessMap;
 #ifdef GBUFFER_LEAN
 layout(binding = 2) uniform sampler2D uLean1;  // (B.x, B.y, M.xx, M.yy), tangent space
 layout(binding = 3) uniform sampler2D uLean2;  // (M.xy, base variance)
@@ -36,9 +40,10 @@ in vec3 vColour;
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
 layout(location = 2) out uint oDepthKey;
+layout(location = DERMIS_GBUFFER_SCATTER_LOCATION) out vec2 oScatter;
 #ifdef GBUFFER_LEAN
-layout(location = 3) out vec4 oLeanMoments;
-layout(location = 4) out float oLeanCross;
+layout(location = 4) out vec4 oLeanMoments;
+layout(location = 5) out float oLeanCross;
 #endif
 #ifdef GBUFFER_TRANSFER
 in vec4 vEnvironment;
@@ -94,6 +99,10 @@ void main() {
     oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(vUv, mipBias));
     int slot = int(uObject.surface.x + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
+    vec4 scattering = uObject.scattering;
+    float scatter = scattering.x * (scattering.y > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
+    float thicknessMm = scattering.z * (scattering.w > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
+    oScatter = vec2(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0));
 #ifdef GBUFFER_TRANSFER
     oEnvironment = vEnvironment;
 #endif

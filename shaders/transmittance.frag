@@ -17,6 +17,7 @@ layout(binding = 1) uniform sampler2D uAlbedo;
 layout(binding = 2) uniform sampler2D uNormalMaterial;
 layout(binding = 3) uniform usampler2D uDepthKey;
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
+layout(binding = DERMIS_UNIT_SCATTER) uniform sampler2D uScatter;  // G-buffer: s, the file's thickness in mm
 
 in vec2 vUv;
 layout(location = 0) out vec4 oTransmitted;
@@ -26,6 +27,11 @@ void main() {
     uint key = texelFetch(uDepthKey, pixel, 0).r;
     int slot = slotFromKey(key);
     if (slot <= 0 || slot > DERMIS_MAX_PROFILES) {
+        oTransmitted = vec4(0.0);
+        return;
+    }
+    vec2 scatter = texelFetch(uScatter, pixel, 0).rg;
+    if (scatter.r <= 0.0) {  // a surface that does not scatter does not glow (docs/materials.md)
         oTransmitted = vec4(0.0);
         return;
     }
@@ -51,8 +57,10 @@ void main() {
             return;
         }
         if (sMm < 0.0) continue;
+        if (scatter.g > 0.0) sMm = scatter.g;  // KHR_materials_volume: the file's thickness, where the light is behind
         transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
     }
     float mixRatio = uFrame.shading.y;
-    oTransmitted = vec4(sanitizeColour(transmitted * uProfiles.transmittance.y * albedoPower(albedo, mixRatio)), 0.0);
+    oTransmitted = vec4(sanitizeColour(transmitted * scatter.r * uProfiles.transmittance.y * albedoPower(albedo, mixRatio)),
+                        0.0);
 }

@@ -48,7 +48,7 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
         }
         if (aov == Aov::Final || aov == Aov::Radiance) {
             const graph::TextureHandle hdr = addSkyboxPass(
-                graph, frame, gbuffer, addCompositePass(graph, frame, gbuffer, diffuse, lighting.specular, lean));
+                graph, frame, gbuffer, addCompositePass(graph, frame, gbuffer, diffuse, lighting.irradiance, lighting.specular, lean));
             graph.markOutput(aov == Aov::Final ? addTonemapPass(graph, frame, hdr, output)
                                                : addAovPass(graph, frame, {gbuffer, {}, {}, hdr}, output));
             return;
@@ -58,7 +58,7 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
             graph.markOutput(addAovPass(graph, frame, {gbuffer, {}, specular, {}}, output));
             return;
         }
-        graph.markOutput(addAovPass(graph, frame, {gbuffer, diffuse, {}, {}}, output));
+        graph.markOutput(addAovPass(graph, frame, {gbuffer, diffuse, {}, {}, lighting.irradiance}, output));
         return;
     }
     AovInputs aovInputs{gbuffer, {}, lighting.specular, {}};

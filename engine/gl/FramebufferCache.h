@@ -9,7 +9,7 @@
 
 namespace dermis::gl {
 
-constexpr int kMaxColourAttachments = 6;
+constexpr int kMaxColourAttachments = 7;  // the G-buffer with LEAN and the transfer (GBufferPass.h)
 
 struct Attachments {
     std::array<GLuint, kMaxColourAttachments> colour{};  // 0 = unused slot (and every slot after it)

@@ -19,7 +19,7 @@ static_assert(sizeof(ProfileParams) == (DERMIS_MAX_PROFILE_GAUSSIANS + 1) * 16, 
 static_assert(sizeof(ProfilesBlock) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 16, "ProfilesBlock must match std140");
 static_assert(sizeof(GpuLight) == 64 + 7 * 16, "GpuLight must match std140");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
-static_assert(sizeof(ObjectBlock) == 2 * 64 + (4 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
+static_assert(sizeof(ObjectBlock) == 2 * 64 + (5 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
 static_assert(sizeof(EnvironmentBlock) == 64 + (DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
               "EnvironmentBlock must match std140");
 static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");

@@ -631,6 +631,7 @@ private:
         for (size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c)
             out.baseColourFactor[static_cast<int>(c)] = static_cast<float>(pbr.baseColorFactor[c]);
         out.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
+        out.alphaMode = material.alphaMode.empty() ? "OPAQUE" : material.alphaMode;
         struct Map {
             const char* role;
             int texture;
@@ -638,13 +639,41 @@ private:
             ColourSpace colourSpace;
             Image* out;
         };
-        for (const Map& map :
-             {Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb,
-                  &out.albedoMap},
-              Map{"normalTexture", material.normalTexture.index, material.normalTexture.texCoord, ColourSpace::Linear,
-                  &out.normalMap},
-              Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                  ColourSpace::Linear, &out.metallicRoughnessMap}}) {
+        std::vector<Map> maps = {
+            Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb,
+                &out.albedoMap},
+            Map{"normalTexture", material.normalTexture.index, material.normalTexture.texCoord, ColourSpace::Linear,
+                &out.normalMap},
+            Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                ColourSpace::Linear, &out.metallicRoughnessMap}};
+        // The surface beneath: KHR_materials_diffuse_transmission (factor, texture A),
+        // KHR_materials_volume (thickness, texture G), KHR_materials_transmission (factor).
+        auto extension = [&](const char* name) -> const tinygltf::Value* {
+            auto found = material.extensions.find(name);
+            return found == material.extensions.end() || !found->second.IsObject() ? nullptr : &found->second;
+        };
+        auto number = [](const tinygltf::Value& object, const char* key, float fallback) {
+            return object.Has(key) && object.Get(key).IsNumber() ? static_cast<float>(object.Get(key).GetNumberAsDouble())
+                                                                 : fallback;
+        };
+        auto textureOf = [&](const tinygltf::Value& object, const char* key, const char* role, Image* image) {
+            if (!object.Has(key) || !object.Get(key).IsObject()) return;
+            const tinygltf::Value& info = object.Get(key);
+            const int texture = info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
+            const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+            maps.push_back(Map{role, texture, texCoord, ColourSpace::Linear, image});
+        };
+        if (const tinygltf::Value* diffuse = extension("KHR_materials_diffuse_transmission")) {
+            out.diffuseTransmission = std::clamp(number(*diffuse, "diffuseTransmissionFactor", 0.0f), 0.0f, 1.0f);
+            textureOf(*diffuse, "diffuseTransmissionTexture", "diffuseTransmissionTexture", &out.diffuseTransmissionMap);
+        }
+        if (const tinygltf::Value* volume = extension("KHR_materials_volume")) {
+            out.thicknessFactor = std::max(number(*volume, "thicknessFactor", 0.0f), 0.0f);
+            textureOf(*volume, "thicknessTexture", "thicknessTexture", &out.thicknessMap);
+        }
+        if (const tinygltf::Value* transmission = extension("KHR_materials_transmission"))
+            out.transmission = std::clamp(number(*transmission, "transmissionFactor", 0.0f), 0.0f, 1.0f);
+        for (const Map& map : maps) {
             if (map.texture < 0) continue;
             const std::string where = "material " + std::to_string(index) + quoted(material.name) + " " + map.role;
             if (map.texCoord != 0)
@@ -674,6 +703,10 @@ private:
                 decoded = mDecoded.emplace(std::make_pair(source, map.colourSpace), std::move(image.value())).first;
             }
             *map.out = decoded->second;
+        }
+        // The extensions' grey values, moved to R where the scattering code reads them.
+        for (auto [image, channel] : {std::pair{&out.diffuseTransmissionMap, 3}, std::pair{&out.thicknessMap, 1}}) {
+            for (glm::vec4& texel : image->texels) texel = glm::vec4(glm::vec3(texel[channel]), 1.0f);
         }
         return success();
     }

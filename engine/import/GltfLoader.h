@@ -15,6 +15,8 @@ namespace dermis {
 // does); a file requiring any other is refused in one line naming it.
 inline constexpr const char* kSupportedGltfExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform",
                                                              "EXT_meshopt_compression", "KHR_draco_mesh_compression",
+                                                             // the surface beneath (import/MaterialScattering.h)
+                                                             "KHR_materials_diffuse_transmission", "KHR_materials_volume",
                                                              // read as far as it can be: each KTX2 texture is skipped
                                                              // with a warning (no Debian decoder), the rest loads
                                                              "KHR_texture_basisu"};

@@ -1,6 +1,8 @@
 #include "import/ModelLoader.h"
 
+#include "core/Log.h"
 #include "import/GltfLoader.h"
+#include "import/MaterialScattering.h"
 #include "procedural/Procedural.h"
 
 #include <map>
@@ -38,8 +40,21 @@ Result<Model> loadCharacterModel(const Character& character) {
         return error;
     }
     MapFiles files;
-    for (ModelMaterial& target : model->materials) {
-        const Material& material = characterMaterial(character, target.name);
+    for (size_t index = 0; index < model->materials.size(); ++index) {
+        ModelMaterial& target = model->materials[index];
+        const Material& material = characterMaterial(character, target.name, index);
+        decideScattering(character, index, target);
+        const bool sceneDecides = target.scatterReason == kSceneScatterReason ||
+                                  target.scatterReason == kCharacterScatterReason;
+        if (sceneDecides) {
+            const Material* entry = sceneMaterialEntry(character, target.name, index);
+            const std::string& scatterMap = entry && entry->scatteringGiven ? entry->scatterMap : character.material.scatterMap;
+            if (Status status = files.load(scatterMap, ColourSpace::Linear, target.scatterMap); !status) return status.error();
+        }
+        if (target.scatterReason != kCharacterScatterReason && !target.scatterReason.empty())
+            log::info("character '" + character.name + "': material " + std::to_string(index) + " '" + target.name +
+                      "' " + (target.profile == kOpaqueProfile ? "does not scatter" : "scatters " + target.profile) +
+                      " (" + target.scatterReason + ")");
         if (!character.mesh.procedural.empty() && !material.procedural) {
             target.albedoMap = Image{};
             target.normalMap = Image{};
@@ -59,6 +74,7 @@ Status checkMaterialNames(const Scene& scene, size_t index, const Model& model) 
     for (const auto& entry : character.materials) {
         bool found = false;
         std::string names;
+        for (size_t m = 0; m < model.materials.size(); ++m) found = found || entry.first == materialIndexKey(m);
         for (const ModelMaterial& material : model.materials) {
             found = found || material.name == entry.first;
             if (!material.name.empty()) names += (names.empty() ? "'" : ", '") + material.name + "'";
@@ -67,7 +83,8 @@ Status checkMaterialNames(const Scene& scene, size_t index, const Model& model) 
         const std::string source = character.mesh.gltfPath.empty() ? "its mesh" : character.mesh.gltfPath;
         return makeError(scene.path, "/characters/" + std::to_string(index) + "/materials/" + entry.first + ": '" +
                                          entry.first + "' is not a material of " + source + " (its materials: " +
-                                         (names.empty() ? "none named" : names) + ")");
+                                         (names.empty() ? "none named" : names) + "; or #0 to #" +
+                                         std::to_string(model.materials.size() - 1) + " by index)");
     }
     return success();
 }

@@ -27,6 +27,23 @@ struct ModelMaterial {
     Image metallicRoughnessMap;           // glTF convention: G = roughness, B = metallic, linear
     Image roughnessMap;                   // the scene's roughness_map: R = Beckmann m, linear
     Image specularMap;                    // the scene's specular_map: R multiplies rho_s, linear
+
+    // What the file says about the surface beneath (glTF 2.0 §3.9.6 and the
+    // KHR_materials_* extensions), for import/MaterialScattering.h to decide
+    // whether the material scatters.
+    std::string alphaMode = "OPAQUE";     // "OPAQUE", "MASK" or "BLEND"
+    float diffuseTransmission = -1.0f;    // KHR_materials_diffuse_transmission's factor; < 0: the file has none
+    Image diffuseTransmissionMap;         // its texture's A, moved to R (linear)
+    float transmission = 0.0f;            // KHR_materials_transmission's factor (glass)
+    float thicknessFactor = 0.0f;         // KHR_materials_volume, in the mesh's units; 0: none
+    Image thicknessMap;                   // its texture's G, moved to R (linear)
+
+    // How the material scatters, decided at load (import/MaterialScattering.h).
+    std::string profile = "skin";         // a diffusion profile name, or "none" (opaque)
+    float scatter = 1.0f;                 // s = scatter x scatterMap's R (docs/materials.md)
+    Image scatterMap;                     // R = the scattering share, linear; empty: 1
+    float thicknessMm = 0.0f;             // the transmittance's thickness x thicknessMap's R; 0: from the shadow maps
+    std::string scatterReason;            // why, for the load log and reports
 };
 
 // The triangles [firstIndex, firstIndex + indexCount) of the merged mesh use `material`.

@@ -5,7 +5,7 @@
 namespace dermis {
 namespace {
 struct AovData {
-    graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, component, out;
+    graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, component, unscattered, scatter, out;
 };
 }  // namespace
 
@@ -18,7 +18,11 @@ graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& f
                 d.depth = builder.read(inputs.gbuffer.depthStencil);
                 d.albedo = builder.read(inputs.gbuffer.albedo);
                 d.normalMaterial = builder.read(inputs.gbuffer.normalMaterial);
-                if (frame.plan.aov == Aov::Diffuse) d.diffuse = builder.read(inputs.diffuse);
+                if (frame.plan.aov == Aov::Diffuse) {
+                    d.diffuse = builder.read(inputs.diffuse);
+                    d.unscattered = builder.read(inputs.unscattered);
+                    d.scatter = builder.read(inputs.gbuffer.scatter);
+                }
                 if (frame.plan.aov == Aov::Specular) d.specular = builder.read(inputs.specular);
                 if (inputs.component.isValid()) d.component = builder.read(inputs.component);
                 d.out = builder.write(output);
@@ -28,7 +32,7 @@ graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& f
                 auto orAlbedo = [&](graph::TextureHandle h) { return h.isValid() ? h : d.albedo; };
                 runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->aov.get(),
                                   {d.depth, d.albedo, orAlbedo(d.diffuse), orAlbedo(d.specular), d.normalMaterial,
-                                   orAlbedo(d.component)});
+                                   orAlbedo(d.component), {}, orAlbedo(d.unscattered), orAlbedo(d.scatter)});
             })
         .out;
 }

@@ -14,6 +14,7 @@ struct AovInputs {
     graph::TextureHandle diffuse;    // SSS-accumulated irradiance (diffuse AOV)
     graph::TextureHandle specular;
     graph::TextureHandle component;  // irradiance, AO or transmittance: read as the AOV itself
+    graph::TextureHandle unscattered;  // the lighting pass's irradiance, which the diffuse AOV mixes in by s
 };
 
 graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& frame, const AovInputs& inputs,

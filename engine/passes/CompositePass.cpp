@@ -5,7 +5,7 @@
 namespace dermis {
 namespace {
 struct CompositeData {
-    graph::TextureHandle depth, albedo, normalMaterial, diffuse, specular, out;
+    graph::TextureHandle depth, albedo, normalMaterial, diffuse, unscattered, scatter, specular, out;
     LeanShading lean;
 };
 struct TonemapData {
@@ -14,7 +14,8 @@ struct TonemapData {
 }  // namespace
 
 graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                                      graph::TextureHandle diffuse, graph::TextureHandle specular,
+                                      graph::TextureHandle diffuse, graph::TextureHandle unscattered,
+                                      graph::TextureHandle specular,
                                       const LeanShading& lean) {
     const auto w = static_cast<uint32_t>(frame.plan.width);
     const auto h = static_cast<uint32_t>(frame.plan.height);
@@ -26,6 +27,8 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameCont
                 d.albedo = builder.read(gbuffer.albedo);
                 d.normalMaterial = builder.read(gbuffer.normalMaterial);
                 d.diffuse = builder.read(diffuse);
+                d.unscattered = builder.read(unscattered);
+                d.scatter = builder.read(gbuffer.scatter);
                 d.specular = builder.read(specular);
                 if (lean.isValid()) {
                     d.lean.moments = builder.read(lean.moments);
@@ -40,7 +43,7 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameCont
                                   d.lean.isValid() ? programs.compositeLean.get(frame.plan.environment.enabled())
                                                     : programs.composite.get(),
                                   {d.depth, d.albedo, d.diffuse, d.specular, d.normalMaterial, d.lean.moments,
-                                   d.lean.visibility});
+                                   d.lean.visibility, d.unscattered, d.scatter});
             })
         .out;
 }

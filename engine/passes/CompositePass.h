@@ -12,9 +12,12 @@ namespace dermis {
 
 // With `lean` (variants lcb and lbb) the specular of characters with LEAN
 // maps is computed here from the blurred moments (LeanSpecularPass.h), and
-// `specular` serves the others.
+// `specular` serves the others. `unscattered` (the lighting pass's irradiance)
+// is mixed with `diffuse` by the G-buffer's scattering share
+// (include/OutgoingDiffuse.glsl).
 graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                                      graph::TextureHandle diffuse, graph::TextureHandle specular,
+                                      graph::TextureHandle diffuse, graph::TextureHandle unscattered,
+                                      graph::TextureHandle specular,
                                       const LeanShading& lean = {});
 
 // Writes tone-mapped sRGB into `output` (an imported RGBA8 texture).

@@ -16,6 +16,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba16F});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
             g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
+            g.scatter = builder.create("scatter", {w, h, graph::TextureFormat::Rg16F});
             if (frame.plan.lean) {
                 g.leanMoments = builder.create("lean moments", {w, h, graph::TextureFormat::Rgba16F});
                 g.leanCross = builder.create("lean cross moment", {w, h, graph::TextureFormat::R16F});
@@ -29,12 +30,14 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             attachments.colour[0] = resources.texture(g.albedo);
             attachments.colour[1] = resources.texture(g.normalMaterial);
             attachments.colour[2] = resources.texture(g.depthKey);
+            attachments.colour[DERMIS_GBUFFER_SCATTER_LOCATION] = resources.texture(g.scatter);
             if (g.hasLean()) {
-                attachments.colour[3] = resources.texture(g.leanMoments);
-                attachments.colour[4] = resources.texture(g.leanCross);
+                attachments.colour[4] = resources.texture(g.leanMoments);
+                attachments.colour[5] = resources.texture(g.leanCross);
             }
             const bool transfer = g.environment.isValid();
-            if (transfer) attachments.colour[g.hasLean() ? 5 : 3] = resources.texture(g.environment);
+            const int transferTarget = g.hasLean() ? 6 : 4;
+            if (transfer) attachments.colour[transferTarget] = resources.texture(g.environment);
             attachments.depth = resources.texture(g.depthStencil);
             attachments.depthHasStencil = true;
             frame.gl->framebuffers->bind(attachments);
@@ -44,11 +47,12 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             glClearBufferfv(GL_COLOR, 1, zero);
             const GLuint backgroundKey[4] = {DERMIS_BACKGROUND_KEY, 0, 0, 0};
             glClearBufferuiv(GL_COLOR, 2, backgroundKey);
+            glClearBufferfv(GL_COLOR, DERMIS_GBUFFER_SCATTER_LOCATION, zero);
             if (g.hasLean()) {
-                glClearBufferfv(GL_COLOR, 3, zero);
                 glClearBufferfv(GL_COLOR, 4, zero);
+                glClearBufferfv(GL_COLOR, 5, zero);
             }
-            if (transfer) glClearBufferfv(GL_COLOR, g.hasLean() ? 5 : 3, zero);
+            if (transfer) glClearBufferfv(GL_COLOR, transferTarget, zero);
             glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
@@ -81,6 +85,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                     bindMaterialMaps(material);
                     glBindTextureUnit(2, material.leanMap1.get());
                     glBindTextureUnit(3, material.leanMap2.get());
+                    glBindTextureUnit(DERMIS_UNIT_SCATTER_MAP, material.scatterMap.get());
+                    glBindTextureUnit(DERMIS_UNIT_THICKNESS_MAP, material.thicknessMap.get());
                     submesh.draw();
                 }
             }

@@ -27,6 +27,7 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const Frame
                 d.gbuffer.albedo = builder.read(gbuffer.albedo);
                 d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
                 d.gbuffer.depthKey = builder.read(gbuffer.depthKey);
+                d.gbuffer.scatter = builder.read(gbuffer.scatter);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 if (ownTarget) {
                     d.out = builder.create("transmitted", {static_cast<uint32_t>(frame.plan.width),
@@ -42,10 +43,11 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const Frame
                 builder.skipIf(!frame.plan.anyBackLight, "no shadowed light behind an SSS character");
             },
             [frame, ownTarget](const graph::PassResources& resources, const TransmittanceData& d) {
-                // Unit 0 is not sampled: depth comes from the depth key.
+                // Unit 0 is not sampled: depth comes from the depth key. Units 4-7 are the shadow maps.
                 beginFullscreenPass(frame, resources, {{d.out}, d.gbuffer.depthStencil},
                                     frame.gl->programs->transmittance.get(),
-                                    {{}, d.gbuffer.albedo, d.gbuffer.normalMaterial, d.gbuffer.depthKey});
+                                    {{}, d.gbuffer.albedo, d.gbuffer.normalMaterial, d.gbuffer.depthKey, {}, {}, {}, {},
+                                     d.gbuffer.scatter});
                 if (ownTarget) {
                     const float zero[4] = {0, 0, 0, 0};
                     glClearBufferfv(GL_COLOR, 0, zero);

@@ -41,11 +41,26 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
         surface.mRawUvs.push_back(v.uv);
     }
     surface.mIndices = mesh.indices;
-    surface.mAlbedoMap = MipPyramid(decodeToLinear(model.materials[0].albedoMap));
-    surface.mNormalMap = MipPyramid(std::move(model.materials[0].normalMap));
-    surface.mAlbedoTint = character.material.albedo;
-    surface.mRoughness = character.material.roughness;
-    surface.mRhoS = character.material.rhoS;
+    for (const glm::vec4& colour : model.colours) surface.mColours.push_back(glm::vec3(colour));
+    for (size_t m = 0; m < model.materials.size(); ++m) {
+        ModelMaterial& source = model.materials[m];
+        const Material& scene = characterMaterial(character, source.name, m);
+        SurfaceMaterial material;
+        material.albedoMap = MipPyramid(decodeToLinear(source.albedoMap));
+        material.normalMap = MipPyramid(std::move(source.normalMap));
+        material.scatterMap = MipPyramid(std::move(source.scatterMap));
+        material.albedoTint = scene.albedo * glm::vec3(source.baseColourFactor);
+        material.roughness = scene.roughness;
+        material.rhoS = scene.rhoS;
+        material.scatter = source.profile == kOpaqueProfile ? 0.0f : source.scatter;
+        material.scattering = {source.profile, scene.widthScale};
+        surface.mMaterials.push_back(std::move(material));
+    }
+    surface.mTriangleMaterials.assign(surface.triangleCount(), 0);
+    for (const Submesh& submesh : model.drawRanges()) {
+        for (uint32_t i = submesh.firstIndex / 3; i < (submesh.firstIndex + submesh.indexCount) / 3; ++i)
+            if (i < surface.mTriangleMaterials.size()) surface.mTriangleMaterials[i] = static_cast<uint32_t>(submesh.material);
+    }
     return surface;
 }
 
@@ -114,21 +129,27 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
     if (backFacing) n = -n;
     point.smoothNormal = n;
     point.rayLiftM = smoothSurfacePoint(point.positionM, {b0, b1, b2}, {i0, i1, i2}, backFacing) - point.positionM;
-    if (!mNormalMap.empty()) {
+    const SurfaceMaterial& material = mMaterials[mTriangleMaterials[triangle]];
+    if (!material.normalMap.empty()) {
         const glm::vec4 tangent = b0 * mTangents[i0] + b1 * mTangents[i1] + b2 * mTangents[i2];
         glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
         const glm::vec3 fallbackTangent = std::fabs(n.x) < 0.9f ? glm::normalize(glm::cross(n, glm::vec3(1, 0, 0)))
                                                                 : glm::normalize(glm::cross(n, glm::vec3(0, 1, 0)));
         t = safeNormalize(t, fallbackTangent);
         const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-        const glm::vec3 tangentNormal = glm::vec3(read(mNormalMap, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f))) * 2.0f - 1.0f;
+        const glm::vec3 tangentNormal = glm::vec3(read(material.normalMap, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f))) * 2.0f - 1.0f;
         n = safeNormalize(glm::mat3(t, b, n) * tangentNormal, n);
     }
     point.shadingNormal = n;
-    const glm::vec3 map = glm::vec3(read(mAlbedoMap, glm::vec4(1.0f)));
-    point.albedo = glm::clamp(mAlbedoTint * map, 0.0f, 1.0f);
-    point.roughness = mRoughness;
-    point.rhoS = mRhoS;
+    const glm::vec3 map = glm::vec3(read(material.albedoMap, glm::vec4(1.0f)));
+    const glm::vec3 colour =
+        mColours.empty() ? glm::vec3(1.0f) : b0 * mColours[i0] + b1 * mColours[i1] + b2 * mColours[i2];
+    point.albedo = glm::clamp(material.albedoTint * map * colour, 0.0f, 1.0f);
+    point.roughness = material.roughness;
+    point.rhoS = material.rhoS;
+    point.scatter = material.scatter;
+    if (!material.scatterMap.empty()) point.scatter *= read(material.scatterMap, glm::vec4(1.0f)).r;
+    point.scatter = glm::clamp(point.scatter, 0.0f, 1.0f);
     return point;
 }
 

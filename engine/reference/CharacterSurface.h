@@ -1,7 +1,9 @@
 #pragma once
-// One character's surface in world space (metres) with its material, as the
-// G-buffer pass sees it (shaders/gbuffer.vert, gbuffer.frag): albedo = tint x
-// albedo map (decoded to linear), clamped to [0, 1]; the interpolated normal,
+// One character's surface in world space (metres) with its materials, as the
+// G-buffer pass sees it (shaders/gbuffer.vert, gbuffer.frag): per triangle
+// its model material; albedo = the scene material's albedo x baseColorFactor
+// x albedo map (decoded to linear) x COLOR_0, clamped to [0, 1]; the
+// scattering share s = scatter x the scatter map's R (docs/materials.md); the interpolated normal,
 // flipped on back faces and perturbed by the tangent-space normal map. Maps are
 // read from mip pyramids: trilinearly at a pixel's footprint for the points a
 // camera sees, bilinearly at level 0 for the integral's samples.
@@ -32,6 +34,14 @@ struct SurfacePoint {
     glm::vec3 albedo{0.0f};                        // linear
     float roughness = 0.3f;
     float rhoS = 0.0f;
+    float scatter = 1.0f;   // the share s that scatters (import/MaterialScattering.h)
+};
+
+// What scatters beneath one model material: its diffusion profile (scene or
+// built-in name; "none" = opaque) and the material's width_scale.
+struct SurfaceScattering {
+    std::string profile;
+    float widthScale = 1.0f;
 };
 
 class CharacterSurface {
@@ -56,6 +66,10 @@ public:
     // engine's texture-space irradiance.
     glm::vec2 rawUvAt(size_t triangle, float b1, float b2) const;
     double areaM2() const;
+    // The model material of a triangle, and how each material scatters.
+    uint32_t materialOf(size_t triangle) const { return mTriangleMaterials[triangle]; }
+    size_t materialCount() const { return mMaterials.size(); }
+    const SurfaceScattering& scattering(size_t material) const { return mMaterials[material].scattering; }
 
 private:
     // Hanika 2021's point: `pointM` (weights of the three corners) lifted to the
@@ -69,12 +83,20 @@ private:
     std::vector<glm::vec4> mTangents;  // xyz world tangent, w bitangent sign
     std::vector<glm::vec2> mUvs;       // flipV already applied
     std::vector<glm::vec2> mRawUvs;    // as the mesh gives them
+    std::vector<glm::vec3> mColours;   // COLOR_0; empty: white
     std::vector<uint32_t> mIndices;
-    MipPyramid mAlbedoMap;  // linear; empty: none
-    MipPyramid mNormalMap;  // empty: none
-    glm::vec3 mAlbedoTint{1.0f};
-    float mRoughness = 0.3f;
-    float mRhoS = 0.0f;
+    struct SurfaceMaterial {
+        MipPyramid albedoMap;   // linear; empty: none
+        MipPyramid normalMap;   // empty: none
+        MipPyramid scatterMap;  // R multiplies scatter; empty: none
+        glm::vec3 albedoTint{1.0f};
+        float roughness = 0.3f;
+        float rhoS = 0.0f;
+        float scatter = 1.0f;
+        SurfaceScattering scattering;
+    };
+    std::vector<SurfaceMaterial> mMaterials;   // Model::materials' order
+    std::vector<uint32_t> mTriangleMaterials;  // per triangle
 };
 
 }  // namespace dermis::reference

@@ -18,7 +18,7 @@ float edgePerSigma(float density) { return std::sqrt(4.0f / (std::sqrt(3.0f) * s
 }  // namespace
 
 DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
-                                         const QuadratureSettings& quadrature)
+                                         const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles)
     : mSurface(&surface), mQuadrature(quadrature) {
     for (const ProfileGaussian& g : profile.gaussians()) {
         mSigmasMm.push_back(std::sqrt(g.varianceMm2));
@@ -27,7 +27,7 @@ DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const 
     mEdgePerSigma = edgePerSigma(quadrature.density);
     mQueryRadiusMm = kQueryCutoffSigmas * mSigmasMm.back();
 
-    mBaseCells = tessellate(surface, baseCellEdgeM(profile, quadrature));
+    mBaseCells = tessellate(surface, baseCellEdgeM(profile, quadrature), triangles);
     std::vector<glm::vec3> centroids;
     centroids.reserve(mBaseCells.size());
     mBaseShapes.reserve(mBaseCells.size());

@@ -47,9 +47,10 @@ struct Sample {
 
 class DiffusionIntegrator {
 public:
-    // `surface` must outlive the integrator; the profile is copied.
+    // `surface` must outlive the integrator; the profile is copied. `triangles`
+    // (tessellate()) limits the donors to one diffusion group's triangles.
     DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
-                        const QuadratureSettings& quadrature);
+                        const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles = nullptr);
 
     // The largest edge of a base cell: (just under) two sample spacings of the widest Gaussian.
     static float baseCellEdgeM(const DiffusionProfile& profile, const QuadratureSettings& quadrature);

@@ -111,25 +111,48 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     const SssSettings& sss = scene.settings.sss;
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
-        renderer.mIntegrators.emplace_back();
-        if (!sss.enabled || character.material.profile == kOpaqueProfile) continue;
-        auto profile = findProfile(character.material.profile);
-        if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
-        if (!(sss.widthScale > 0.0f)) continue;  // no width: every Gaussian is a delta, the local case
-        std::vector<ProfileGaussian> scaled = (*profile)->gaussians();
-        for (ProfileGaussian& g : scaled) g.varianceMm2 *= sss.widthScale * sss.widthScale;
-        auto scaledProfile = DiffusionProfile::create((*profile)->name(), std::move(scaled));
-        if (!scaledProfile.ok()) return makeError("character '" + character.name + "'", scaledProfile.error().what);
-        const size_t cells = countTessellationCells(
-            *renderer.mSurfaces[c], DiffusionIntegrator::baseCellEdgeM(*scaledProfile, quadrature));
-        if (cells > kMaxBaseCells) {
-            return makeError("character '" + character.name + "'",
-                             "the reference would need " + std::to_string(cells) + " base cells (at most " +
-                                 std::to_string(kMaxBaseCells) + "): lower the density");
+        const CharacterSurface& surface = *renderer.mSurfaces[c];
+        renderer.mTriangleGroups.emplace_back(surface.triangleCount(), -1);
+        // No width: every Gaussian is a delta, the local case.
+        if (!sss.enabled || !(sss.widthScale > 0.0f)) continue;
+        for (size_t m = 0; m < surface.materialCount(); ++m) {
+            const SurfaceScattering& scattering = surface.scattering(m);
+            if (scattering.profile == kOpaqueProfile) continue;
+            // Materials of one profile and width scale share a group (the first one's).
+            size_t first = 0;
+            while (first < m && !(surface.scattering(first).profile == scattering.profile &&
+                                  surface.scattering(first).widthScale == scattering.widthScale))
+                ++first;
+            if (first < m) continue;
+            std::vector<uint8_t> triangles(surface.triangleCount(), 0);
+            bool any = false;
+            for (size_t t = 0; t < surface.triangleCount(); ++t) {
+                const SurfaceScattering& own = surface.scattering(surface.materialOf(t));
+                triangles[t] = own.profile == scattering.profile && own.widthScale == scattering.widthScale;
+                any = any || triangles[t];
+            }
+            if (!any) continue;
+            auto profile = findSceneProfile(scene, scattering.profile);
+            if (!profile.ok()) return makeError("character '" + character.name + "'", profile.error().what);
+            const float widthScale = sss.widthScale * scattering.widthScale;
+            std::vector<ProfileGaussian> scaled = (*profile)->gaussians();
+            for (ProfileGaussian& g : scaled) g.varianceMm2 *= widthScale * widthScale;
+            auto scaledProfile = DiffusionProfile::create((*profile)->name(), std::move(scaled));
+            if (!scaledProfile.ok()) return makeError("character '" + character.name + "'", scaledProfile.error().what);
+            const size_t cells = countTessellationCells(
+                surface, DiffusionIntegrator::baseCellEdgeM(*scaledProfile, quadrature), &triangles);
+            if (cells > kMaxBaseCells) {
+                return makeError("character '" + character.name + "'",
+                                 "the reference would need " + std::to_string(cells) + " base cells (at most " +
+                                     std::to_string(kMaxBaseCells) + "): lower the density");
+            }
+            const auto group = static_cast<int32_t>(renderer.mGroups.size());
+            for (size_t t = 0; t < surface.triangleCount(); ++t)
+                if (triangles[t]) renderer.mTriangleGroups[c][t] = group;
+            renderer.mGroups.push_back(
+                {c, std::make_unique<DiffusionIntegrator>(surface, *scaledProfile, options.quadrature, &triangles)});
+            renderer.mStats.baseCells += renderer.mGroups.back().integrator->baseCellCount();
         }
-        renderer.mIntegrators.back() =
-            std::make_unique<DiffusionIntegrator>(*renderer.mSurfaces[c], *scaledProfile, options.quadrature);
-        renderer.mStats.baseCells += renderer.mIntegrators.back()->baseCellCount();
     }
     return renderer;
 }
@@ -179,11 +202,14 @@ const SampleValues* ReferenceRenderer::valuesFor(Quantity quantity, size_t chara
 }
 
 glm::vec4 ReferenceRenderer::shadeHit(Quantity quantity, const Hit& hit, const Ray& ray, const CameraRays* camera,
-                                      const std::vector<std::vector<Sample>>* baseSamples) const {
+                                      const std::vector<std::vector<std::vector<Sample>>>* baseSamples) const {
     if (hit.character < 0) return glm::vec4(0.0f);
     const auto c = size_t(hit.character);
     const SampleValues* values = valuesFor(quantity, c);
-    if (quantity == Quantity::ScatterChange && !(mIntegrators[c] && values)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    const int32_t group = mTriangleGroups[c][hit.triangle];
+    const DiffusionIntegrator* integrator = group >= 0 ? mGroups[size_t(group)].integrator.get() : nullptr;
+    const std::vector<std::vector<Sample>>* samples = group >= 0 ? &(*baseSamples)[size_t(group)] : nullptr;
+    if (quantity == Quantity::ScatterChange && !(integrator && values)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     MapFootprint footprint;
     if (camera) footprint = pixelFootprint(hit, ray, *camera);
     const SurfacePoint point =
@@ -191,14 +217,20 @@ glm::vec4 ReferenceRenderer::shadeHit(Quantity quantity, const Hit& hit, const R
     const glm::vec3 towardsViewer = glm::normalize(-ray.direction);
     const float mix = mScene.settings.sss.mix;
     glm::vec3 diffuse;
+    // A share s of the light scatters, the rest leaves where it arrived (docs/materials.md).
+    const float s = integrator ? point.scatter : 0.0f;
+    auto local = [&] { return mLighting->irradiance(point, nullptr, mPass) * albedoPower(point.albedo, mix); };
     if (quantity == Quantity::ScatterChange) {
         const glm::vec3 here = values->valueAt(hit.triangle, glm::vec2(hit.b1, hit.b2), nullptr);
-        diffuse = (mIntegrators[c]->integrate(point.positionM, *baseSamples, *values) - here) *
+        diffuse = s * (integrator->integrate(point.positionM, *samples, *values) - here) *
                   albedoPower(point.albedo, 1.0f - mix);
-    } else if (mIntegrators[c]) {
-        diffuse = mIntegrators[c]->integrate(point.positionM, *baseSamples, *values) * albedoPower(point.albedo, 1.0f - mix);
+    } else if (s >= 1.0f) {
+        diffuse = integrator->integrate(point.positionM, *samples, *values) * albedoPower(point.albedo, 1.0f - mix);
+    } else if (s > 0.0f) {
+        diffuse = (s * integrator->integrate(point.positionM, *samples, *values) + (1.0f - s) * local()) *
+                  albedoPower(point.albedo, 1.0f - mix);
     } else {
-        diffuse = mLighting->irradiance(point, nullptr, mPass) * albedoPower(point.albedo, mix) * albedoPower(point.albedo, 1.0f - mix);
+        diffuse = local() * albedoPower(point.albedo, 1.0f - mix);
     }
     diffuse *= mLighting->outgoingFactor(point, towardsViewer);
     return glm::vec4(sanitize(diffuse), 1.0f);
@@ -227,16 +259,17 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
     const auto traced = Clock::now();
 
     // Shade the base cells that some SSS hit reads, once each.
-    std::vector<std::vector<std::vector<Sample>>> baseSamples(mSurfaces.size());
+    std::vector<std::vector<std::vector<Sample>>> baseSamples(mGroups.size());
     mStats.shadedBaseCells = 0;
     mStats.sssHits = 0;
-    for (size_t c = 0; c < mSurfaces.size(); ++c) {
+    for (size_t g = 0; g < mGroups.size(); ++g) {
+        const size_t c = mGroups[g].character;
         const SampleValues* values = valuesFor(quantity, c);
-        if (!mIntegrators[c] || !values) continue;
-        const DiffusionIntegrator& integrator = *mIntegrators[c];
+        if (!values) continue;
+        const DiffusionIntegrator& integrator = *mGroups[g].integrator;
         std::vector<uint8_t> needed(integrator.baseCellCount(), 0);
         for (size_t r = 0; r < rays.size(); ++r) {
-            if (hits[r].character != int(c)) continue;
+            if (hits[r].character != int(c) || mTriangleGroups[c][hits[r].triangle] != int32_t(g)) continue;
             ++mStats.sssHits;
             integrator.markNeeded(mSurfaces[c]->positionAt(hits[r].triangle, hits[r].b1, hits[r].b2), needed);
         }
@@ -245,11 +278,11 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
             if (needed[i]) list.push_back(static_cast<uint32_t>(i));
         }
         mStats.shadedBaseCells += list.size();
-        baseSamples[c].resize(integrator.baseCellCount());
+        baseSamples[g].resize(integrator.baseCellCount());
         constexpr size_t kCellsPerItem = 256;
         parallelFor((list.size() + kCellsPerItem - 1) / kCellsPerItem, threads, [&](size_t item) {
             for (size_t i = item * kCellsPerItem; i < std::min(list.size(), (item + 1) * kCellsPerItem); ++i) {
-                baseSamples[c][list[i]] = integrator.shadeBaseCell(list[i], *values);
+                baseSamples[g][list[i]] = integrator.shadeBaseCell(list[i], *values);
             }
         }, mOptions.showProgress ? "reference: irradiance (" + mSurfaces[c]->name() + ")" : std::string());
     }
@@ -259,8 +292,7 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
     parallelFor(items, threads, [&](size_t item) {
         forItem(item, [&](size_t r) {
             const Hit& hit = hits[r];
-            out[r] = shadeHit(quantity, hit, rays[r], camera,
-                              hit.character >= 0 ? &baseSamples[size_t(hit.character)] : nullptr);
+            out[r] = shadeHit(quantity, hit, rays[r], camera, &baseSamples);
         });
     }, mOptions.showProgress ? "reference: scattering" : std::string());
     const auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };

@@ -161,7 +161,7 @@ private:
     // The footprint of one pixel of `camera` at the hit, in map UV.
     MapFootprint pixelFootprint(const Hit& hit, const Ray& ray, const CameraRays& camera) const;
     glm::vec4 shadeHit(Quantity quantity, const Hit& hit, const Ray& ray, const CameraRays* camera,
-                       const std::vector<std::vector<Sample>>* baseSamples) const;
+                       const std::vector<std::vector<std::vector<Sample>>>* baseSamples) const;
     const SampleValues* valuesFor(Quantity quantity, size_t character) const;
     // The quantity along each ray; with a camera, maps are read at its pixel footprint.
     std::vector<glm::vec4> evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin, float tMax,
@@ -178,7 +178,15 @@ private:
     std::unique_ptr<raytrace::TriangleScene> mBvh;
     std::unique_ptr<ReferenceLighting> mLighting;          // at the points the camera sees
     std::unique_ptr<ReferenceLighting> mIntegralLighting;  // at the integral's samples
-    std::vector<std::unique_ptr<DiffusionIntegrator>> mIntegrators;  // per character, width-scaled profile (null: local)
+    // A diffusion group: the triangles of one character whose materials share a
+    // profile and width scale, which scatter light only among themselves (as
+    // the engine's blurs stay within a profile slot).
+    struct DiffusionGroup {
+        size_t character = 0;
+        std::unique_ptr<DiffusionIntegrator> integrator;  // width-scaled profile
+    };
+    std::vector<DiffusionGroup> mGroups;
+    std::vector<std::vector<int32_t>> mTriangleGroups;  // per character, per triangle: into mGroups, -1 local
     std::vector<std::unique_ptr<ExactLightingValues>> mExactValues;    // per character
     std::vector<std::unique_ptr<SampleMemo>> mExactMemos;              // per character, over mExactValues (or null)
     std::vector<std::unique_ptr<EngineIrradiance>> mEngineValues;      // per character (null: no texture)

@@ -45,18 +45,20 @@ std::array<Cell, 4> splitCell(const Cell& cell) {
     return {Cell{t, {a, ab, ca}}, Cell{t, {ab, b, bc}}, Cell{t, {ca, bc, c}}, Cell{t, {bc, ca, ab}}};
 }
 
-size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM) {
+size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM, const std::vector<uint8_t>* triangles) {
     size_t count = 0;
     for (size_t t = 0; t < surface.triangleCount(); ++t) {
+        if (triangles && !(*triangles)[t]) continue;
         const auto n = size_t(divisions(surface, t, maxEdgeM));
         count += n * n;
     }
     return count;
 }
 
-std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM) {
+std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM, const std::vector<uint8_t>* triangles) {
     std::vector<Cell> cells;
     for (size_t t = 0; t < surface.triangleCount(); ++t) {
+        if (triangles && !(*triangles)[t]) continue;
         const int n = divisions(surface, t, maxEdgeM);
         if (n == 0) continue;
         const float step = 1.0f / float(n);

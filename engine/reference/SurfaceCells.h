@@ -37,10 +37,14 @@ std::array<Cell, 4> splitCell(const Cell& cell);
 
 // Every mesh triangle divided into n^2 congruent cells, n the smallest with every
 // cell edge <= maxEdgeM (n capped at kMaxBaseDivisions). Zero-area triangles give no cells.
+// `triangles` (one flag per triangle; null: all) keeps the triangles flagged:
+// the diffusion group of one profile (ReferenceRenderer.h).
 constexpr int kMaxBaseDivisions = 4096;
-std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM);
+std::vector<Cell> tessellate(const CharacterSurface& surface, float maxEdgeM,
+                             const std::vector<uint8_t>* triangles = nullptr);
 // The number of cells tessellate() would make, without making them.
-size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM);
+size_t countTessellationCells(const CharacterSurface& surface, float maxEdgeM,
+                              const std::vector<uint8_t>* triangles = nullptr);
 
 // A uniform grid over cell centroids for "cells near this point" queries.
 class CellGrid {

@@ -66,7 +66,7 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submesh
     const GpuCharacter& character = gl->gpuScene->characters()[characterIndex];
     const GpuSubmesh& submesh = character.submeshes[submeshIndex];
     const GpuMaterial& maps = character.materials[submesh.material];
-    const Material& material = characterMaterial(plan.scene->characters[characterIndex], maps.name);
+    const Material& material = characterMaterial(plan.scene->characters[characterIndex], maps.name, maps.index);
     gpu::ObjectBlock block = objectBlock(characterIndex);
     block.albedoRoughness = glm::vec4(material.albedo * glm::vec3(maps.baseColourFactor), material.roughness);
     block.material = glm::vec4(material.rhoS, float(characterIndex + 1), maps.albedoMap.isValid() ? 1.0f : 0.0f,
@@ -77,6 +77,8 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submesh
                                                                       : DERMIS_ROUGHNESS_SCALAR;
     block.surface = glm::vec4(float(plan.sss.slotOf(characterIndex, submeshIndex)), float(roughnessSource),
                               maps.roughnessFactor, maps.specularMap.isValid() ? 1.0f : 0.0f);
+    block.scattering = glm::vec4(maps.scatter, maps.scatterMap.isValid() ? 1.0f : 0.0f, maps.thicknessMm,
+                                 maps.thicknessMap.isValid() ? 1.0f : 0.0f);
     return block;
 }
 

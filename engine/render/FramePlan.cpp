@@ -196,7 +196,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
 
     const size_t count = std::min(scene.characters.size(), geometry.size());
     std::vector<Bounds> bounds;
-    std::vector<std::vector<std::string>> submeshMaterials;
+    std::vector<std::vector<SubmeshMaterial>> submeshMaterials;
     for (size_t c = 0; c < count; ++c) {
         submeshMaterials.push_back(geometry.submeshMaterials(c));
         const Character& character = scene.characters[c];

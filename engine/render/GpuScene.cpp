@@ -118,11 +118,15 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     gpu.name = material.name;
     gpu.baseColourFactor = material.baseColourFactor;
     gpu.roughnessFactor = material.roughnessFactor;
+    gpu.scatter = material.scatter;
+    gpu.thicknessMm = material.thicknessMm;
     const std::pair<const Image*, gl::Texture*> maps[] = {{&material.albedoMap, &gpu.albedoMap},
                                                           {&material.normalMap, &gpu.normalMap},
                                                           {&material.metallicRoughnessMap, &gpu.metallicRoughnessMap},
                                                           {&material.roughnessMap, &gpu.roughnessMap},
-                                                          {&material.specularMap, &gpu.specularMap}};
+                                                          {&material.specularMap, &gpu.specularMap},
+                                                          {&material.scatterMap, &gpu.scatterMap},
+                                                          {&material.thicknessMap, &gpu.thicknessMap}};
     for (const auto& [image, texture] : maps)
         if (!image->empty()) *texture = uploadImage(*image);
     if (!material.normalMap.empty()) {
@@ -197,6 +201,7 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         for (const ModelMaterial& material : model.materials) {
             auto uploaded = uploadMaterial(material);
             if (!uploaded.ok()) return makeError(character.name, uploaded.error().what);
+            uploaded->index = gpu.materials.size();
             gpu.materials.push_back(std::move(*uploaded));
         }
         for (const Submesh& submesh : model.drawRanges())

@@ -51,7 +51,8 @@ struct GpuRig {
 // One material's maps and factors (mesh/Model.h ModelMaterial); an empty
 // texture is a map it does not have.
 struct GpuMaterial {
-    std::string name;  // the glTF material name: Character::materials looks it up
+    std::string name;  // the glTF material name: Character::materials looks it up (or "#index")
+    size_t index = 0;  // in Model::materials
     glm::vec4 baseColourFactor{1.0f};
     float roughnessFactor = 1.0f;
     gl::Texture albedoMap;
@@ -59,6 +60,10 @@ struct GpuMaterial {
     gl::Texture metallicRoughnessMap;
     gl::Texture roughnessMap;  // the scene's roughness_map; replaces the metallic-roughness map
     gl::Texture specularMap;
+    float scatter = 1.0f;        // ModelMaterial::scatter (import/MaterialScattering.h)
+    float thicknessMm = 0.0f;    // ModelMaterial::thicknessMm
+    gl::Texture scatterMap;      // R = s
+    gl::Texture thicknessMap;    // R multiplies thicknessMm
     // LEAN maps baked from the normal map (lean/LeanBake.h), empty without
     // one: (B.x, B.y, M.xx, M.yy) RGBA16F and (M.xy, base variance) RG16F,
     // with the baked mip chain.

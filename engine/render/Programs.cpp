@@ -59,9 +59,9 @@ Result<Programs> Programs::build() {
     add(programs.sssDiskLean, "fullscreen.vert", "sss_disk.frag", {{"SSS_EXTRA_TARGETS", leanTargets}});
     add(programs.sssBlurLeanLast, "fullscreen.vert", "sss_blur.frag",
         {{"SSS_EXTRA_TARGETS", leanTargets}, {"SSS_PACKED_OUT", "0"}});
-    add(programs.gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {{"GBUFFER_TRANSFER", "3"}});
+    add(programs.gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {{"GBUFFER_TRANSFER", "4"}});
     add(programs.gbufferLeanTransfer, "gbuffer.vert", "gbuffer.frag",
-        {{"GBUFFER_LEAN", "1"}, {"GBUFFER_TRANSFER", "5"}});  // after the LEAN targets 3 and 4
+        {{"GBUFFER_LEAN", "1"}, {"GBUFFER_TRANSFER", "6"}});  // after the scatter target 3 and the LEAN targets 4 and 5
     add(programs.skybox, "fullscreen.vert", "skybox.frag", {{"FULLSCREEN_AT_FAR_PLANE", "1"}});
     add(programs.sssSeparableH, "fullscreen.vert", "sss_separable.frag",
         {{"SSS_EXTRA_TARGETS", "0"}, {"SEPARABLE_SSS_LAST", "0"}});

@@ -24,9 +24,11 @@ Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
 
 SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
     for (const Model& model : models) {
-        std::vector<std::string> names;
-        for (const Submesh& submesh : model.drawRanges())
-            names.push_back(model.materials[static_cast<size_t>(submesh.material)].name);
+        std::vector<SubmeshMaterial> names;
+        for (const Submesh& submesh : model.drawRanges()) {
+            const auto index = static_cast<size_t>(submesh.material);
+            names.push_back({model.materials[index].name, index, model.materials[index].profile});
+        }
         mCharacters.push_back(
             {model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig), std::move(names)});
     }

@@ -16,6 +16,7 @@
 #include "scene/Scene.h"
 #include "mesh/UvLayout.h"
 #include "render/EnvironmentPlan.h"
+#include "render/SubmeshScattering.h"
 
 #include <glm/glm.hpp>
 
@@ -41,8 +42,8 @@ public:
     const Bounds& objectBounds(size_t character) const { return mCharacters[character].objectBounds; }
     // What moves the character's vertices (empty for a static one).
     const Rig& rig(size_t character) const { return *mCharacters[character].rig; }
-    // The glTF material name of each of its submeshes (mesh/Model.h drawRanges).
-    const std::vector<std::string>& submeshMaterials(size_t character) const {
+    // The material of each of its submeshes (mesh/Model.h drawRanges).
+    const std::vector<SubmeshMaterial>& submeshMaterials(size_t character) const {
         return mCharacters[character].submeshMaterials;
     }
     // The character's UV layout, analysed on first use (CPU; the procedural
@@ -61,7 +62,7 @@ private:
         Bounds objectBounds;
         std::shared_ptr<const UvLayout> uvLayout;
         std::shared_ptr<const Rig> rig;
-        std::vector<std::string> submeshMaterials;
+        std::vector<SubmeshMaterial> submeshMaterials;
     };
     std::vector<Character> mCharacters;
 };

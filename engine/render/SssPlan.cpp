@@ -101,7 +101,7 @@ int SssPlan::slotOf(size_t character, size_t submesh) const {
 }
 
 Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view,
-                        const std::vector<std::vector<std::string>>& submeshMaterials) {
+                        const std::vector<std::vector<SubmeshMaterial>>& submeshMaterials) {
     SssPlan plan;
     plan.slotsOfCharacter.resize(scene.characters.size());
     plan.characterChoices.resize(scene.characters.size());
@@ -111,7 +111,7 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
     for (size_t c = 0; c < scene.characters.size(); ++c) {
         const Character& character = scene.characters[c];
         auto submeshes = submeshScattering(scene, c, c < submeshMaterials.size() ? submeshMaterials[c]
-                                                                                 : std::vector<std::string>{});
+                                                                                 : std::vector<SubmeshMaterial>{});
         if (!submeshes.ok()) return submeshes.error();
         ScreenFootprint fp;
         if (scene.settings.sss.enabled && c < characterBounds.size()) fp = screenFootprint(characterBounds[c], view);

@@ -20,6 +20,7 @@
 #include "scene/QualityTable.h"
 #include "scene/Scene.h"
 #include "sss/BlurKernel.h"
+#include "render/SubmeshScattering.h"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
@@ -86,7 +87,7 @@ struct ViewParams {
 };
 
 // characterBounds are world-space bounds, one per scene character;
-// submeshMaterials the glTF material names of each character's submeshes
+// submeshMaterials the materials of each character's submeshes
 // (a missing or empty entry: one submesh with the character's material).
 // With settings.quality.error_budget > 0 each character's choice comes from
 // the quality table by its pixels per mm at its nearest visible depth
@@ -95,7 +96,7 @@ struct ViewParams {
 // (or makes the coarsest such slot finer), never a coarser one.
 // Errors for an unknown profile name or more (profile, width scale) pairs than slots.
 Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& characterBounds, const ViewParams& view,
-                        const std::vector<std::vector<std::string>>& submeshMaterials = {});
+                        const std::vector<std::vector<SubmeshMaterial>>& submeshMaterials = {});
 
 // Whether a light lies behind the character as the camera sees it: the
 // directions from the character's centre to the light and to the camera are

@@ -13,6 +13,16 @@
 
 namespace dermis {
 
+// A submesh's material as the planners need it: the glTF material's name and
+// index (a scene names it by either) and the profile its load decided
+// (ModelMaterial::profile, import/MaterialScattering.h; empty: the scene
+// material's own).
+struct SubmeshMaterial {
+    std::string name;
+    size_t index = 0;
+    std::string profile;
+};
+
 struct SubmeshScattering {
     const DiffusionProfile* profile = nullptr;  // null: opaque ("none")
     float widthScale = 1.0f;                    // settings.sss.widthScale x the material's width_scale
@@ -22,10 +32,9 @@ struct SubmeshScattering {
     }
 };
 
-// One entry per submesh; `materialNames` are the glTF material names of the
-// character's submeshes (empty: one submesh with the character's material).
-// Errors name the character and the unknown profile.
+// One entry per submesh of `materials` (empty: one submesh with the
+// character's material). Errors name the character and the unknown profile.
 Result<std::vector<SubmeshScattering>> submeshScattering(const Scene& scene, size_t character,
-                                                         const std::vector<std::string>& materialNames);
+                                                         const std::vector<SubmeshMaterial>& materials);
 
 }  // namespace dermis

@@ -69,7 +69,7 @@ struct TsCharacterInput {
     float uvlessSurfaceFraction = 0.0f;  // UvLayout::uvlessSurfaceFraction
     float uvOverlapFraction = 0.0f;      // UvLayout::uvOverlapFraction
     float uvCoverageFraction = 1.0f;     // UvLayout::uvCoverageFraction
-    std::vector<std::string> submeshMaterials;  // glTF material names per submesh; empty: one submesh, the character's material
+    std::vector<SubmeshMaterial> submeshMaterials;  // per submesh; empty: one submesh, the character's material
 };
 
 // Texels holding surface per pixel of the character's screen rectangle. The

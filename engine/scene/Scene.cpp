@@ -30,6 +30,19 @@ const Material& characterMaterial(const Character& character, const std::string&
     return found == character.materials.end() ? character.material : found->second;
 }
 
+const Material* sceneMaterialEntry(const Character& character, const std::string& gltfMaterialName, size_t index) {
+    auto found = character.materials.find(gltfMaterialName);
+    if (found == character.materials.end()) found = character.materials.find(materialIndexKey(index));
+    return found == character.materials.end() ? nullptr : &found->second;
+}
+
+const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName, size_t index) {
+    const Material* entry = sceneMaterialEntry(character, gltfMaterialName, index);
+    return entry ? *entry : character.material;
+}
+
+std::string materialIndexKey(size_t index) { return "#" + std::to_string(index); }
+
 Result<const DiffusionProfile*> findSceneProfile(const Scene& scene, const std::string& name) {
     for (const DiffusionProfile& profile : scene.profiles)
         if (profile.name() == name) return &profile;

@@ -79,6 +79,16 @@ struct Material {
     // map gives Beckmann m itself, the specular map multiplies rhoS.
     std::string roughnessMap;
     std::string specularMap;
+    // How much of the material scatters (docs/materials.md, "Skin only where
+    // there is skin"): the outgoing diffuse light is (1 - s) x the local
+    // light + s x the scattered light, s = scatter x the scatter map's red
+    // channel; 0 keeps the surface sharp and stops its transmittance.
+    float scatter = 1.0f;
+    std::string scatterMap;  // a grey image (path, relative to the scene file) or empty
+    // This object gave `profile`, `scatter` or `scatter_map` itself: a
+    // `materials` entry then decides its material's scattering over what the
+    // file says (import/MaterialScattering.h).
+    bool scatteringGiven = false;
 };
 
 // Per-character SSAO overrides (Papanikolaou 2013 §3: radius and sample count per object).
@@ -242,6 +252,13 @@ struct Scene {
 // The material a character's primitives with this glTF material name use:
 // its `materials` entry, else its `material`.
 const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName);
+// The scene's own entry for the character's glTF material `index` (named
+// `gltfMaterialName`): `materials` by that name, else by "#index"; null when
+// the scene names neither. characterMaterial() with the index.
+const Material* sceneMaterialEntry(const Character& character, const std::string& gltfMaterialName, size_t index);
+const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName, size_t index);
+// "#3" for material 3: how `materials` names a material by index.
+std::string materialIndexKey(size_t index);
 
 // A diffusion profile by name: a built-in one or one of the scene's own; the
 // error lists every known name.

@@ -179,7 +179,8 @@ void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh
 
 const std::vector<std::string> kMaterialKeys = {"albedo_map",  "normal_map",    "use_normal_map", "flip_v",
                                                  "procedural",  "albedo",        "roughness",      "rho_s",
-                                                 "profile",     "width_scale",   "roughness_map",  "specular_map"};
+                                                 "profile",     "width_scale",   "roughness_map",  "specular_map",
+                                                 "scatter",     "scatter_map"};
 
 void readMaterialFields(JsonObject& object, const std::string& sceneFile, const std::vector<std::string>& profiles,
                         Material& material) {
@@ -187,7 +188,9 @@ void readMaterialFields(JsonObject& object, const std::string& sceneFile, const 
     object.string("normal_map", material.normalMap);
     object.string("roughness_map", material.roughnessMap);
     object.string("specular_map", material.specularMap);
-    for (std::string* path : {&material.albedoMap, &material.normalMap, &material.roughnessMap, &material.specularMap})
+    object.string("scatter_map", material.scatterMap);
+    for (std::string* path : {&material.albedoMap, &material.normalMap, &material.roughnessMap, &material.specularMap,
+                              &material.scatterMap})
         *path = resolveScenePath(sceneFile, *path);
     object.boolean("use_normal_map", material.useNormalMap);
     object.boolean("flip_v", material.flipV);
@@ -196,6 +199,8 @@ void readMaterialFields(JsonObject& object, const std::string& sceneFile, const 
     object.number("roughness", material.roughness, Range::leftOpen(0.0, 1.0));
     object.number("rho_s", material.rhoS, Range::closed(0.0, 1.0));
     object.number("width_scale", material.widthScale, Range::above(0.0));
+    object.number("scatter", material.scatter, Range::closed(0.0, 1.0));
+    material.scatteringGiven = object.has("profile") || object.has("scatter") || object.has("scatter_map");
     object.string("profile", material.profile, false);
     checkName(object, "profile", material.profile, profiles, "diffusion profile");
 }
@@ -225,7 +230,7 @@ const json* namedObjects(JsonObject& parent, const char* key, const std::string&
 // Per glTF material name, a material that starts as the character's own.
 void readMaterialOverrides(JsonObject& parent, const std::string& sceneFile, const std::vector<std::string>& profiles,
                            Character& character) {
-    const json* value = namedObjects(parent, "materials", "materials by glTF material name");
+    const json* value = namedObjects(parent, "materials", "materials by glTF material name or \"#index\"");
     JsonContext& context = parent.context();
     if (value == nullptr) {
         return;

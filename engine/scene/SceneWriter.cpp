@@ -71,6 +71,7 @@ Json materialJson(const Material& m, const std::string& sceneFile) {
     material["normal_map"] = relativeScenePath(sceneFile, m.normalMap);
     material["roughness_map"] = relativeScenePath(sceneFile, m.roughnessMap);
     material["specular_map"] = relativeScenePath(sceneFile, m.specularMap);
+    material["scatter_map"] = relativeScenePath(sceneFile, m.scatterMap);
     material["use_normal_map"] = m.useNormalMap;
     material["flip_v"] = m.flipV;
     material["procedural"] = m.procedural;
@@ -78,6 +79,7 @@ Json materialJson(const Material& m, const std::string& sceneFile) {
     material["roughness"] = number(m.roughness);
     material["rho_s"] = number(m.rhoS);
     material["width_scale"] = number(m.widthScale);
+    material["scatter"] = number(m.scatter);
     material["profile"] = m.profile;
     return material;
 }

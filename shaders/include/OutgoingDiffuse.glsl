@@ -4,6 +4,18 @@
 #ifndef DERMIS_OUTGOING_DIFFUSE_GLSL
 #define DERMIS_OUTGOING_DIFFUSE_GLSL
 
+layout(binding = DERMIS_UNIT_UNSCATTERED) uniform sampler2D uUnscattered;  // the lighting pass's irradiance
+layout(binding = DERMIS_UNIT_SCATTER) uniform sampler2D uScatter;          // G-buffer: R = the scattering share s
+
+// The irradiance a pixel sends out: (1 - s) x its own + s x the SSS
+// accumulation (docs/materials.md, "Skin only where there is skin"). Where s
+// is 1 (skin) this is the accumulation to the bit, where s is 0 (opaque) the
+// accumulation already holds the pixel's own irradiance.
+vec3 scatteredIrradiance(ivec2 pixel, vec3 accumulated) {
+    float s = texelFetch(uScatter, pixel, 0).r;
+    return s >= 1.0 ? accumulated : mix(texelFetch(uUnscattered, pixel, 0).rgb, accumulated, s);
+}
+
 // The diffuse radiance leaving the surface, from the pixel's albedo,
 // SSS-accumulated irradiance and G-buffer normal+material (fetched by the
 // caller, which may need them too: on llvmpipe every fetch counts).
@@ -20,7 +32,7 @@ vec3 outgoingDiffuseOf(vec3 albedo, vec3 accumulated, vec4 normalMaterial, float
 
 // The same, fetching them (also the `diffuse` AOV).
 vec3 outgoingDiffuse(ivec2 pixel, float depth) {
-    return outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, texelFetch(uDiffuse, pixel, 0).rgb,
+    return outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, scatteredIrradiance(pixel, texelFetch(uDiffuse, pixel, 0).rgb),
                              texelFetch(uNormalMaterial, pixel, 0), depth);
 }
 

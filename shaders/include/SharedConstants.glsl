@@ -115,6 +115,18 @@
 #define DERMIS_UNIT_ROUGHNESS 12
 #define DERMIS_UNIT_SPECULAR 13
 
+// The surface's scattering share s and KHR_materials_volume thickness
+// (docs/materials.md): the G-buffer's scatter target (shaders/gbuffer.frag,
+// RG16F: R = s, G = thickness in mm, 0 = the shadow maps' estimate), the units
+// of the material's scatter and thickness maps in the G-buffer pass, and the
+// units where the composite and the diffuse AOV (include/OutgoingDiffuse.glsl)
+// read s and the unscattered irradiance that s mixes with the scattered.
+#define DERMIS_GBUFFER_SCATTER_LOCATION 3
+#define DERMIS_UNIT_SCATTER_MAP 4
+#define DERMIS_UNIT_THICKNESS_MAP 5
+#define DERMIS_UNIT_UNSCATTERED 7
+#define DERMIS_UNIT_SCATTER 8
+
 // Texture units of the tables every shading pass may read, bound once per frame.
 #define DERMIS_UNIT_BECKMANN 14
 #define DERMIS_UNIT_ENERGY 15

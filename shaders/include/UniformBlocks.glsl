@@ -82,6 +82,8 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index, z: cube face 0..5 (shadow pass)
     vec4 surface;                // x: profile slot of this draw (0 = opaque), y: roughness source (DERMIS_ROUGHNESS_*),
                                  // z: glTF roughnessFactor, w: has a specular map (1/0) (include/Material.glsl)
+    vec4 scattering;             // x: the scattering share s, y: has a scatter map (1/0), z: KHR_materials_volume
+                                 // thickness in mm (0: the shadow maps'), w: has a thickness map (1/0) (docs/materials.md)
     vec4 environmentSh[DERMIS_SH_COEFFICIENTS];  // rgb: uEnvironment.sh in this object's space, for its vertices' transfer
 } DERMIS_BLOCK_END(uObject)
 

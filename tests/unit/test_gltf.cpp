@@ -840,10 +840,11 @@ TEST_F(GltfTest, BadSkinsAndClipsAreRefusedNamingThePlace) {
     expectError(path("bare.gltf"), "has skin 0 but the primitive has no JOINTS_0/WEIGHTS_0");
 
     GltfBuilder extension = quadBuilder(kUnsignedShort);
-    extension.doc["extensionsUsed"] = {"KHR_materials_volume"};
-    extension.doc["extensionsRequired"] = {"KHR_materials_volume"};
-    extension.writeGltf(path("volume.gltf"));
-    expectError(path("volume.gltf"), "requires KHR_materials_volume, which Dermis does not support");
+    // Refraction through glass is not drawn: a file that requires it is refused.
+    extension.doc["extensionsUsed"] = {"KHR_materials_transmission"};
+    extension.doc["extensionsRequired"] = {"KHR_materials_transmission"};
+    extension.writeGltf(path("glass.gltf"));
+    expectError(path("glass.gltf"), "requires KHR_materials_transmission, which Dermis does not support");
 }
 
 TEST_F(GltfTest, WeightsOffOneAreNormalisedWithOneWarning) {

@@ -145,7 +145,7 @@ TEST_F(MaterialsTest, UnknownGltfMaterialNameListsTheFilesNames) {
     ASSERT_FALSE(models.ok());
     const std::string what = models.error().message();
     EXPECT_NE(what.find("/characters/0/materials/Face: 'Face' is not a material of"), std::string::npos) << what;
-    EXPECT_NE(what.find("(its materials: 'Skin', 'Cloth', 'Wax')"), std::string::npos) << what;
+    EXPECT_NE(what.find("(its materials: 'Skin', 'Cloth', 'Wax'; or #0 to #2 by index)"), std::string::npos) << what;
 }
 
 TEST_F(MaterialsTest, UserProfileIsFoundAndRoundTrips) {
@@ -189,7 +189,7 @@ Scene planScene() {
 
 TEST(MaterialPlans, ScreenSpaceSlotsPerProfileAndWidthScale) {
     const Scene scene = planScene();
-    const std::vector<std::vector<std::string>> names = {{"Skin", "Cloth", "Wide", "Wax", "Skin"}, {}};
+    const std::vector<std::vector<SubmeshMaterial>> names = {{{"Skin"}, {"Cloth"}, {"Wide"}, {"Wax"}, {"Skin"}}, {}};
     auto plan = planSss(scene, {kBounds, kBounds}, frontView(), names);
     ASSERT_TRUE(plan.ok()) << plan.error().message();
     // skin at width 1 (slot 1, shared with character b), skin at width 2, marble; the cloth opaque.
@@ -205,7 +205,7 @@ TEST(MaterialPlans, ScreenSpaceSlotsPerProfileAndWidthScale) {
 TEST(MaterialPlans, TextureSpaceSurfacePerProfile) {
     const Scene scene = planScene();
     std::vector<TsCharacterInput> inputs(2, TsCharacterInput{kBounds, 40.0f, 40.0f});
-    inputs[0].submeshMaterials = {"Skin", "Cloth", "Wide", "Wax", "Skin"};
+    inputs[0].submeshMaterials = {{"Skin"}, {"Cloth"}, {"Wide"}, {"Wax"}, {"Skin"}};
     auto plan = planTextureSpace(scene, inputs, frontView(), LightSetup{});
     ASSERT_TRUE(plan.ok()) << plan.error().message();
     ASSERT_EQ(plan->characters.size(), 4u);
