@@ -39,7 +39,9 @@ struct ModelMaterial {
     Image thicknessMap;                   // its texture's G, moved to R (linear)
 
     // How the material scatters, decided at load (import/MaterialScattering.h).
-    std::string profile = "skin";         // a diffusion profile name, or "none" (opaque)
+    // A diffusion profile name or "none" (opaque); "" until decided (a model
+    // made without the loader): the scene material's profile and scatter apply.
+    std::string profile;
     float scatter = 1.0f;                 // s = scatter x scatterMap's R (docs/materials.md)
     Image scatterMap;                     // R = the scattering share, linear; empty: 1
     float thicknessMm = 0.0f;             // the transmittance's thickness x thicknessMap's R; 0: from the shadow maps

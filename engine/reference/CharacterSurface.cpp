@@ -52,8 +52,10 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
         material.albedoTint = scene.albedo * glm::vec3(source.baseColourFactor);
         material.roughness = scene.roughness;
         material.rhoS = scene.rhoS;
-        material.scatter = source.profile == kOpaqueProfile ? 0.0f : source.scatter;
-        material.scattering = {source.profile, scene.widthScale};
+        const bool decided = !source.profile.empty();  // else a model made without the loader: the scene decides
+        const std::string profile = decided ? source.profile : scene.profile;
+        material.scatter = profile == kOpaqueProfile ? 0.0f : decided ? source.scatter : scene.scatter;
+        material.scattering = {profile, scene.widthScale};
         surface.mMaterials.push_back(std::move(material));
     }
     surface.mTriangleMaterials.assign(surface.triangleCount(), 0);

@@ -77,7 +77,8 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submesh
                                                                       : DERMIS_ROUGHNESS_SCALAR;
     block.surface = glm::vec4(float(plan.sss.slotOf(characterIndex, submeshIndex)), float(roughnessSource),
                               maps.roughnessFactor, maps.specularMap.isValid() ? 1.0f : 0.0f);
-    block.scattering = glm::vec4(maps.scatter, maps.scatterMap.isValid() ? 1.0f : 0.0f, maps.thicknessMm,
+    block.scattering = glm::vec4(maps.scatter >= 0.0f ? maps.scatter : material.scatter,
+                                 maps.scatterMap.isValid() ? 1.0f : 0.0f, maps.thicknessMm,
                                  maps.thicknessMap.isValid() ? 1.0f : 0.0f);
     return block;
 }

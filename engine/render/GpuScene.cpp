@@ -118,7 +118,7 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     gpu.name = material.name;
     gpu.baseColourFactor = material.baseColourFactor;
     gpu.roughnessFactor = material.roughnessFactor;
-    gpu.scatter = material.scatter;
+    gpu.scatter = material.profile.empty() ? -1.0f : material.scatter;
     gpu.thicknessMm = material.thicknessMm;
     const std::pair<const Image*, gl::Texture*> maps[] = {{&material.albedoMap, &gpu.albedoMap},
                                                           {&material.normalMap, &gpu.normalMap},

@@ -60,7 +60,7 @@ struct GpuMaterial {
     gl::Texture metallicRoughnessMap;
     gl::Texture roughnessMap;  // the scene's roughness_map; replaces the metallic-roughness map
     gl::Texture specularMap;
-    float scatter = 1.0f;        // ModelMaterial::scatter (import/MaterialScattering.h)
+    float scatter = -1.0f;       // ModelMaterial::scatter (import/MaterialScattering.h); < 0: the scene material's
     float thicknessMm = 0.0f;    // ModelMaterial::thicknessMm
     gl::Texture scatterMap;      // R = s
     gl::Texture thicknessMap;    // R multiplies thicknessMm

@@ -381,3 +381,135 @@ TEST_F(Materials, GltfRoughnessTextureMapsToBeckmannMAsRSquared) {
     load(scene, scalar);
     EXPECT_GT(specularMismatch(render(Aov::Specular, kWidth, kHeight), fromTexture, 2, 1.0f, pixels), 0.05);
 }
+
+// Skin only where there is skin (docs/materials.md, import/MaterialScattering.h).
+
+TEST_F(Materials, ClothNamedInTheFileStaysSharpWithoutASceneEntry) {
+    test::TempDir dir;
+    // No entry for "Cloth": its name decides. An entry that gives only the
+    // roughness leaves the name in charge; one that gives a profile decides.
+    const std::string byName = writeStripScene(dir, R"({"Wax": {"profile": "marble"}, "Cloth": {"roughness": 0.8}})");
+    for (const char* mode : {"ss", "ts"}) {
+        load(byName, {std::string("mode=") + mode});
+        const Blur cloth = measureBlur(1);
+        const Blur skin = measureBlur(0);
+        std::printf("%s, cloth by its name: largest |diffuse - irradiance x albedo| %.2e (%d px); skin near its step %.3f\n",
+                    mode, cloth.largestAway, cloth.pixels, skin.smallestNearStep);
+        EXPECT_GT(cloth.pixels, 20000) << mode;
+        EXPECT_LT(cloth.largestAway, kUnblurredBound) << mode;
+        EXPECT_GT(skin.smallestNearStep, kBlurredAtLeast) << mode;
+    }
+    load(writeStripScene(dir, R"({"Cloth": {"profile": "skin"}})"));
+    const Blur clothAsSkin = measureBlur(1);
+    std::printf("cloth given the skin profile by the scene: near its step %.3f\n", clothAsSkin.smallestNearStep);
+    EXPECT_GT(clothAsSkin.smallestNearStep, kBlurredAtLeast);
+}
+
+TEST_F(Materials, ScatterShareMixesLocalAndScatteredLight) {
+    // diffuse(s) = (1 - s) x irradiance + s x diffuse(1) per pixel: with
+    // s = 0.5 the skin lies halfway between its own light and its blur. Both
+    // renders read back half floats (kUnblurredBound); near the step the blur
+    // moves the light by more than kBlurredAtLeast, so a share that were
+    // ignored (s = 1) or applied twice would miss by 25x the bound.
+    test::TempDir dir;
+    for (const char* mode : {"ss", "ts"}) {
+        load(writeStripScene(dir, R"({"Skin": {"scatter": 1}})"), {std::string("mode=") + mode});
+        const Image full = render(Aov::Diffuse, kWidth, kHeight);
+        const Image irradiance = render(Aov::Irradiance, kWidth, kHeight);
+        load(writeStripScene(dir, R"({"Skin": {"scatter": 0.5}})"), {std::string("mode=") + mode});
+        const Image half = render(Aov::Diffuse, kWidth, kHeight);
+        double worst = 0.0, largestBlur = 0.0;
+        int pixels = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const StripPoint p = stripPoint(x, y);
+                if (p.primitive != 0 || p.toBorderMm < kAwayFromSeamsMm) continue;
+                const glm::vec3 e(irradiance.at(x, y)), d(full.at(x, y));
+                const glm::vec3 miss = glm::abs(glm::vec3(half.at(x, y)) - (0.5f * e + 0.5f * d));
+                worst = std::max({worst, double(miss.r), double(miss.g), double(miss.b)});
+                const glm::vec3 blur = glm::abs(d - e);
+                largestBlur = std::max({largestBlur, double(blur.r), double(blur.g), double(blur.b)});
+                ++pixels;
+            }
+        }
+        std::printf("%s: s = 0.5 against the halfway mix: largest miss %.2e over %d px (the blur moves up to %.3f)\n",
+                    mode, worst, pixels, largestBlur);
+        EXPECT_GT(pixels, 10000) << mode;
+        EXPECT_GT(largestBlur, kBlurredAtLeast) << mode;
+        EXPECT_LT(worst, kUnblurredBound) << mode;
+    }
+}
+
+TEST_F(Materials, ScatterMapKeepsItsZeroTexelsSharp) {
+    // A scatter map 0 left of the skin's albedo step and 1 right of it (in
+    // u; the strip's UVs, tests/support/TestContent.cpp): the left half keeps
+    // its own light, the right half is blurred right up to the step. A texel
+    // is 0.06 mm of the strip, so the pixels within kNearStepMm of the step
+    // are where the map's filtering mixes the two.
+    test::TempDir dir;
+    Image map;
+    map.width = 1024;
+    map.height = 4;
+    const float stepU = 0.01f + 0.98f * (0.5f / float(Strip::kPrimitives));
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            map.texels.push_back(glm::vec4((float(x) + 0.5f) / float(map.width) < stepU ? 0.0f : 1.0f));
+    ASSERT_TRUE(saveImage(dir.file("scatter.png"), map));
+    const std::string scene = writeStripScene(dir, R"({"Skin": {"scatter_map": "scatter.png"}})");
+    for (const char* mode : {"ss", "ts"}) {
+        load(scene, {std::string("mode=") + mode});
+        const Image diffuse = render(Aov::Diffuse, kWidth, kHeight);
+        const Image irradiance = render(Aov::Irradiance, kWidth, kHeight);
+        double leftWorst = 0.0, rightSmallest = 1e9;
+        int left = 0, right = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const StripPoint p = stripPoint(x, y);
+                if (p.primitive != 0 || p.toBorderMm < kAwayFromSeamsMm) continue;
+                const glm::vec3 d = glm::abs(glm::vec3(diffuse.at(x, y)) - glm::vec3(irradiance.at(x, y)));
+                const double change = std::max({d.r, d.g, d.b});
+                if (p.toStepMm < -kNearStepMm) {
+                    leftWorst = std::max(leftWorst, change);
+                    ++left;
+                } else if (p.toStepMm > 0.1 && p.toStepMm < kNearStepMm) {
+                    rightSmallest = std::min(rightSmallest, change);
+                    ++right;
+                }
+            }
+        }
+        std::printf("%s: scatter map 0 | 1 at the step: left half largest change %.2e (%d px), right of the step "
+                    "smallest %.3f (%d px)\n", mode, leftWorst, left, rightSmallest, right);
+        EXPECT_GT(left, 5000) << mode;
+        EXPECT_GT(right, 100) << mode;
+        EXPECT_LT(leftWorst, kUnblurredBound) << mode;
+        EXPECT_GT(rightSmallest, kBlurredAtLeast) << mode;
+    }
+}
+
+TEST_F(Materials, TransmittanceScalesWithTheScatterShare) {
+    // The slab's back light through skin (test_sss.cpp, SssSlab): the
+    // transmitted light is multiplied by s, so s = 0.5 halves every pixel and
+    // s = 0 leaves none. Half-float targets: 2^-11 relative.
+    const std::vector<std::string> base = {"transmittance.shrink_mm=0", "lights.0.shadow=false"};
+    auto withScatter = [&](const char* s) {
+        std::vector<std::string> all = base;
+        all.push_back(std::string("characters.0.material.scatter=") + s);
+        load("slab.json", all);
+        return render(Aov::Transmittance, 320, 180);
+    };
+    const Image full = withScatter("1"), half = withScatter("0.5"), none = withScatter("0");
+    double total = 0.0, worstRelative = 0.0, largestNone = 0.0;
+    for (size_t i = 0; i < full.texels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double f = full.texels[i][c];
+            total += f;
+            if (f > 1e-3) worstRelative = std::max(worstRelative, std::abs(half.texels[i][c] / f - 0.5) / 0.5);
+            largestNone = std::max(largestNone, double(std::abs(none.texels[i][c])));
+        }
+    }
+    std::printf("transmittance: total %.1f at s = 1; s = 0.5 off by at most %.2e relative; s = 0 at most %.2e\n", total,
+                worstRelative, largestNone);
+    EXPECT_GT(total, 10.0);
+    EXPECT_LT(worstRelative, 2e-3);
+    EXPECT_EQ(largestNone, 0.0);
+}

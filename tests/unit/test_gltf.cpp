@@ -422,6 +422,55 @@ TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
     expectError(path("textured.gltf"), "normal map.png");
 }
 
+TEST_F(GltfTest, SurfaceExtensionsAndAlphaModeAreRead) {
+    // Each extension's grey value sits in its own channel (diffuse transmission
+    // in A, volume thickness in G): the loader moves it to R, where the scatter
+    // and thickness maps are read. The PNG's channels differ so a wrong one shows.
+    Image texels;
+    texels.width = 2;
+    texels.height = 2;
+    texels.texels.assign(4, glm::vec4(0.1f, 0.5f, 0.9f, 0.6f));
+    ASSERT_TRUE(saveImage(path("grey.png").string(), texels));
+    GltfBuilder b = quadBuilder(kUnsignedShort);
+    b.doc["images"] = {{{"uri", "grey.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["extensionsUsed"] = {"KHR_materials_diffuse_transmission", "KHR_materials_volume", "KHR_materials_transmission"};
+    b.doc["materials"] = {
+        {{"name", "skin"},
+         {"extensions",
+          {{"KHR_materials_diffuse_transmission",
+            {{"diffuseTransmissionFactor", 0.4}, {"diffuseTransmissionTexture", {{"index", 0}}}}},
+           {"KHR_materials_volume", {{"thicknessFactor", 0.02}, {"thicknessTexture", {{"index", 0}}}}}}}},
+        {{"name", "lens"}, {"alphaMode", "BLEND"}, {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}},
+        {{"name", "plain"}}};
+    json primitive = b.doc["meshes"][0]["primitives"][0];
+    b.doc["meshes"][0]["primitives"] = json::array();
+    for (int m = 0; m < 3; ++m) {
+        primitive["material"] = m;
+        b.doc["meshes"][0]["primitives"].push_back(primitive);
+    }
+    b.writeGltf(path("surface.gltf"));
+    Result<Model> model = loadGltf(path("surface.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    ASSERT_EQ(model->materials.size(), 3u);
+    const ModelMaterial& skin = model->materials[0];
+    EXPECT_FLOAT_EQ(skin.diffuseTransmission, 0.4f);
+    ASSERT_FALSE(skin.diffuseTransmissionMap.empty());
+    EXPECT_NEAR(skin.diffuseTransmissionMap.texels[0].r, 0.6f, 1.0f / 255.0f);  // A
+    EXPECT_FLOAT_EQ(skin.thicknessFactor, 0.02f);
+    ASSERT_FALSE(skin.thicknessMap.empty());
+    EXPECT_NEAR(skin.thicknessMap.texels[0].r, 0.5f, 1.0f / 255.0f);  // G
+    EXPECT_EQ(skin.alphaMode, "OPAQUE");
+    const ModelMaterial& lens = model->materials[1];
+    EXPECT_EQ(lens.alphaMode, "BLEND");
+    EXPECT_FLOAT_EQ(lens.transmission, 1.0f);
+    EXPECT_LT(lens.diffuseTransmission, 0.0f);  // the file gives none
+    const ModelMaterial& plain = model->materials[2];
+    EXPECT_LT(plain.diffuseTransmission, 0.0f);
+    EXPECT_EQ(plain.thicknessFactor, 0.0f);
+    EXPECT_TRUE(plain.thicknessMap.empty());
+}
+
 TEST_F(GltfTest, CorruptEmbeddedImageIsAnError) {
     GltfBuilder b = quadBuilder(kUnsignedShort);
     int view = b.imageView({0x89, 'P', 'N', 'G', 1, 2, 3, 4});
