@@ -66,6 +66,7 @@ void shade() {
         else if (aov == DERMIS_AOV_DIFFUSE) value = outgoingDiffuse(pixel, depth);
         else if (aov == DERMIS_AOV_SPECULAR) value = texelFetch(uSpecular, pixel, 0).rgb;
         else if (aov == DERMIS_AOV_OBJECT) value = vec3(floor(texelFetch(uAlbedo, pixel, 0).a * 255.0 + 0.5));
+        else if (aov == DERMIS_AOV_SCATTER) value = vec3(texelFetch(uScatter, pixel, 0).rg, 0.0);
         else value = component(pixel).rgb;  // irradiance, transmittance, thickness
     }
     oValue = vec4(value, background ? 0.0 : 1.0);

@@ -21,8 +21,9 @@ graph::TextureHandle addAovPass(graph::RenderGraph& graph, const FrameContext& f
                 if (frame.plan.aov == Aov::Diffuse) {
                     d.diffuse = builder.read(inputs.diffuse);
                     d.unscattered = builder.read(inputs.unscattered);
-                    d.scatter = builder.read(inputs.gbuffer.scatter);
                 }
+                if (frame.plan.aov == Aov::Diffuse || frame.plan.aov == Aov::Scatter)
+                    d.scatter = builder.read(inputs.gbuffer.scatter);
                 if (frame.plan.aov == Aov::Specular) d.specular = builder.read(inputs.specular);
                 if (inputs.component.isValid()) d.component = builder.read(inputs.component);
                 d.out = builder.write(output);

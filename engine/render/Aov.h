@@ -27,11 +27,14 @@ enum class Aov {
     // The final frame before exposure and tone mapping: what `--aov final`
     // writes to an EXR.
     Radiance = DERMIS_AOV_RADIANCE,
+    // The share s of the diffuse light that scatters (red; 0 where nothing
+    // scatters) and the file's volume thickness in mm (green; 0: none).
+    Scatter = DERMIS_AOV_SCATTER,
 };
 
 // Names and one-line descriptions (what the AOV holds and in which unit) for
 // the command line, help texts and the viewer.
-inline constexpr EnumTable<Aov, 14> kAovs{
+inline constexpr EnumTable<Aov, 15> kAovs{
     "AOV",
     {{{Aov::Final, "final", "the tone-mapped frame (sRGB)"},
       {Aov::Albedo, "albedo", "surface albedo"},
@@ -46,7 +49,8 @@ inline constexpr EnumTable<Aov, 14> kAovs{
       {Aov::Object, "object", "character index + 1, 0 for the background"},
       {Aov::Stretch, "stretch", "stretch map: mm per UV unit, u red, v green"},
       {Aov::IrradianceTexture, "irradiance-texture", "irradiance texture, before the blurs"},
-      {Aov::Radiance, "radiance", "the final frame before exposure and tone mapping (linear)"}}}};
+      {Aov::Radiance, "radiance", "the final frame before exposure and tone mapping (linear)"},
+      {Aov::Scatter, "scatter", "the share of diffuse light that scatters (red), volume thickness in mm (green)"}}}};
 static_assert(kAovs.isOneToOne(), "every AOV and every name appears once");
 
 // The AOV shows a UV layout, not the frame: the unit UV square, as large as

@@ -83,6 +83,7 @@
 #define DERMIS_AOV_STRETCH 11              // the UV-space AOVs: a texture-space texture of one character,
 #define DERMIS_AOV_IRRADIANCE_TEXTURE 12   // its UV square letterboxed in the frame
 #define DERMIS_AOV_RADIANCE 13             // the composited frame before exposure and tone mapping
+#define DERMIS_AOV_SCATTER 14              // the G-buffer's scattering share s and volume thickness (docs/materials.md)
 
 // The shader storage binding of the sanitise counters (include/Sanitise.glsl).
 #define DERMIS_BINDING_SANITISE_COUNTERS 0

@@ -513,3 +513,97 @@ TEST_F(Materials, TransmittanceScalesWithTheScatterShare) {
     EXPECT_LT(worstRelative, 2e-3);
     EXPECT_EQ(largestNone, 0.0);
 }
+
+// The avatar of tests/support/TestContent.h: hair, eye and cloth materials
+// that only their names mark, under the default head's two shadowed lights
+// (the spot behind the head brings transmittance). Each pixel's material is
+// read from the albedo AOV: factor colours, no maps, no MSAA.
+class AvatarMaterials : public test::RenderFixture {
+protected:
+    static constexpr int kW = 320, kH = 180;
+    std::string writeScene(const test::TempDir& dir) {
+        std::string error;
+        EXPECT_TRUE(test::writeAvatar(dir.file("avatar.gltf"), &error)) << error;
+        test::writeTextFile(dir.file("avatar.json"), R"({
+          "camera": {"position_m": [0.2, 0.02, 0.5], "target_m": [0.0, -0.03, 0.0], "vertical_fov_deg": 38},
+          "lights": [
+            {"type": "directional", "direction": [-0.6, -0.35, -0.72], "intensity": 1.3, "shadow": true},
+            {"type": "spot", "position_m": [-0.25, 0.12, -0.45], "direction": [0.45, -0.2, 0.85], "intensity": 2.0,
+             "spot_inner_deg": 20, "spot_outer_deg": 35, "shadow": true}],
+          "characters": [{"name": "avatar", "mesh": {"gltf": "avatar.gltf"},
+                          "material": {"albedo": [1, 1, 1], "profile": "skin"}}]})");
+        return dir.file("avatar.json");
+    }
+    // The avatar material of each pixel (-1: background or none matches).
+    std::vector<int> materialsOfPixels() {
+        const Image albedo = render(Aov::Albedo, kW, kH);
+        std::vector<int> out(albedo.texels.size(), -1);
+        for (size_t i = 0; i < out.size(); ++i) {
+            for (int m = 0; m < test::Avatar::kMaterials; ++m) {
+                const glm::vec3 d = glm::abs(glm::vec3(albedo.texels[i]) - test::Avatar::kFactors[m]);
+                if (std::max({d.r, d.g, d.b}) < kHalfFloatBound) out[i] = m;
+            }
+        }
+        return out;
+    }
+    struct Split {
+        int pixels[test::Avatar::kMaterials] = {};
+        double largestNonSkinChange = 0.0;   // |diffuse - diffuse with SSS off| on hair, eye and cloth
+        double largestSkinChange = 0.0;
+        double nonSkinTransmitted = 0.0;
+        double skinTransmitted = 0.0;
+    };
+    Split measure(const std::vector<std::string>& overrides) {
+        std::vector<std::string> off = overrides;
+        off.push_back("sss.enabled=false");
+        load(mScenePath, off);
+        const Image unscattered = render(Aov::Diffuse, kW, kH);
+        load(mScenePath, overrides);
+        const std::vector<int> material = materialsOfPixels();
+        const Image diffuse = render(Aov::Diffuse, kW, kH);
+        const Image transmitted = render(Aov::Transmittance, kW, kH);
+        Split s;
+        for (size_t i = 0; i < material.size(); ++i) {
+            if (material[i] < 0) continue;
+            ++s.pixels[material[i]];
+            const glm::vec3 d = glm::abs(glm::vec3(diffuse.texels[i]) - glm::vec3(unscattered.texels[i]));
+            const double change = std::max({d.r, d.g, d.b});
+            const glm::vec3 t(transmitted.texels[i]);
+            const double through = double(t.r + t.g + t.b);
+            if (material[i] == 0) {
+                s.largestSkinChange = std::max(s.largestSkinChange, change);
+                s.skinTransmitted += through;
+            } else {
+                s.largestNonSkinChange = std::max(s.largestNonSkinChange, change);
+                s.nonSkinTransmitted += through;
+            }
+        }
+        return s;
+    }
+    std::string mScenePath;
+};
+
+TEST_F(AvatarMaterials, HairEyesAndClothNeitherBlurNorGlowInBothModes) {
+    test::TempDir dir;
+    mScenePath = writeScene(dir);
+    for (const char* mode : {"ss", "ts"}) {
+        const Split s = measure({std::string("mode=") + mode});
+        std::printf("%s: pixels skin %d, hair %d, eye %d, cloth %d; |diffuse - diffuse without SSS| non-skin %.2e, skin up to "
+                    "%.3f; transmitted non-skin %.2e, skin %.2f\n",
+                    mode, s.pixels[0], s.pixels[1], s.pixels[2], s.pixels[3], s.largestNonSkinChange,
+                    s.largestSkinChange, s.nonSkinTransmitted, s.skinTransmitted);
+        for (int m = 0; m < test::Avatar::kMaterials; ++m) EXPECT_GT(s.pixels[m], 40) << mode << " material " << m;
+        // Opaque pixels keep their own light: the composite takes the lighting's
+        // irradiance itself, exactly what it takes with SSS off.
+        EXPECT_LT(s.largestNonSkinChange, kUnblurredBound) << mode;
+        EXPECT_GT(s.largestSkinChange, kBlurredAtLeast) << mode;
+        EXPECT_EQ(s.nonSkinTransmitted, 0.0) << mode;
+    }
+    // Screen space transmits through the skin (the ears); the same bound
+    // catches the old behaviour, where every material was skin.
+    const Split allSkin = measure({"characters.0.materials={\"Wolf3D_Hair\":{\"profile\":\"skin\"},"
+                                   "\"Wolf3D_Eye\":{\"profile\":\"skin\"},\"Wolf3D_Outfit_Top\":{\"profile\":\"skin\"}}"});
+    std::printf("everything skin (before): |diffuse - diffuse without SSS| on hair, eye and cloth up to %.3f\n",
+                allSkin.largestNonSkinChange);
+    EXPECT_GT(allSkin.largestNonSkinChange, 10.0 * kUnblurredBound);
+}

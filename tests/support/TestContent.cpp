@@ -8,9 +8,14 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "core/Image.h"
+#include "procedural/Procedural.h"
+#include "procedural/ProceduralHeadShape.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 namespace dermis::test {
 namespace {
@@ -252,6 +257,96 @@ bool writeMultiMaterialStrip(const std::string& path, std::string* error) {
     model.meshes.push_back(mesh);
     tinygltf::Node node;
     node.name = "strip";
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    return writeModel(model, path, error);
+}
+
+int Avatar::materialAt(const glm::vec3& c) {
+    // The visible eyeball: a band of the closed lid's sphere in front of the eye.
+    const glm::vec3 eye(std::fabs(c.x), c.y, c.z);
+    const glm::vec3 toEye = eye - head::kEyeM;
+    if (glm::length(toEye) < 0.0135f && toEye.z > 0.005f && std::fabs(toEye.y) < 0.0045f) return 2;
+    if (c.y < -0.15f) return 3;  // the collar round the neck's foot
+    // Hair: the crown and the back of the cranium, its line lower towards the
+    // back (height over the cranium's centre, in its half-height, against z).
+    const float height = (c.y - 0.024f) / 0.100f;
+    const float line = 0.33f - 0.95f * std::clamp((0.06f - c.z) / 0.10f, 0.0f, 1.0f);
+    if (height > line && std::fabs(c.x) < 0.072f) return 1;
+    return 0;
+}
+
+bool writeAvatar(const std::string& path, std::string* error, bool withMaps) {
+    auto head = makeProceduralModel("head");
+    if (!head) {
+        if (error) *error = head.error().message();
+        return false;
+    }
+    const MeshData& mesh = head->mesh;
+    tinygltf::Model model = newModel();
+    std::vector<float> positions, normals, uvs, tangents;
+    for (const Vertex& v : mesh.vertices) {
+        positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
+        normals.insert(normals.end(), {v.normal.x, v.normal.y, v.normal.z});
+        uvs.insert(uvs.end(), {v.uv.x, v.uv.y});
+        tangents.insert(tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w});
+    }
+    const size_t count = mesh.vertices.size();
+    const int position = addAccessor(model, positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count, true);
+    const int normal = addAccessor(model, normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+    const int uv = addAccessor(model, uvs, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+    const int tangent = addAccessor(model, tangents, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, count);
+    std::vector<std::vector<uint32_t>> indices(Avatar::kMaterials);
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::vec3 centroid = (mesh.vertices[mesh.indices[t]].position + mesh.vertices[mesh.indices[t + 1]].position +
+                                    mesh.vertices[mesh.indices[t + 2]].position) / 3.0f;
+        auto& list = indices[static_cast<size_t>(Avatar::materialAt(centroid))];
+        list.insert(list.end(), {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});
+    }
+    tinygltf::Mesh gltfMesh;
+    gltfMesh.name = "avatar";
+    for (int m = 0; m < Avatar::kMaterials; ++m) {
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        primitive.material = m;
+        primitive.attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}, {"TANGENT", tangent}};
+        const auto& list = indices[static_cast<size_t>(m)];
+        primitive.indices = addAccessor(model, list, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, list.size());
+        gltfMesh.primitives.push_back(primitive);
+        tinygltf::Material material;
+        material.name = Avatar::kNames[m];
+        glm::vec3 factor = Avatar::kFactors[m];
+        if (m == 0 && withMaps) factor = glm::vec3(1.0f);
+        material.pbrMetallicRoughness.baseColorFactor = {factor.r, factor.g, factor.b, 1.0};
+        material.pbrMetallicRoughness.metallicFactor = 0.0;
+        model.materials.push_back(material);
+    }
+    if (withMaps) {
+        const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+        const std::pair<const char*, const Image*> maps[] = {{"avatar_albedo.png", &head->materials[0].albedoMap},
+                                                             {"avatar_normal.png", &head->materials[0].normalMap}};
+        for (const auto& [name, image] : maps) {
+            if (Status saved = saveImage((dir / name).string(), *image); !saved) {
+                if (error) *error = saved.error().message();
+                return false;
+            }
+            tinygltf::Image gltfImage;
+            gltfImage.uri = name;
+            model.images.push_back(gltfImage);
+            tinygltf::Texture texture;
+            texture.source = static_cast<int>(model.images.size() - 1);
+            model.textures.push_back(texture);
+        }
+        model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+        model.materials[0].normalTexture.index = 1;
+    }
+    model.meshes.push_back(gltfMesh);
+    tinygltf::Node node;
+    node.name = "avatar";
     node.mesh = 0;
     model.nodes.push_back(node);
     tinygltf::Scene scene;

@@ -64,4 +64,21 @@ struct MultiMaterialStrip {
 // Writes the multi-material strip as a .gltf with its buffer embedded.
 bool writeMultiMaterialStrip(const std::string& path, std::string* error = nullptr);
 
+// An avatar as avatar services ship one (Ready Player Me's material names):
+// the procedural head (procedural/ProceduralHead.h) in metres, facing +z, its
+// triangles split into skin, a scalp of hair, the visible eyeball between the
+// lids and a collar of cloth. No scene entry says which is skin: the names do
+// (import/MaterialScattering.h). With maps, the skin carries the head's
+// albedo and normal maps (PNG files beside the .gltf); without, factors only.
+struct Avatar {
+    static constexpr int kMaterials = 4;
+    static constexpr const char* kNames[kMaterials] = {"Wolf3D_Skin", "Wolf3D_Hair", "Wolf3D_Eye", "Wolf3D_Outfit_Top"};
+    // baseColorFactor (linear); the skin's is white under its map, skin-coloured without one.
+    static constexpr glm::vec3 kFactors[kMaterials] = {
+        {0.80f, 0.58f, 0.48f}, {0.06f, 0.035f, 0.02f}, {0.80f, 0.78f, 0.74f}, {0.10f, 0.16f, 0.40f}};
+    // Which material a triangle of the head takes, by its centroid (metres).
+    static int materialAt(const glm::vec3& centroidM);
+};
+bool writeAvatar(const std::string& path, std::string* error = nullptr, bool withMaps = false);
+
 }  // namespace dermis::test

@@ -14,7 +14,9 @@ int main(int argc, char** argv) {
                                                   "Writes into DIR (tests/support/TestContent.h):\n"
                                                   "  bending_cylinder.gltf        the skinned, animated test cylinder\n"
                                                   "  bending_cylinder_atlas.gltf  the same with its UVs in 1/16 of the square\n"
-                                                  "  multi_material.gltf          skin, cloth and wax primitives, factors, COLOR_0\n");
+                                                  "  multi_material.gltf          skin, cloth and wax primitives, factors, COLOR_0\n"
+                                                  "  avatar.gltf                  the head as skin, hair, eye and cloth materials,\n"
+                                                  "                               with avatar_albedo.png and avatar_normal.png\n");
         return argc == 2 ? 0 : 2;
     }
     const std::filesystem::path dir(argv[1]);
@@ -30,7 +32,8 @@ int main(int argc, char** argv) {
         {"bending_cylinder.gltf", [](const std::string& p, std::string* e) { return dermis::test::writeBendingCylinder(p, e); }},
         {"bending_cylinder_atlas.gltf",
          [](const std::string& p, std::string* e) { return dermis::test::writeBendingCylinder(p, e, 0.25f); }},
-        {"multi_material.gltf", dermis::test::writeMultiMaterialStrip}};
+        {"multi_material.gltf", dermis::test::writeMultiMaterialStrip},
+        {"avatar.gltf", [](const std::string& p, std::string* e) { return dermis::test::writeAvatar(p, e, true); }}};
     for (const auto& [name, write] : files) {
         const std::string path = (dir / name).string();
         if (!write(path, &message)) {

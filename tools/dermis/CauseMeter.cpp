@@ -35,6 +35,12 @@ Result<CauseMeter> CauseMeter::create(Session& session, ReferenceImages& referen
         isSss[c + 1] = scene.characters[c].material.profile != kOpaqueProfile;
     }
     meter.mRegions = bench::classifyRegions(width, height, *ids, isSss, *thickness);
+    // Only what scatters is an SSS pixel: a character's hair, eyes and cloth
+    // are not (the scatter AOV, docs/materials.md).
+    auto scatters = cli::sssMask(session, width, height);
+    if (!scatters.ok()) return scatters.error();
+    for (size_t i = 0; i < meter.mRegions.size(); ++i)
+        if (!(*scatters)[i]) meter.mRegions[i] = bench::kNoRegion;
     meter.mUncoveredPixels = bench::dropUncovered(meter.mRegions, {&meter.mFull, &meter.mSssOff});
     return meter;
 }

@@ -55,14 +55,12 @@ Result<std::vector<int>> objectIds(Session& session, int width, int height) {
 }
 
 Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
-    auto ids = objectIds(session, width, height);
-    if (!ids.ok()) return ids.error();
-    std::vector<uint8_t> mask(ids->size(), 0);
-    const auto& characters = session.scene->characters;
-    for (size_t i = 0; i < mask.size(); ++i) {
-        const int id = (*ids)[i];
-        mask[i] = id > 0 && characters[size_t(id - 1)].material.profile != kOpaqueProfile ? 1 : 0;
-    }
+    if (const Status status = session.renderer->renderFrame({width, height, Aov::Scatter}); !status.ok())
+        return status.error();
+    auto shares = session.renderer->readOutput();
+    if (!shares.ok()) return shares.error();
+    std::vector<uint8_t> mask(shares->texels.size(), 0);
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = shares->texels[i].r > 0.0f ? 1 : 0;
     return mask;
 }
 

@@ -34,7 +34,8 @@ Result<MeasuredRender> measureRender(Session& session, const std::string& sceneP
 // Per pixel: 0 for the background, else the character index + 1 (the object AOV).
 Result<std::vector<int>> objectIds(Session& session, int width, int height);
 
-// One byte per pixel: 1 where a character with a diffusion profile is seen.
+// One byte per pixel: 1 where the surface seen scatters (the scatter AOV > 0:
+// a material with a profile, and its scatter map not 0 there).
 Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height);
 
 // A linear float image of exactly width x height (the CPU reference), or an
