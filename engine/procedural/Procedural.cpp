@@ -1,6 +1,7 @@
 #include "procedural/Procedural.h"
 
 #include "procedural/ProceduralHead.h"
+#include "procedural/ProceduralRig.h"
 #include "procedural/ProceduralShapes.h"
 #include "procedural/ProceduralTextures.h"
 
@@ -30,16 +31,19 @@ Model modelOf(MeshData mesh) {
 
 }  // namespace
 
-std::vector<std::string> proceduralModelNames() { return {"head", "plane", "sphere", "wedge"}; }
+std::vector<std::string> proceduralModelNames() { return {"head", "nodding_head", "plane", "sphere", "wedge"}; }
 
 Result<Model> makeProceduralModel(const std::string& name) {
-    if (name == "head") {
+    if (name == "head" || name == "nodding_head") {
         // Seconds to generate and deterministic: made once per process, copied after.
         static std::mutex sMutex;
         static std::unique_ptr<Model> sHead;
-        std::lock_guard<std::mutex> lock(sMutex);
+        std::unique_lock<std::mutex> lock(sMutex);
         if (!sHead) sHead = std::make_unique<Model>(makeHeadModel());
-        return *sHead;
+        Model model = *sHead;
+        lock.unlock();
+        if (name == "nodding_head") addNoddingRig(model);
+        return model;
     }
     if (name == "plane") return modelOf(makePlaneMesh());
     if (name == "sphere") return modelOf(makeSphereMesh());

@@ -5,6 +5,8 @@
 //   "head"   a head-like character about 0.2 m wide with thin ears, +Y up, face
 //            toward +Z, UV-mapped without overlaps (for texture-space SSS),
 //            with a skin albedo map and a pore-scale normal map.
+//   "nodding_head"  the head with a two-joint rig and a looping 4 s clip,
+//            "idle", that turns and nods it (procedural/ProceduralRig.h).
 //   "plane"  a 1 m x 1 m square in the XZ plane, normal +Y, UV [0,1]^2.
 //   "sphere" a UV sphere of radius 0.1 m, u along longitude, v along latitude.
 //   "wedge"  a thin wedge whose thickness grows linearly from 1 mm to 20 mm

@@ -237,3 +237,24 @@ TEST_F(Skinning, UnknownClipIsAnErrorListingTheFilesClips) {
 }
 
 }  // namespace
+
+// The shipped animated scene (content/scenes/nodding.json): the clip moves
+// the image, and its loop brings it back bit for bit at 4 s.
+TEST_F(Skinning, NoddingSceneMovesAndLoops) {
+    auto at = [&](const char* timeS) {
+        load("nodding.json", {std::string("characters.0.animation.time_s=") + timeS});
+        return render(Aov::Diffuse, 160, 160);
+    };
+    const Image start = at("0"), turned = at("1"), looped = at("4");
+    ASSERT_EQ(test::countNonFinite(turned), 0u);
+    size_t moved = 0, loopDiffers = 0;
+    for (size_t i = 0; i < start.texels.size(); ++i) {
+        const glm::vec4 d = glm::abs(turned.texels[i] - start.texels[i]);
+        if (std::max({d.r, d.g, d.b}) > 0.01f) ++moved;
+        if (looped.texels[i] != start.texels[i]) ++loopDiffers;
+    }
+    std::printf("nodding.json: %zu of %zu pixels change between 0 s and 1 s; %zu differ at 4 s\n", moved,
+                start.texels.size(), loopDiffers);
+    EXPECT_GT(moved, start.texels.size() / 10);
+    EXPECT_EQ(loopDiffers, 0u);
+}
