@@ -76,6 +76,20 @@ bool writeModel(tinygltf::Model& model, const std::string& path, std::string* er
     return true;
 }
 
+// Adds `mesh` as the model's only mesh, on one node of the default scene, and writes the file.
+bool writeOneMeshModel(tinygltf::Model& model, const tinygltf::Mesh& mesh, const std::string& path, std::string* error) {
+    model.meshes.push_back(mesh);
+    tinygltf::Node node;
+    node.name = mesh.name;
+    node.mesh = static_cast<int>(model.meshes.size() - 1);
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {static_cast<int>(model.nodes.size() - 1)};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    return writeModel(model, path, error);
+}
+
 }  // namespace
 
 bool writeBendingCylinder(const std::string& path, std::string* error, float uvScale) {
@@ -254,16 +268,7 @@ bool writeMultiMaterialStrip(const std::string& path, std::string* error) {
         material.pbrMetallicRoughness.baseColorFactor = {factor.r, factor.g, factor.b, factor.a};
         model.materials.push_back(material);
     }
-    model.meshes.push_back(mesh);
-    tinygltf::Node node;
-    node.name = "strip";
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
-    return writeModel(model, path, error);
+    return writeOneMeshModel(model, mesh, path, error);
 }
 
 int Avatar::materialAt(const glm::vec3& c) {
@@ -344,16 +349,7 @@ bool writeAvatar(const std::string& path, std::string* error, bool withMaps) {
         model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
         model.materials[0].normalTexture.index = 1;
     }
-    model.meshes.push_back(gltfMesh);
-    tinygltf::Node node;
-    node.name = "avatar";
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
-    return writeModel(model, path, error);
+    return writeOneMeshModel(model, gltfMesh, path, error);
 }
 
 }  // namespace dermis::test

@@ -1,3 +1,4 @@
+#include "core/ImageResample.h"
 #include "import/GltfLoader.h"
 
 #include "FuzzSupport.h"
@@ -369,10 +370,7 @@ TEST_F(GltfTest, StripsFansAndNonTriangles) {
 }
 
 TEST_F(GltfTest, MaterialMapsFromDataUriBufferViewAndFile) {
-    Image pixel;
-    pixel.width = 3;
-    pixel.height = 2;
-    pixel.texels.assign(6, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    const Image pixel = makeImage(3, 2, ColourSpace::Linear, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
     ASSERT_TRUE(saveImage(path("albedo.png").string(), pixel));
     ASSERT_TRUE(saveImage(path("normal map.png").string(), pixel));
     std::vector<unsigned char> png = readBytes(path("albedo.png"));
@@ -426,11 +424,7 @@ TEST_F(GltfTest, SurfaceExtensionsAndAlphaModeAreRead) {
     // Each extension's grey value sits in its own channel (diffuse transmission
     // in A, volume thickness in G): the loader moves it to R, where the scatter
     // and thickness maps are read. The PNG's channels differ so a wrong one shows.
-    Image texels;
-    texels.width = 2;
-    texels.height = 2;
-    texels.texels.assign(4, glm::vec4(0.1f, 0.5f, 0.9f, 0.6f));
-    ASSERT_TRUE(saveImage(path("grey.png").string(), texels));
+    ASSERT_TRUE(saveImage(path("grey.png").string(), makeImage(2, 2, ColourSpace::Linear, glm::vec4(0.1f, 0.5f, 0.9f, 0.6f))));
     GltfBuilder b = quadBuilder(kUnsignedShort);
     b.doc["images"] = {{{"uri", "grey.png"}}};
     b.doc["textures"] = {{{"source", 0}}};
