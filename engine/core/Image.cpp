@@ -1,5 +1,7 @@
 #include "core/Image.h"
 
+#include "core/OutputFiles.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -51,11 +53,6 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
     return text;
 }
 
-std::string lowerExtension(const std::string& path) {
-    std::string extension = fs::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
-}
 
 // Embedded images often have no file name; their first bytes say what they are.
 std::string extensionFromMagic(const unsigned char* bytes, size_t size) {
@@ -126,7 +123,16 @@ Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSp
     return image;
 }
 
-Status writeFile(const std::string& path, const std::string& extension, const Image& image) {
+
+}  // namespace
+
+std::string lowerExtension(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+Status writeImageFile(const std::string& path, const std::string& extension, const Image& image) {
     std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
     if (!output) return makeError(path, condense(OIIO::geterror(), "no image writer for this format"));
 
@@ -157,8 +163,6 @@ Status writeFile(const std::string& path, const std::string& extension, const Im
         return makeError(path, condense(output->geterror(), "could not write the image"));
     return success();
 }
-
-}  // namespace
 
 Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels) {
     std::error_code error;
@@ -194,39 +198,9 @@ Result<Image> loadImageFromMemory(const void* data, size_t size, const std::stri
 }
 
 Status saveImage(const std::string& path, const Image& image) {
-    const std::string extension = lowerExtension(path);
-    if (extension != ".png" && extension != ".exr")
-        return makeError(path, "unsupported image extension '" + extension + "' (use .png or .exr)");
-    if (image.width <= 0 || image.height <= 0 ||
-        image.texels.size() != static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
-        return makeError(path, "image is empty or its texel count does not match " + std::to_string(image.width) +
-                                   "x" + std::to_string(image.height));
-
-    const fs::path target(path);
-    std::error_code error;
-    if (target.has_parent_path()) {
-        fs::create_directories(target.parent_path(), error);
-        if (error) return makeError(path, "could not create directory: " + error.message());
-    }
-
-    // The temporary keeps the extension, which is how OpenImageIO picks the writer.
-    static std::atomic<unsigned> counter{0};
-    const std::string tempName = "." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                 std::to_string(counter++) + extension;
-    const fs::path temp = target.has_parent_path() ? target.parent_path() / tempName : fs::path(tempName);
-
-    Status written = writeFile(temp.string(), extension, image);
-    if (!written) {
-        fs::remove(temp, error);
-        return makeError(path, written.error().what);
-    }
-    fs::rename(temp, target, error);
-    if (error) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        return makeError(path, "could not move the written file into place: " + error.message());
-    }
-    return success();
+    OutputFiles out;
+    if (Status staged = out.stageImage(path, image); !staged) return staged;
+    return out.commit();
 }
 
 }  // namespace dermis

@@ -46,8 +46,14 @@ Result<Image> loadImageFromMemory(const void* data, size_t size, const std::stri
                                   int* sanitisedTexels = nullptr);
 
 // Writes to a temporary file beside `path` and renames it, so a failed write
-// never leaves a partial file. `.png` stores 8-bit values as given (the caller
-// has already tone-mapped and encoded); `.exr` stores 32-bit floats.
+// never leaves a partial file (core/OutputFiles.h; a command with several
+// outputs stages them all there). `.png` stores 8-bit values as given (the
+// caller has already tone-mapped and encoded); `.exr` stores 32-bit floats.
 Status saveImage(const std::string& path, const Image& image);
+// Writes `path` itself, in the format of `extension` (".png" or ".exr"): for
+// OutputFiles, whose temporaries carry the destination's extension.
+Status writeImageFile(const std::string& path, const std::string& extension, const Image& image);
+// The path's extension, lower case, with its dot ("x.PNG" -> ".png").
+std::string lowerExtension(const std::string& path);
 
 }  // namespace dermis

@@ -1,6 +1,7 @@
 #pragma once
 // Writing a whole text file so that a failure never leaves a partial one: the
-// text goes to a temporary file beside the target, which is then renamed.
+// text goes to a temporary file beside the target, which is then renamed
+// (core/OutputFiles.h, where a command with several outputs stages them all).
 
 #include "core/Result.h"
 

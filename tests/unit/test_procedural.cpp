@@ -255,15 +255,15 @@ TEST_P(ProceduralMesh, SurfaceIsClosedOrOpenOnlyAtTheBorder) {
 INSTANTIATE_TEST_SUITE_P(Procedural, ProceduralMesh, ::testing::Values("head", "plane", "sphere", "wedge"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
-TEST(ProceduralModels, NamesAreTheFourShapes) {
-    EXPECT_EQ(proceduralModelNames(), (std::vector<std::string>{"head", "plane", "sphere", "wedge"}));
+TEST(ProceduralModels, NamesAreTheHeadsAndTheThreeShapes) {
+    EXPECT_EQ(proceduralModelNames(), (std::vector<std::string>{"head", "nodding_head", "plane", "sphere", "wedge"}));
 }
 
 TEST(ProceduralModels, UnknownNameIsAnError) {
     Result<Model> made = makeProceduralModel("teapot");
     ASSERT_FALSE(made.ok());
     EXPECT_EQ(made.error().where, "");
-    EXPECT_EQ(made.error().what, "unknown procedural mesh \"teapot\" (known: head, plane, sphere, wedge)");
+    EXPECT_EQ(made.error().what, "unknown procedural mesh \"teapot\" (known: head, nodding_head, plane, sphere, wedge)");
 }
 
 TEST(ProceduralModels, TestShapesHaveNoMaps) {

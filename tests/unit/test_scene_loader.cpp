@@ -392,7 +392,7 @@ TEST(SceneLoader, ProfileAndProceduralMeshNamesAreCheckedWithTheirKey) {
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "material": {"profile": "custom"})")),
               "/characters/0/material/profile: unknown diffusion profile \"custom\" (known: skin, marble or none)");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "cube"})")),
-              "/characters/0/mesh/procedural: unknown procedural mesh \"cube\" (known: head, plane, sphere or wedge)");
+              "/characters/0/mesh/procedural: unknown procedural mesh \"cube\" (known: head, nodding_head, plane, sphere or wedge)");
     // Every name the engine knows loads, "none" (opaque) included.
     for (const std::string profile : {"skin", "marble", "none"}) {
         const std::string members = "\"mesh\": {\"procedural\": \"sphere\"}, \"material\": {\"profile\": \"" + profile + "\"}";

@@ -15,6 +15,7 @@
 #include "core/ImageMetrics.h"
 #include "core/ImageResample.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "core/TextFile.h"
 #include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"
@@ -26,6 +27,8 @@
 #include <map>
 #include <optional>
 #include <set>
+
+#include <unistd.h>
 
 namespace dermis::cli {
 namespace {
@@ -99,14 +102,34 @@ const char* const kHelp =
     "the plotting fails, 2 for bad command-line usage. Every configuration is checked before\n"
     "anything is rendered.\n";
 
-Status drawPlots(const std::filesystem::path& outDir) {
+// Draws the plots of `texts` (the CSV and JSON files, by name) in a hidden
+// directory inside outDir, and stages each plot as outDir's file.
+Status stagePlots(const std::filesystem::path& outDir, const std::vector<std::pair<std::string, std::string>>& texts,
+                  OutputFiles& outputs) {
+    namespace fs = std::filesystem;
+    const fs::path drawing = outDir / (".plots.dermis-" + std::to_string(::getpid()));
+    struct RemoveAfter {
+        fs::path dir;
+        ~RemoveAfter() {
+            std::error_code ignored;
+            fs::remove_all(dir, ignored);
+        }
+    } removeAfter{drawing};
+    for (const auto& [name, text] : texts)
+        if (Status written = writeTextFileAtomically((drawing / name).string(), text); !written.ok()) return written;
     const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_bench.py";
-    const std::string command = pythonInterpreter() + " '" + script + "' '" + outDir.string() + "'";
-    const int status = std::system(command.c_str());
-    if (status != 0) {
+    const std::string command = pythonInterpreter() + " '" + script + "' '" + drawing.string() + "'";
+    if (std::system(command.c_str()) != 0) {
         return makeError(script, "plotting failed (it needs python3 with matplotlib: apt-get install python3-matplotlib); "
-                                 "the CSV and JSON files are written, --no-plots skips the plots");
+                                 "nothing was written, --no-plots skips the plots");
     }
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(drawing, error)) {
+        if (entry.path().extension() != ".png") continue;
+        const std::string target = (outDir / entry.path().filename()).string();
+        if (Status staged = outputs.stageFile(target, entry.path()); !staged.ok()) return staged;
+    }
+    if (error) return makeError(drawing.string(), "could not list the plots: " + error.message());
     return success();
 }
 
@@ -165,9 +188,8 @@ int runBench(const std::vector<std::string>& rawArgs) {
     auto planned = bench::planConfigs(scenePath, base, *sweep);
     if (!planned.ok()) return failure(planned.error());
 
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
+    OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
+    if (Status prepared = outputs.prepareDirectory(outDir.string()); !prepared.ok()) return failure(prepared.error());
     auto file = [&](const std::string& name) { return (outDir / name).string(); };
 
     std::optional<Image> givenReference;
@@ -208,7 +230,8 @@ int runBench(const std::vector<std::string>& rawArgs) {
         if (config.isDefault) {
             const std::string heatmap = file("error_" + config.sweep.mode + ".png");
             const double scaleMax = roundUpToNiceNumber(differencePercentile(reference, diffuse, mask, 0.99));
-            if (Status saved = saveImage(heatmap, differenceHeatmap(reference, diffuse, mask, scaleMax)); !saved.ok())
+            if (Status saved = outputs.stageImage(heatmap, differenceHeatmap(reference, diffuse, mask, scaleMax));
+                !saved.ok())
                 return failure(saved.error());
         }
 
@@ -265,14 +288,15 @@ int runBench(const std::vector<std::string>& rawArgs) {
     }
     summary["scatter_error_limit"] = bench::kScatterErrorLimit;  // the goal line of the plots
     summary["modes"] = bench::benchSummary(rows, kErrorLimit);
-    for (const auto& [name, text] : {std::pair<const char*, std::string>{"results.csv", bench::resultsCsv(rows)},
-                                     {"passes.csv", bench::passesCsv(rows)},
-                                     {"summary.json", summary.dump(2) + "\n"}}) {
-        if (Status written = writeTextFileAtomically(file(name), text); !written.ok()) return failure(written.error());
-    }
+    const std::vector<std::pair<std::string, std::string>> texts = {{"results.csv", bench::resultsCsv(rows)},
+                                                                     {"passes.csv", bench::passesCsv(rows)},
+                                                                     {"summary.json", summary.dump(2) + "\n"}};
+    for (const auto& [name, text] : texts)
+        if (Status written = outputs.stageText(file(name), text); !written.ok()) return failure(written.error());
     if (!args->flags.count("no-plots")) {
-        if (Status plotted = drawPlots(outDir); !plotted.ok()) return failure(plotted.error());
+        if (Status plotted = stagePlots(outDir, texts, outputs); !plotted.ok()) return failure(plotted.error());
     }
+    if (Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     for (const auto& [mode, entry] : summary["modes"].items()) {
         if (log::quiet() || entry["default"].is_null()) continue;
         std::printf("%s default: %.1f ms, relative RMSE %.2f%% (scatter %.2f%%)\n", mode.c_str(),

@@ -9,6 +9,7 @@
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "bench/BenchReport.h"
 #include "core/TextFile.h"
 #include "frame/Renderer.h"
@@ -144,10 +145,12 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
 
     auto file = [&](const std::string& name) { return (outDir / name).string(); };
+    OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
     for (const char* extension : {".exr", ".png"}) {
         for (const auto& [mode, measured] : renders) {
             const Image& image = std::string(extension) == ".exr" ? measured.diffuse : measured.finalImage;
-            if (const Status saved = saveImage(file(mode + extension), image); !saved.ok()) return failure(saved.error());
+            if (const Status saved = outputs.stageImage(file(mode + extension), image); !saved.ok())
+                return failure(saved.error());
         }
     }
 
@@ -208,13 +211,14 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     }
     for (const auto& [mode, measured] : renders) metrics["timings"][mode] = nlohmann::json::parse(measured.timingsJson);
 
-    if (const Status saved = saveImage(file("difference.png"), differenceHeatmap(ss->diffuse, ts->diffuse, *mask, scaleMax));
+    if (const Status saved =
+            outputs.stageImage(file("difference.png"), differenceHeatmap(ss->diffuse, ts->diffuse, *mask, scaleMax));
         !saved.ok()) {
         return failure(saved.error());
     }
-    if (const Status written = writeTextFileAtomically(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok()) {
+    if (const Status written = outputs.stageText(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok())
         return failure(written.error());
-    }
+    if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     if (!log::quiet() && difference.ok()) {
         std::printf("%zu SSS pixels: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", difference->pixels,
                     difference->relativeRmse, difference->maxAbsDifference, difference->psnrDb);

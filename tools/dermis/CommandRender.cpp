@@ -6,6 +6,7 @@
 #include "core/Image.h"
 #include "core/Limits.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "render/Aov.h"
 #include "frame/Renderer.h"
 #include "scene/SceneEnums.h"
@@ -139,6 +140,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
     log::info("rendering " + scenePath + " at " + std::to_string(request.width) + "x" + std::to_string(request.height) +
               ", " + std::to_string(frameCount) + " frames on " + session->context->renderer());
     const auto start = std::chrono::steady_clock::now();
+    OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
     for (int i = 0; i < frameCount; ++i) {
         if (!sequence.empty()) request.timeS = sequence[static_cast<size_t>(i)];
         const Status status = renderer.renderFrame(request);
@@ -147,7 +149,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
         auto image = renderer.readOutput();
         if (!image.ok()) return failure(image.error());
         const std::string framePath = sequenceFramePath(outPath, static_cast<size_t>(i));
-        if (const Status saved = saveImage(framePath, *image); !saved.ok()) return failure(saved.error());
+        if (const Status saved = outputs.stageImage(framePath, *image); !saved.ok()) return failure(saved.error());
         log::info("frame " + std::to_string(i + 1) + "/" + std::to_string(frameCount) + " at " +
                   formatNumberForMessage(request.timeS) + " s: " + framePath);
     }
@@ -159,17 +161,18 @@ int runRender(const std::vector<std::string>& rawArgs) {
     if (sequence.empty()) {
         auto image = renderer.readOutput();
         if (!image.ok()) return failure(image.error());
-        if (const Status saved = saveImage(outPath, *image); !saved.ok()) return failure(saved.error());
+        if (const Status saved = outputs.stageImage(outPath, *image); !saved.ok()) return failure(saved.error());
     }
 
     RunInfo info = session->runInfo(scenePath, request.width, request.height, frameCount);
     info.wallMsPerFrame = wallMs / frameCount;
     info.characters = renderer.characterReports();
     if (args->has("timings")) {
-        if (const Status written = renderer.timings().writeJson(args->get("timings", ""), info); !written.ok()) {
-            return failure(written.error());
-        }
+        const std::string timingsPath = args->get("timings", "");
+        if (const Status staged = outputs.stageText(timingsPath, renderer.timings().toJson(info)); !staged.ok())
+            return failure(staged.error());
     }
+    if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     if (!log::quiet()) std::printf("%s", renderer.timings().toTable(info).c_str());
     if (sequence.empty()) log::info("wrote " + outPath);
     return 0;

@@ -5,6 +5,7 @@
 #include "Session.h"
 
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "frame/Renderer.h"
@@ -225,6 +226,9 @@ int runStress(const std::vector<std::string>& rawArgs) {
 
     log::setQuiet(true);  // per-case loading messages would drown the progress bar
     const auto start = std::chrono::steady_clock::now();
+    // The report and the failed cases' scenes, all or none (docs/cli.md,
+    // "Outputs"): failed cases are results, so a run that ends commits them.
+    OutputFiles outputs;
     nlohmann::ordered_json failures = nlohmann::ordered_json::array();
     uint64_t totalNonFinite = 0;
     stress::CountingTotals totals;
@@ -271,8 +275,7 @@ int runStress(const std::vector<std::string>& rawArgs) {
                 if (!failedScenesDir.empty() && !r.sceneJson.empty()) {
                     const std::string path =
                         (std::filesystem::path(failedScenesDir) / ("seed-" + std::to_string(r.seed) + ".json")).string();
-                    std::filesystem::create_directories(failedScenesDir, ec);
-                    if (const Status written = writeTextFileAtomically(path, r.sceneJson); written.ok())
+                    if (const Status written = outputs.stageText(path, r.sceneJson); written.ok())
                         f["scene"] = path;
                     else
                         f["scene_error"] = written.error().message();
@@ -317,8 +320,9 @@ int runStress(const std::vector<std::string>& rawArgs) {
     summary["failures"] = failures;
     summary["hashes"] = hashes;  // per case, in seed order
 
-    if (const Status written = writeTextFileAtomically(outPath, summary.dump(2) + "\n"); !written.ok())
+    if (const Status written = outputs.stageText(outPath, summary.dump(2) + "\n"); !written.ok())
         return failure(written.error());
+    if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
 
     std::string failedPasses;
     for (const auto& f : failures) {

@@ -9,6 +9,7 @@
 #include "bench/QualityTune.h"
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "core/TextFile.h"
 #include "scene/QualityTable.h"
 
@@ -233,9 +234,11 @@ int runTune(const std::vector<std::string>& rawArgs) {
     std::snprintf(marginLine, sizeof marginLine, "\nA candidate qualified when its loss was at most %.3g x the budget (--margin).\n",
                   double(*margin));
     const std::string markdown = bench::qualityTableMarkdown(table) + marginLine;
-    if (Status written = writeTextFileAtomically(outPath, json); !written.ok()) return failure(written.error());
-    if (Status written = writeTextFileAtomically(markdownPath(outPath), markdown); !written.ok())
+    OutputFiles outputs;  // both files, or neither (docs/cli.md, "Outputs")
+    if (Status written = outputs.stageText(outPath, json); !written.ok()) return failure(written.error());
+    if (Status written = outputs.stageText(markdownPath(outPath), markdown); !written.ok())
         return failure(written.error());
+    if (Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     if (!log::quiet()) std::fputs(markdown.c_str(), stdout);
     log::info("wrote " + outPath + " and " + markdownPath(outPath));
     return 0;
