@@ -80,9 +80,13 @@ void main() {
     float environmentVisibility = 1.0;
     if (environmentLit()) {
         int occlusion = environmentOcclusion();
-        vec4 environment = occlusion == DERMIS_ENV_OCCLUSION_TRANSFER
-                               ? texelFetch(uEnvironmentTransfer, pixel, 0)
-                               : vec4(environmentIrradiance(N), occlusion == DERMIS_ENV_OCCLUSION_SSAO ? ambientOcclusion : 1.0);
+        vec4 environment;
+        if (occlusion == DERMIS_ENV_OCCLUSION_TRANSFER) {
+            environment = texelFetch(uEnvironmentTransfer, pixel, 0);
+            environment.rgb = transferredIrradiance(environment, N);
+        } else {
+            environment = vec4(environmentIrradiance(N), occlusion == DERMIS_ENV_OCCLUSION_SSAO ? ambientOcclusion : 1.0);
+        }
         if (occlusion == DERMIS_ENV_OCCLUSION_SSAO) environment.rgb *= ambientOcclusion;
         irradiance += environment.rgb * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
         environmentVisibility = specularOcclusion(clamp(dot(N, V), 0.0, 1.0), environment.a, roughness);

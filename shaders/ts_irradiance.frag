@@ -69,7 +69,7 @@ void main() {
     vec3 irradiance = uFrame.ambient.rgb * occlusion;
     if (environmentLit()) {
         int mode = environmentOcclusion();
-        vec3 environment = mode == DERMIS_ENV_OCCLUSION_TRANSFER ? vEnvironment.rgb : environmentIrradiance(N);
+        vec3 environment = mode == DERMIS_ENV_OCCLUSION_TRANSFER ? transferredIrradiance(vEnvironment, N) : environmentIrradiance(N);
         if (mode == DERMIS_ENV_OCCLUSION_SSAO) environment *= occlusion;
         irradiance += environment * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
     }

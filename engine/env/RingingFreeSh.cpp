@@ -5,11 +5,11 @@
 
 namespace dermis {
 
-Sh9 projectLatLongWithoutRinging(const Image& map) {
+SplitSh projectLatLongSplit(const Image& map) {
     const double maxUnwindowedPower = kShUnwindowedPowerFraction * 4.0 * 3.14159265358979323846 * medianLuminance(map);
     // One pass, no copies of the map: each texel's radiance x solid angle
     // split into the part projected as it is and the windowed part.
-    std::array<glm::dvec3, kShCoefficients> sum{};
+    std::array<glm::dvec3, kShCoefficients> smooth{}, hot{};
     for (int v = 0; v < map.height; ++v) {
         const double solidAngle = latLongTexelSolidAngle(v, map.width, map.height);
         for (int u = 0; u < map.width; ++u) {
@@ -19,13 +19,24 @@ Sh9 projectLatLongWithoutRinging(const Image& map) {
             const auto y = shBasis(latLongDirection(u, v, map.width, map.height));
             for (int i = 0; i < kShCoefficients; ++i) {
                 const int band = i == 0 ? 0 : i < 4 ? 1 : 2;
-                const double weight = 1.0 - hotShare + hotShare * double(kShNonNegativeWindow[size_t(band)]);
-                sum[size_t(i)] += power * (weight * double(y[size_t(i)]));
+                smooth[size_t(i)] += power * ((1.0 - hotShare) * double(y[size_t(i)]));
+                hot[size_t(i)] += power * (hotShare * double(kShNonNegativeWindow[size_t(band)]) * double(y[size_t(i)]));
             }
         }
     }
+    SplitSh out;
+    for (int i = 0; i < kShCoefficients; ++i) {
+        out.smooth.coefficients[size_t(i)] = glm::vec3(smooth[size_t(i)]);
+        out.hot.coefficients[size_t(i)] = glm::vec3(hot[size_t(i)]);
+    }
+    return out;
+}
+
+Sh9 projectLatLongWithoutRinging(const Image& map) {
+    const SplitSh split = projectLatLongSplit(map);
     Sh9 out;
-    for (int i = 0; i < kShCoefficients; ++i) out.coefficients[size_t(i)] = glm::vec3(sum[size_t(i)]);
+    for (int i = 0; i < kShCoefficients; ++i)
+        out.coefficients[size_t(i)] = split.smooth.coefficients[size_t(i)] + split.hot.coefficients[size_t(i)];
     return out;
 }
 

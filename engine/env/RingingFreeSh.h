@@ -34,7 +34,20 @@ namespace dermis {
 inline constexpr std::array<float, 3> kShNonNegativeWindow = {1.0f, 0.8660254f, 0.8f};
 inline constexpr double kShUnwindowedPowerFraction = 1.0 / 1024.0;
 
-// projectLatLong with the hot part of each texel windowed, as above.
+// The two parts of the projection: `smooth` the power below the cap, as it
+// is; `hot` the power above it, windowed. The per-vertex transfer takes only
+// the smooth part: its transfer vectors, integrated by rays, are not the
+// exact clamped cosine the window's guarantee needs, and a sun's hot part
+// times their error darkened a sphere's rim by 85% (docs/environment.md,
+// "Hot texels and ringing"); the hot part is lit by its windowed irradiance
+// at the normal instead, times the vertex's visible share.
+struct SplitSh {
+    Sh9 smooth;
+    Sh9 hot;
+};
+SplitSh projectLatLongSplit(const Image& map);
+
+// projectLatLong with the hot part of each texel windowed, as above: smooth + hot.
 Sh9 projectLatLongWithoutRinging(const Image& map);
 
 }  // namespace dermis

@@ -20,7 +20,7 @@ static_assert(sizeof(ProfilesBlock) == (DERMIS_MAX_PROFILES + 1) * sizeof(Profil
 static_assert(sizeof(GpuLight) == 64 + 7 * 16, "GpuLight must match std140");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
 static_assert(sizeof(ObjectBlock) == 2 * 64 + (5 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
-static_assert(sizeof(EnvironmentBlock) == 64 + (DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
+static_assert(sizeof(EnvironmentBlock) == 64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
               "EnvironmentBlock must match std140");
 static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");
 static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");

@@ -55,7 +55,10 @@ std::shared_ptr<const EnvironmentLight> splitEnvironmentLight(std::string source
         if (!light->extracted.empty()) light->remainder = std::move(split.remainder);
     }
     light->map = std::move(map);
-    light->mapSh = projectLatLongWithoutRinging(light->lit());
+    const SplitSh split = projectLatLongSplit(light->lit());
+    for (int i = 0; i < kShCoefficients; ++i)
+        light->mapSh.coefficients[size_t(i)] = split.smooth.coefficients[size_t(i)] + split.hot.coefficients[size_t(i)];
+    light->mapHotSh = split.hot;
     return light;
 }
 
@@ -92,6 +95,9 @@ EnvironmentPlan planEnvironment(const Environment& environment, std::shared_ptr<
     Sh9 world = rotateSh(keepShBands(plan.light->mapSh, environment.shBands), plan.worldFromMap);
     for (glm::vec3& c : world.coefficients) c *= environment.intensity;
     plan.worldSh = world;
+    Sh9 hot = rotateSh(keepShBands(plan.light->mapHotSh, environment.shBands), plan.worldFromMap);
+    for (glm::vec3& c : hot.coefficients) c *= environment.intensity;
+    plan.worldHotSh = hot;
     for (const ExtractedLight& extracted : plan.light->extracted)
         plan.lights.push_back(worldLight(extracted, plan.worldFromMap, environment.intensity));
     plan.transfer = environment.occlusion == EnvironmentOcclusion::Transfer;
@@ -101,7 +107,11 @@ EnvironmentPlan planEnvironment(const Environment& environment, std::shared_ptr<
         // The rotation of a uniformly scaled transform: its columns over their length.
         const glm::mat3 linear(m);
         const glm::mat3 rotation(glm::normalize(linear[0]), glm::normalize(linear[1]), glm::normalize(linear[2]));
-        plan.objectSh.push_back(rotateSh(world, glm::transpose(rotation)));
+        // The transfer takes the smooth part; the hot part is lit at the normal (worldHotSh).
+        Sh9 smooth;
+        for (int i = 0; i < kShCoefficients; ++i)
+            smooth.coefficients[size_t(i)] = world.coefficients[size_t(i)] - hot.coefficients[size_t(i)];
+        plan.objectSh.push_back(rotateSh(smooth, glm::transpose(rotation)));
     }
     return plan;
 }

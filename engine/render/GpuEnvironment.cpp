@@ -67,7 +67,10 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
             mMapLight = plan.light;
         }
         const Environment& environment = scene.environment;
-        for (int i = 0; i < kShCoefficients; ++i) block.sh[i] = glm::vec4(plan.worldSh.coefficients[size_t(i)], 0.0f);
+        for (int i = 0; i < kShCoefficients; ++i) {
+            block.sh[i] = glm::vec4(plan.worldSh.coefficients[size_t(i)], 0.0f);
+            block.hotSh[i] = glm::vec4(plan.worldHotSh.coefficients[size_t(i)], 0.0f);
+        }
         block.mapFromWorld = glm::mat4(glm::transpose(plan.worldFromMap));
         block.params = glm::vec4(1.0f, float(int(environment.occlusion)), float(int(environment.specular)),
                                  environment.intensity);

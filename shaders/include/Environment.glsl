@@ -50,12 +50,21 @@ int environmentSpecularMode() { return int(uEnvironment.params.z + 0.5); }
 
 // Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
 // 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
-vec3 environmentIrradiance(vec3 N) {
+vec3 shIrradiance(vec4 sh[9], vec3 N) {
     float basis[9];
     shBasis9(N, basis);
     vec3 irradiance = vec3(0.0);
-    for (int i = 0; i < 9; ++i) irradiance += uEnvironment.sh[i].rgb * (kShClampedCosine[i] * basis[i]);
+    for (int i = 0; i < 9; ++i) irradiance += sh[i].rgb * (kShClampedCosine[i] * basis[i]);
     return max(irradiance, vec3(0.0));
+}
+vec3 environmentIrradiance(vec3 N) { return shIrradiance(uEnvironment.sh, N); }
+
+// Occlusion "transfer": the vertices' L.T of the smooth light (rgb, and the
+// visible share in a) plus the hot, windowed part lit at the normal times
+// that share (env/RingingFreeSh.h: a sun's hot part through the transfer's
+// integrated vectors could take light away).
+vec3 transferredIrradiance(vec4 transfer, vec3 N) {
+    return transfer.rgb + shIrradiance(uEnvironment.hotSh, N) * transfer.a;
 }
 
 // The share of the environment's (near uniform) light the specular lobe

@@ -94,6 +94,8 @@ DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
     vec4 params;  // x: an environment lights the frame (1/0), y: DERMIS_ENV_OCCLUSION_*, z: DERMIS_ENV_SPECULAR_*, w: intensity
     vec4 map;     // x: the map's last mip level, y: 1 = the map is drawn behind everything
     vec4 averageAlbedo[DERMIS_AVERAGE_ALBEDO_SIZE / 4];  // rho_dt(mu, m) averaged 2 int mu dmu, at m = i / (SIZE - 1)
+    vec4 hotSh[DERMIS_SH_COEFFICIENTS];  // rgb: sh's hot, windowed part (env/RingingFreeSh.h), which occlusion
+                                         // "transfer" lights at the normal, times the vertices' visible share
 } DERMIS_BLOCK_END(uEnvironment)
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).
