@@ -338,6 +338,11 @@ private:
             if (!local) return local.error();
             glm::mat4 world = parent * local.value();
             if (node.mesh >= 0) {
+                if (Status checked = checkTransformScale(glm::mat3(world), mPath,
+                                                         "node " + std::to_string(index) +
+                                                             (node.name.empty() ? "" : " '" + node.name + "'"));
+                    !checked)
+                    return checked;
                 if (static_cast<size_t>(node.mesh) >= mGltf.meshes.size())
                     return fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
                                 " is out of range");

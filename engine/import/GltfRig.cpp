@@ -1,6 +1,9 @@
 #include "import/GltfRig.h"
 
+#include "core/Limits.h"
 #include "core/Log.h"
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +56,20 @@ Result<NodeTransform> readNodeTransform(const tinygltf::Node& node, int index, c
     return transform;
 }
 
+Status checkTransformScale(const glm::mat3& linear, const std::string& path, const std::string& where) {
+    for (int axis = 0; axis < 3; ++axis) {
+        const double scale = glm::length(glm::dvec3(linear[axis]));
+        // Exactly 0 is how exporters hide a part: it collapses, finitely.
+        if (scale == 0.0 || (std::isfinite(scale) && scale >= kMinMetresPerMeshUnit && scale <= kMaxMetresPerMeshUnit))
+            continue;
+        char line[200];
+        std::snprintf(line, sizeof line, "%s: its composed scale %.3g (axis %c) is outside [%g, %g], the limit of a "
+                      "character's scale", where.c_str(), scale, "xyz"[axis], kMinMetresPerMeshUnit, kMaxMetresPerMeshUnit);
+        return makeError(path, line);
+    }
+    return success();
+}
+
 bool GltfRigBuilder::wanted(const tinygltf::Model& gltf) {
     if (!gltf.skins.empty() || !gltf.animations.empty()) return true;
     for (const tinygltf::Mesh& mesh : gltf.meshes)
@@ -93,6 +110,13 @@ Status GltfRigBuilder::readNodes() {
         }
     }
     mRestWorld = worldFromNodes(mRig.nodes, restPose(mRig.nodes));
+    for (size_t i = 0; i < mRestWorld.size(); ++i) {
+        const std::string& name = mRig.nodes[i].name;
+        if (Status checked = checkTransformScale(glm::mat3(mRestWorld[i]), mPath,
+                                                 "node " + std::to_string(i) + (name.empty() ? "" : " '" + name + "'"));
+            !checked)
+            return checked;
+    }
     return success();
 }
 
@@ -117,8 +141,13 @@ Status GltfRigBuilder::readSkins() {
             if (values->size() < 16 * out.joints.size())
                 return fail(where + ": " + std::to_string(values->size() / 16) + " inverse bind matrices for " +
                             std::to_string(out.joints.size()) + " joints");
-            for (size_t j = 0; j < out.joints.size(); ++j)
+            for (size_t j = 0; j < out.joints.size(); ++j) {
                 for (int i = 0; i < 16; ++i) out.inverseBindMatrices[j][i / 4][i % 4] = (*values)[16 * j + static_cast<size_t>(i)];
+                if (Status checked = checkTransformScale(glm::mat3(out.inverseBindMatrices[j]), mPath,
+                                                         where + " inverse bind matrix " + std::to_string(j));
+                    !checked)
+                    return checked;
+            }
         }
         mSkinPaletteOffset.push_back(mRig.palette.size());
         for (size_t j = 0; j < out.joints.size(); ++j)
@@ -182,6 +211,17 @@ Result<AnimationChannel> GltfRigBuilder::readChannel(const tinygltf::Animation& 
                     std::to_string(perKey) + ")");
     out.timesS = std::move(times.value());
     out.values = std::move(values.value());
+    if (out.property == AnimatedProperty::Scale) {
+        // CUBICSPLINE keys are (in-tangent, value, out-tangent): only the values are scales.
+        const bool cubic = out.interpolation == Interpolation::CubicSpline;
+        for (size_t v = cubic ? 3 : 0; v + 2 < out.values.size(); v += cubic ? 9 : 3) {
+            const glm::mat3 scale(glm::vec3(out.values[v], 0, 0), glm::vec3(0, out.values[v + 1], 0),
+                                  glm::vec3(0, 0, out.values[v + 2]));
+            if (Status checked = checkTransformScale(scale, mPath, at + " key " + std::to_string(v / (cubic ? 9 : 3)));
+                !checked)
+                return checked.error();
+        }
+    }
     return out;
 }
 

@@ -39,6 +39,13 @@ inline constexpr float kWeightSumTolerance = 2e-2f;
 // as; sizes and finiteness checked.
 Result<NodeTransform> readNodeTransform(const tinygltf::Node& node, int index, const std::string& path);
 
+// The scene's limit on a character's scale holds whatever the source: each
+// axis of a composed node, joint or inverse-bind transform (its 3x3 columns'
+// lengths) must lie in [kMinMetresPerMeshUnit, kMaxMetresPerMeshUnit], as
+// must an animated scale; exactly 0 (how exporters hide a part) is allowed.
+// `where` names the node ("node 3 'Armature'").
+Status checkTransformScale(const glm::mat3& linear, const std::string& path, const std::string& where);
+
 class GltfRigBuilder {
 public:
     GltfRigBuilder(const tinygltf::Model& gltf, const GltfAccessors& accessors, std::string path)

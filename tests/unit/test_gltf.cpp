@@ -1152,3 +1152,43 @@ TEST_F(GltfTest, Ktx2TexturesAreSkippedWithOneWarningAndFallbacksUsed) {
         << err;
     EXPECT_EQ(err.find("texture 1 is KTX2"), std::string::npos) << err;
 }
+
+// The scene's scale limit holds through every glTF door (core/Limits.h,
+// checkTransformScale): a node's composed scale, a joint's, an inverse bind
+// matrix and an animated scale. 1e30 once rendered half a plane.
+TEST_F(GltfTest, ScalesOutsideTheCharacterLimitAreRefusedWhateverTheirSource) {
+    GltfBuilder node = quadBuilder(kUnsignedShort);
+    node.doc["nodes"][0]["scale"] = {1e30, 1.0, 1.0};
+    node.writeGltf(path("node.gltf"));
+    expectError(path("node.gltf"), "node 0: its composed scale 1e+30 (axis x) is outside [1e-06, 1e+06]");
+
+    // Each factor alone is allowed; their product is not.
+    GltfBuilder composed = quadBuilder(kUnsignedShort);
+    composed.doc["nodes"][0]["scale"] = {1.0, 1e4, 1.0};
+    composed.doc["nodes"].push_back({{"name", "parent"}, {"scale", {1.0, 1e4, 1.0}}, {"children", {0}}});
+    composed.doc["scenes"][0]["nodes"] = {1};
+    composed.writeGltf(path("composed.gltf"));
+    expectError(path("composed.gltf"), "node 0: its composed scale 1e+08 (axis y)");
+
+    GltfBuilder inverseBind = skinnedQuad(kQuadJoints, kQuadWeights);
+    const std::vector<float> huge = {1e30f, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                                     1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1};
+    inverseBind.doc["skins"][0]["inverseBindMatrices"] = inverseBind.accessor(huge, kFloat, "MAT4", 2);
+    inverseBind.writeGltf(path("bind.gltf"));
+    expectError(path("bind.gltf"), "skin 0 inverse bind matrix 0: its composed scale 1e+30");
+
+    GltfBuilder animated = skinnedQuad(kQuadJoints, kQuadWeights);
+    const int times = animated.accessor(std::vector<float>{0.0f, 1.0f}, kFloat, "SCALAR", 2);
+    const int scales = animated.vec3({1, 1, 1, 1, 1e-9f, 1});
+    animated.doc["animations"] = {{{"name", "shrink"},
+                                   {"samplers", {{{"input", times}, {"output", scales}, {"interpolation", "LINEAR"}}}},
+                                   {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "scale"}}}}}}}};
+    animated.writeGltf(path("animated.gltf"));
+    expectError(path("animated.gltf"), "key 1: its composed scale 1e-09 (axis y)");
+
+    // Exactly 0 is how exporters hide a part: it loads.
+    GltfBuilder hidden = quadBuilder(kUnsignedShort);
+    hidden.doc["nodes"][0]["scale"] = {0.0, 0.0, 0.0};
+    hidden.writeGltf(path("hidden.gltf"));
+    EXPECT_TRUE(loadGltf(path("hidden.gltf").string()));
+}
