@@ -85,8 +85,10 @@ constexpr int kMinTsSize = 64;
 constexpr int kMaxTsSize = 4096;
 
 // Array lengths a scene file may have; the renderer uses at most
-// DERMIS_MAX_LIGHTS lights and DERMIS_MAX_CHARACTERS characters of them.
+// DERMIS_MAX_LIGHTS lights of them. Characters: as many as the G-buffer's
+// 8-bit object ids tell apart (DERMIS_MAX_CHARACTERS, static_asserted in
+// frame/Renderer.cpp), so that the file is refused where it says so.
 constexpr int kMaxSceneLights = 1024;
-constexpr int kMaxSceneCharacters = 1024;
+constexpr int kMaxSceneCharacters = 255;
 
 }  // namespace dermis

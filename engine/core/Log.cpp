@@ -27,8 +27,16 @@ void warn(const std::string& message) {
 }
 
 void error(const std::string& message) {
+    // One line, whatever a path in it holds: control characters are written as escapes.
+    std::string line;
+    for (const char c : message) {
+        if (c == '\n') line += "\\n";
+        else if (c == '\r') line += "\\r";
+        else if (c == '\t') line += "\\t";
+        else line += c;
+    }
     std::lock_guard<std::mutex> lock(gMutex);
-    std::fprintf(stderr, "error: %s\n", message.c_str());
+    std::fprintf(stderr, "error: %s\n", line.c_str());
 }
 
 Progress::Progress(std::string label, size_t total)

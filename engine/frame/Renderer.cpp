@@ -1,5 +1,7 @@
 #include "frame/Renderer.h"
 
+#include "core/Limits.h"
+
 #include "core/Log.h"
 #include "frame/FrameDeclaration.h"
 #include "frame/IrradianceCapture.h"
@@ -15,6 +17,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene) {
 }
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, std::shared_ptr<Programs> programs) {
+    static_assert(kMaxSceneCharacters == DERMIS_MAX_CHARACTERS, "the scene file's limit is the renderer's");
     if (scene.characters.size() > DERMIS_MAX_CHARACTERS) {
         return makeError(scene.path, std::to_string(scene.characters.size()) + " characters; the G-buffer's object ids allow " +
                                          std::to_string(DERMIS_MAX_CHARACTERS));

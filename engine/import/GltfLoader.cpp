@@ -95,11 +95,15 @@ std::string quoted(const std::string& name) { return name.empty() ? std::string(
 
 Result<std::vector<unsigned char>> readWholeFile(const std::string& path) {
     std::error_code error;
-    if (!fs::exists(path, error)) return makeError(path, "file not found");
-    if (!fs::is_regular_file(path, error)) return makeError(path, "not a regular file");
+    const fs::file_status status = fs::status(path, error);
+    // A symlink loop is not a missing file: say what the system says.
+    if (error && error != std::errc::no_such_file_or_directory) return makeError(path, "cannot open: " + error.message());
+    if (!fs::exists(status)) return makeError(path, "file not found");
+    if (!fs::is_regular_file(status)) return makeError(path, "not a regular file");
     uintmax_t size = fs::file_size(path, error);
     if (error) return makeError(path, "cannot read size: " + error.message());
     if (size > kMaxFileBytes) return makeError(path, "file is larger than 2 GiB");
+    if (size == 0) return makeError(path, "the file is empty (0 bytes)");
     std::ifstream in(path, std::ios::binary);
     if (!in) return makeError(path, "cannot open file");
     std::vector<unsigned char> bytes(static_cast<size_t>(size));

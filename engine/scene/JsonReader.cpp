@@ -333,7 +333,13 @@ bool JsonObject::readFloat(const json& value, const std::string& where, const Ra
         return false;
     }
     // Range-check the float that is stored, not the double that was written.
-    const auto f = static_cast<float>(x);
+    // A value the range holds whose float rounds past a bound (1e20 is not a
+    // float) is stored as the float next to it inside the range.
+    auto f = static_cast<float>(x);
+    if (range.contains(x) && !range.contains(double(f))) {
+        const float inward = std::nextafter(f, x > 0.0 ? 0.0f : (x < 0.0 ? 0.0f : f));
+        if (range.contains(double(inward))) f = inward;
+    }
     if (!range.contains(double(f))) {
         // A bound such as 1e20 is not a float: say why its own value is refused.
         char stored[48];

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -262,7 +264,13 @@ void readBurleyProfile(JsonObject& object, const std::string& name, std::vector<
     burley.vec3("mean_free_path_mm", meanFreePathMm, Range::above(0.0));
     if (context.failed()) return;
     auto profile = fitBurleyGaussians({albedo, meanFreePathMm}, kBurleySceneGaussians, name);
-    if (!context.check(profile.ok(), object.pointer("burley"), profile.ok() ? "" : profile.error().what)) return;
+    if (!profile.ok()) {
+        char values[160];
+        std::snprintf(values, sizeof values, "albedo [%g, %g, %g], mean_free_path_mm [%g, %g, %g]: ", albedo.r, albedo.g,
+                      albedo.b, meanFreePathMm.r, meanFreePathMm.g, meanFreePathMm.b);
+        context.fail(object.pointer("burley"), values + profile.error().what);
+        return;
+    }
     out.push_back(std::move(*profile));
 }
 
@@ -590,7 +598,9 @@ Result<Scene> loadScene(const std::string& path, const std::vector<std::string>&
     }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        return makeError(path, "cannot open scene file");
+        // Say why: "file not found" for a symlink loop sent users looking for a missing file.
+        const std::string reason = std::strerror(errno);
+        return makeError(path, "cannot open scene file: " + reason);
     }
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > kMaxJsonTextBytes) {

@@ -578,7 +578,7 @@ TEST(SceneLoader, MissingFileNamesTheFile) {
     const Result<Scene> scene = loadScene(path);
     ASSERT_FALSE(scene.ok());
     EXPECT_EQ(scene.error().where, path);
-    EXPECT_EQ(scene.error().what, "cannot open scene file");
+    EXPECT_EQ(scene.error().what, "cannot open scene file: No such file or directory");
     EXPECT_NE(scene.error().message().find("missing_scene.json"), std::string::npos);
 }
 
@@ -961,7 +961,7 @@ TEST(SceneLoader, MillionEntryArraysAreRefusedByTheirCaps) {
     EXPECT_EQ(errorOf("{\"lights\": " + repeated("{}", kMillion) + "}"),
               "/lights: too many lights (1000000; at most 1024)");
     EXPECT_EQ(errorOf("{\"characters\": " + repeated("{}", kMillion) + "}"),
-              "/characters: too many characters (1000000; at most 1024)");
+              "/characters: too many characters (1000000; at most 255)");
     EXPECT_EQ(errorOf("{\"camera\": {\"up\": " + repeated("0", kMillion) + "}}"),
               "/camera/up: expected an array of 3 numbers, got 1000000 elements");
 
@@ -1092,11 +1092,13 @@ TEST(SceneLoader, BurleyProfileIsFittedWithGaussians) {
               "/profiles/soft: give \"gaussians\" or \"burley\", not both");
 }
 
-// The stored float is range-checked: a bound that is not a float (1e20 rounds
-// up to 1.00000002e20) refuses its own value, and the message says why.
-TEST(SceneLoader, BoundThatIsNotAFloatSaysWhyItIsRefused) {
-    EXPECT_EQ(errorOf(R"({"background": {"colour": [1e20, 0, 0]}})"),
-              "/background/colour/0: must be in [0, 1e+20], got 1e+20 (1.00000002e+20 as a 32-bit float)");
+// The stored float is range-checked. A bound that is not a float (1e20 rounds
+// up to 1.00000002e20) is accepted as written, stored as the float next to it
+// inside the range; past the bound the value is refused.
+TEST(SceneLoader, BoundThatIsNotAFloatIsAcceptedAsWritten) {
+    auto scene = parseScene(R"({"background": {"colour": [1e20, 0, 0]}})", "x.json");
+    ASSERT_TRUE(scene) << scene.error().message();
+    EXPECT_LE(double(scene->background.colour.r), 1e20);
     EXPECT_EQ(errorOf(R"({"background": {"colour": [2e20, 0, 0]}})"),
               "/background/colour/0: must be in [0, 1e+20], got 2e+20");
 }
@@ -1121,3 +1123,19 @@ TEST(SceneLoader, BadEnvironmentsNameTheKey) {
 
 }  // namespace
 }  // namespace dermis
+
+// A documented bound is accepted as written (1e20 is not a float: it is
+// stored as the float next to it inside the range), and the characters a
+// file may list are those the renderer tells apart.
+TEST(SceneLoader, DocumentedBoundsAreAcceptedAndTheCharacterCapIsTheRenderers) {
+    auto bound = dermis::parseScene(R"({"environment": {"source": "sky", "intensity": 1e20}})", "b.json");
+    ASSERT_TRUE(bound) << bound.error().message();
+    EXPECT_LE(double(bound->environment.intensity), 1e20);
+    EXPECT_GT(double(bound->environment.intensity), 0.99e20);
+    std::string many = R"({"characters": [)";
+    for (int i = 0; i < 256; ++i) many += std::string(i ? "," : "") + R"({"name": "c", "mesh": {"procedural": "plane"}})";
+    many += "]}";
+    auto tooMany = dermis::parseScene(many, "m.json");
+    ASSERT_FALSE(tooMany);
+    EXPECT_NE(tooMany.error().message().find("255"), std::string::npos) << tooMany.error().message();
+}

@@ -287,7 +287,7 @@ TEST(SceneOverrides, LoadSceneAppliesOverridesToTheFile) {
 
     const Result<Scene> missing = loadScene("/nonexistent/dermis/scene.json", {"sss.taps=13"});
     ASSERT_FALSE(missing.ok());
-    EXPECT_EQ(missing.error().what, "cannot open scene file");
+    EXPECT_EQ(missing.error().what, "cannot open scene file: No such file or directory");
 }
 
 TEST(SceneOverrides, OverriddenScenesRoundTrip) {

@@ -54,8 +54,11 @@ Result<int> parsePositiveInt(const std::string& option, const std::string& text)
     errno = 0;
     char* end = nullptr;
     const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0 || value <= 0 || value > 1000000) {
+    if (text.empty() || *end != '\0' || (errno != 0 && errno != ERANGE) || value <= 0) {
         return makeError(option, "expected a positive integer, got '" + text + "'");
+    }
+    if (errno == ERANGE || value > kMaxCountOption) {
+        return makeError(option, "at most " + std::to_string(kMaxCountOption) + ", got '" + text + "'");
     }
     return static_cast<int>(value);
 }

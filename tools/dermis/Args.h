@@ -35,6 +35,9 @@ std::string expectedNames(const EnumTable<E, N>& table) {
     return listForMessage(table.names(), "or");
 }
 
+// The largest count an option takes (--frames, --cases, --spp, ...): a million.
+inline constexpr long kMaxCountOption = 1000000;
+
 Result<int> parsePositiveInt(const std::string& option, const std::string& text);
 // A finite number in (0, 10000].
 Result<float> parsePositiveFloat(const std::string& option, const std::string& text);

@@ -72,7 +72,9 @@ int runBakeLean(const std::vector<std::string>& rawArgs) {
     int sanitised = 0;
     auto normalMap = loadImage(input, ColourSpace::Linear, &sanitised);
     if (!normalMap.ok()) return failure(normalMap.error());
-    if (sanitised > 0) log::warn(input + ": " + std::to_string(sanitised) + " non-finite texels read as 0");
+    // A normal map's NaN would bake into every mip level above it: refused, as an environment map's is.
+    if (sanitised > 0)
+        return failure(makeError(input, std::to_string(sanitised) + " texels are not finite (NaN or infinite); a normal map must be"));
 
     auto maps = bakeLeanMaps(*normalMap, *roughness);
     if (!maps.ok()) return failure(maps.error());
