@@ -11,6 +11,7 @@
 using dermis::test::ProcessResult;
 using dermis::test::runProcess;
 using dermis::test::TempDir;
+using dermis::test::namesIn;
 namespace fs = std::filesystem;
 
 namespace {
@@ -18,12 +19,6 @@ namespace {
 const std::string kDermis = DERMIS_BINARY;
 const std::string kScene = dermis::test::contentScene("default.json");
 
-std::vector<std::string> namesIn(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "TestSupport.h"
 
+#include <algorithm>
+
 #include "core/ImageResample.h"
 #include "env/SphericalHarmonics.h"
 
@@ -64,6 +66,13 @@ Image latLongImage(int width, int height, const std::function<glm::vec3(const gl
     for (int v = 0; v < height; ++v)
         for (int u = 0; u < width; ++u) map.at(u, v) = glm::vec4(radiance(latLongDirection(u, v, width, height)), 1.0f);
     return map;
+}
+
+std::vector<std::string> namesIn(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 }  // namespace dermis::test

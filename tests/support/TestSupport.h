@@ -6,6 +6,8 @@
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 #include <functional>
 #include <string>
 
@@ -36,6 +38,8 @@ ProcessResult runProcess(const std::string& command);
 
 void writeTextFile(const std::string& path, const std::string& text);
 std::string readTextFile(const std::string& path);
+// Every name in `dir`, hidden ones included, sorted.
+std::vector<std::string> namesIn(const std::filesystem::path& dir);
 
 std::string contentDir();  // the project's content/
 std::string contentScene(const std::string& name);  // content/scenes/<name>

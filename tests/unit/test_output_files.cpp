@@ -11,19 +11,8 @@
 #include <filesystem>
 
 using namespace dermis;
+using dermis::test::namesIn;
 namespace fs = std::filesystem;
-
-namespace {
-
-// Every name in `dir`, hidden ones included, sorted.
-std::vector<std::string> namesIn(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-}  // namespace
 
 TEST(OutputFiles, NothingReachesADestinationBeforeTheCommit) {
     test::TempDir dir;
