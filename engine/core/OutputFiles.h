@@ -40,7 +40,6 @@ public:
     Status prepareDirectory(const std::string& path);
     // Moves every staged file into place, or none. Errors name the path.
     Status commit();
-    size_t staged() const { return mStaged.size(); }
 
 private:
     // The temporary of `path`: hidden, beside it, with its extension (which

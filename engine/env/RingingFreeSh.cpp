@@ -32,12 +32,13 @@ SplitSh projectLatLongSplit(const Image& map) {
     return out;
 }
 
-Sh9 projectLatLongWithoutRinging(const Image& map) {
-    const SplitSh split = projectLatLongSplit(map);
+Sh9 SplitSh::total() const {
     Sh9 out;
     for (int i = 0; i < kShCoefficients; ++i)
-        out.coefficients[size_t(i)] = split.smooth.coefficients[size_t(i)] + split.hot.coefficients[size_t(i)];
+        out.coefficients[size_t(i)] = smooth.coefficients[size_t(i)] + hot.coefficients[size_t(i)];
     return out;
 }
+
+Sh9 projectLatLongWithoutRinging(const Image& map) { return projectLatLongSplit(map).total(); }
 
 }  // namespace dermis

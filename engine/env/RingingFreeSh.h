@@ -44,6 +44,7 @@ inline constexpr double kShUnwindowedPowerFraction = 1.0 / 1024.0;
 struct SplitSh {
     Sh9 smooth;
     Sh9 hot;
+    Sh9 total() const;  // smooth + hot
 };
 SplitSh projectLatLongSplit(const Image& map);
 

@@ -33,7 +33,7 @@ struct ModelMaterial {
     // whether the material scatters.
     std::string alphaMode = "OPAQUE";     // "OPAQUE", "MASK" or "BLEND"
     float diffuseTransmission = -1.0f;    // KHR_materials_diffuse_transmission's factor; < 0: the file has none
-    Image diffuseTransmissionMap;         // its texture's A, moved to R (linear)
+    Image diffuseTransmissionMap;         // its texture's A, moved to R (linear); decideScattering moves it to scatterMap
     float transmission = 0.0f;            // KHR_materials_transmission's factor (glass)
     float thicknessFactor = 0.0f;         // KHR_materials_volume, in the mesh's units; 0: none
     Image thicknessMap;                   // its texture's G, moved to R (linear)

@@ -56,9 +56,8 @@ std::shared_ptr<const EnvironmentLight> splitEnvironmentLight(std::string source
     }
     light->map = std::move(map);
     const SplitSh split = projectLatLongSplit(light->lit());
-    for (int i = 0; i < kShCoefficients; ++i)
-        light->mapSh.coefficients[size_t(i)] = split.smooth.coefficients[size_t(i)] + split.hot.coefficients[size_t(i)];
-    light->mapHotSh = split.hot;
+    light->mapSh = split.total();
+    light->mapSmoothSh = split.smooth;
     return light;
 }
 
@@ -92,12 +91,16 @@ EnvironmentPlan planEnvironment(const Environment& environment, std::shared_ptr<
     if (!environment.enabled() || !light) return plan;
     plan.light = std::move(light);
     plan.worldFromMap = environment.worldFromMap(timeS);
-    Sh9 world = rotateSh(keepShBands(plan.light->mapSh, environment.shBands), plan.worldFromMap);
-    for (glm::vec3& c : world.coefficients) c *= environment.intensity;
-    plan.worldSh = world;
-    Sh9 hot = rotateSh(keepShBands(plan.light->mapHotSh, environment.shBands), plan.worldFromMap);
-    for (glm::vec3& c : hot.coefficients) c *= environment.intensity;
-    plan.worldHotSh = hot;
+    // Map space to world space, times the intensity, with the scene's bands.
+    auto toWorld = [&](const Sh9& mapSpace) {
+        Sh9 world = rotateSh(keepShBands(mapSpace, environment.shBands), plan.worldFromMap);
+        for (glm::vec3& c : world.coefficients) c *= environment.intensity;
+        return world;
+    };
+    plan.worldSh = toWorld(plan.light->mapSh);
+    const Sh9 smooth = toWorld(plan.light->mapSmoothSh);
+    for (int i = 0; i < kShCoefficients; ++i)
+        plan.worldHotSh.coefficients[size_t(i)] = plan.worldSh.coefficients[size_t(i)] - smooth.coefficients[size_t(i)];
     for (const ExtractedLight& extracted : plan.light->extracted)
         plan.lights.push_back(worldLight(extracted, plan.worldFromMap, environment.intensity));
     plan.transfer = environment.occlusion == EnvironmentOcclusion::Transfer;
@@ -108,9 +111,6 @@ EnvironmentPlan planEnvironment(const Environment& environment, std::shared_ptr<
         const glm::mat3 linear(m);
         const glm::mat3 rotation(glm::normalize(linear[0]), glm::normalize(linear[1]), glm::normalize(linear[2]));
         // The transfer takes the smooth part; the hot part is lit at the normal (worldHotSh).
-        Sh9 smooth;
-        for (int i = 0; i < kShCoefficients; ++i)
-            smooth.coefficients[size_t(i)] = world.coefficients[size_t(i)] - hot.coefficients[size_t(i)];
         plan.objectSh.push_back(rotateSh(smooth, glm::transpose(rotation)));
     }
     return plan;

@@ -32,7 +32,7 @@ struct EnvironmentLight {
     std::vector<ExtractedLight> extracted;    // empty: nothing was taken out
     Image remainder;                          // the map without them; empty when nothing was taken out
     Sh9 mapSh;                                // projectLatLongWithoutRinging(lit()): smooth + hot
-    Sh9 mapHotSh;                             // its hot part alone (env/RingingFreeSh.h)
+    Sh9 mapSmoothSh;                          // its smooth part alone (env/RingingFreeSh.h)
 
     // What the diffuse and specular environment light is made from.
     const Image& lit() const { return extracted.empty() ? map : remainder; }
@@ -57,7 +57,7 @@ struct EnvironmentPlan {
     glm::mat3 worldFromMap{1.0f};
     Sh9 worldSh;                 // radiance x intensity, world space, 0 past the scene's sh_bands
     Sh9 worldHotSh;              // worldSh's hot part (env/RingingFreeSh.h), lit at the normal under `transfer`
-    std::vector<Sh9> objectSh;   // per character: worldSh - worldHotSh in its object space; empty unless `transfer`
+    std::vector<Sh9> objectSh;   // per character: the smooth part (worldSh - worldHotSh) in its object space; empty unless `transfer`
     std::vector<Light> lights;   // the extracted lights in world space, appended to the frame's lights
     bool transfer = false;       // occlusion "transfer": the vertices carry SH transfer, the G-buffer its L.T
     bool skybox = false;         // the skybox pass draws the map behind everything
