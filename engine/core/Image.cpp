@@ -22,6 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr size_t kMaxErrorLength = 300;
+constexpr int kDecodeBandRows = 64;
 
 static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "texels are written to OpenImageIO as packed floats");
 
@@ -86,29 +87,43 @@ Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSp
     if (spec.depth > 1) return makeError(where, "volume images are not supported");
     if (spec.nchannels <= 0) return makeError(where, "image has no channels");
 
-    const int channels = std::min(spec.nchannels, 4);
     const size_t texelCount = static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height);
-    std::vector<float> raw(texelCount * static_cast<size_t>(channels));
-    // Integer formats are rescaled to [0,1]; no colour conversion happens here.
-    if (!input.read_image(0, 0, 0, channels, OIIO::TypeFloat, raw.data()))
-        return makeError(where, condense(input.geterror(), "could not read the image data"));
-    if (input.has_error()) return makeError(where, condense(input.geterror(), "could not read the image data"));
+    if (texelCount > kMaxImageTexels)
+        return makeError(where, "image " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " has " +
+                                    std::to_string(texelCount) + " texels, above the budget of " +
+                                    std::to_string(kMaxImageTexels) + " (8192x8192, 1 GiB as float RGBA); scale it "
+                                    "down first, e.g. oiiotool IN --resize 50% -o OUT");
 
-    const bool greyAlpha = channels == 2 && (spec.alpha_channel == 1 || spec.nchannels == 2);
+    const int channels = std::min(spec.nchannels, 4);
     Image image;
     image.width = spec.width;
     image.height = spec.height;
     image.colourSpace = colourSpace;
+    image.sourceBitsPerChannel = static_cast<int>(spec.format.size()) * 8;
     image.texels.resize(texelCount);
+    // Read straight into the RGBA texels (a texel stride of 16 bytes), in bands
+    // of rows, and widen in place: OpenImageIO converts through a temporary as
+    // large as the request, so a whole-image read would hold a second
+    // full-size float copy. Integer formats are rescaled to [0,1]; no colour
+    // conversion happens here.
+    const OIIO::stride_t texelStride = sizeof(glm::vec4);
+    for (int row = 0; row < spec.height; row += kDecodeBandRows) {
+        const int end = std::min(spec.height, row + kDecodeBandRows);
+        glm::vec4* band = &image.texels[static_cast<size_t>(row) * static_cast<size_t>(spec.width)];
+        if (!input.read_scanlines(0, 0, spec.y + row, spec.y + end, spec.z, 0, channels, OIIO::TypeFloat, band,
+                                  texelStride))
+            return makeError(where, condense(input.geterror(), "could not read the image data"));
+    }
+    if (input.has_error()) return makeError(where, condense(input.geterror(), "could not read the image data"));
+
+    const bool greyAlpha = channels == 2 && (spec.alpha_channel == 1 || spec.nchannels == 2);
     int sanitised = 0;
-    for (size_t i = 0; i < texelCount; ++i) {
-        const float* s = &raw[i * static_cast<size_t>(channels)];
-        glm::vec4 texel;
+    for (glm::vec4& texel : image.texels) {
+        const glm::vec4 s = texel;
         if (channels == 1) texel = glm::vec4(s[0], s[0], s[0], 1.0f);
         else if (greyAlpha) texel = glm::vec4(s[0], s[0], s[0], s[1]);
         else if (channels == 2) texel = glm::vec4(s[0], s[1], 0.0f, 1.0f);
         else if (channels == 3) texel = glm::vec4(s[0], s[1], s[2], 1.0f);
-        else texel = glm::vec4(s[0], s[1], s[2], s[3]);
         bool replaced = false;
         for (int c = 0; c < 4; ++c) {
             if (!std::isfinite(texel[c])) {
@@ -117,7 +132,6 @@ Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSp
             }
         }
         sanitised += replaced ? 1 : 0;
-        image.texels[i] = texel;
     }
     if (sanitisedTexels) *sanitisedTexels = sanitised;
     return image;

@@ -21,6 +21,7 @@ struct Image {
     int width = 0;
     int height = 0;
     ColourSpace colourSpace = ColourSpace::Linear;
+    int sourceBitsPerChannel = 32;  // of the file it came from: 8-bit data needs only an 8-bit texture
     std::vector<glm::vec4> texels;  // row-major, row 0 is the image's top row
 
     bool empty() const { return texels.empty(); }
@@ -33,6 +34,11 @@ struct Image {
 // Largest width or height any loaded image may have; larger ones are refused
 // with an error rather than risking an enormous allocation.
 constexpr int kMaxImageDimension = 16384;
+// The memory budget of one loaded image: texels are float RGBA (16 bytes), so
+// 8192 x 8192 texels are 1 GiB on the CPU. A larger image (a 16384^2 map,
+// 4 GiB decoded) is refused before anything is decoded, with a line naming the
+// file and this budget; docs/testing.md "Memory" has the measured peaks.
+constexpr size_t kMaxImageTexels = size_t{8192} * 8192;
 
 // Loads any format OpenImageIO reads. Grey and RGB images are expanded to RGBA
 // (alpha 1). Non-finite texels (NaN, Inf) are replaced by 0 and counted in

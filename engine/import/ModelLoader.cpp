@@ -10,23 +10,31 @@
 namespace dermis {
 namespace {
 
-// Loads each image file once, however many materials name it.
+// Loads each image file once, however many materials name it: the first
+// material that names it receives the decoded image, later ones a copy of
+// that material's. No cache holds a further copy, so the peak is the images
+// the model keeps (a map can be 1 GiB decoded, core/Image.h kMaxImageTexels).
 class MapFiles {
 public:
     Status load(const std::string& path, ColourSpace colourSpace, Image& out) {
         if (path.empty()) return success();
-        auto cached = mImages.find({path, colourSpace});
-        if (cached == mImages.end()) {
-            auto image = loadImage(path, colourSpace);
-            if (!image.ok()) return image.error();
-            cached = mImages.emplace(std::make_pair(path, colourSpace), std::move(*image)).first;
+        auto first = mFirstHolder.find({path, colourSpace});
+        // The first holder may have dropped it since (use_normal_map false).
+        if (first != mFirstHolder.end() && !first->second->empty()) {
+            out = *first->second;
+            return success();
         }
-        out = cached->second;
+        auto image = loadImage(path, colourSpace);
+        if (!image.ok()) return image.error();
+        out = std::move(*image);
+        mFirstHolder[{path, colourSpace}] = &out;
         return success();
     }
 
 private:
-    std::map<std::pair<std::string, ColourSpace>, Image> mImages;
+    // Each image lives in a material of the model being loaded, whose
+    // material list does not change size while the maps are loaded.
+    std::map<std::pair<std::string, ColourSpace>, const Image*> mFirstHolder;
 };
 
 }  // namespace

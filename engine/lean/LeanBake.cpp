@@ -123,7 +123,7 @@ Image leanDownsample(const Image& level) {
     return transpose(shrinkRows(transpose(shrinkRows(level, width)), height));
 }
 
-Result<LeanMaps> bakeLeanMaps(const Image& normalMap, float baseRoughness) {
+Status bakeLeanLevels(const Image& normalMap, float baseRoughness, const LeanLevelSink& onLevel) {
     if (normalMap.empty() || normalMap.width <= 0 || normalMap.height <= 0 ||
         normalMap.texels.size() != static_cast<size_t>(normalMap.width) * static_cast<size_t>(normalMap.height)) {
         return makeError("LEAN bake", "the normal map is empty");
@@ -132,27 +132,84 @@ Result<LeanMaps> bakeLeanMaps(const Image& normalMap, float baseRoughness) {
         return makeError("LEAN bake", "base roughness must be a Beckmann m in [0, 1]");
     }
     const float baseVariance = 0.5f * baseRoughness * baseRoughness;
+    // Level 0's rows [first, first + count) as two images.
+    auto momentRows = [&](int first, int count, Image& lean1, Image& lean2) {
+        lean1.width = lean2.width = normalMap.width;
+        lean1.height = lean2.height = count;
+        lean1.colourSpace = lean2.colourSpace = ColourSpace::Linear;
+        const size_t begin = static_cast<size_t>(first) * static_cast<size_t>(normalMap.width);
+        const size_t size = static_cast<size_t>(count) * static_cast<size_t>(normalMap.width);
+        lean1.texels.resize(size);
+        lean2.texels.resize(size);
+        for (size_t i = 0; i < size; ++i) {
+            const glm::vec2 b = bumpCentre(glm::vec3(normalMap.texels[begin + i]));
+            lean1.texels[i] = glm::vec4(b.x, b.y, b.x * b.x, b.y * b.y);
+            lean2.texels[i] = glm::vec4(b.x * b.y, baseVariance, 0.0f, 1.0f);
+        }
+    };
 
-    LeanMaps maps;
+    Image band1;
+    Image band2;
+    for (int first = 0; first < normalMap.height; first += kLeanBandRows) {
+        momentRows(first, std::min(kLeanBandRows, normalMap.height - first), band1, band2);
+        onLevel(0, first, band1, band2);
+    }
+    const int levels = leanMipLevelCount(normalMap.width, normalMap.height);
+    if (levels == 1) return success();
+
+    // Level 1 as leanDownsample makes it (rows shrunk, then columns, the same
+    // weights in the same order), one destination row at a time.
+    const int width = std::max(1, normalMap.width / 2);
+    const int height = std::max(1, normalMap.height / 2);
     Image lean1;
     Image lean2;
-    lean1.width = lean2.width = normalMap.width;
-    lean1.height = lean2.height = normalMap.height;
+    lean1.width = lean2.width = width;
+    lean1.height = lean2.height = height;
     lean1.colourSpace = lean2.colourSpace = ColourSpace::Linear;
-    lean1.texels.resize(normalMap.texels.size());
-    lean2.texels.resize(normalMap.texels.size());
-    for (size_t i = 0; i < normalMap.texels.size(); ++i) {
-        const glm::vec2 b = bumpCentre(glm::vec3(normalMap.texels[i]));
-        lean1.texels[i] = glm::vec4(b.x, b.y, b.x * b.x, b.y * b.y);
-        lean2.texels[i] = glm::vec4(b.x * b.y, baseVariance, 0.0f, 1.0f);
+    lean1.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height), glm::vec4(0.0f));
+    lean2.texels.assign(lean1.texels.size(), glm::vec4(0.0f));
+    Image row1;
+    Image row2;
+    for (int y = 0; y < height; ++y) {
+        int first = 0;
+        const std::vector<float> weights = footprintWeights(y, normalMap.height, height, first);
+        for (size_t k = 0; k < weights.size(); ++k) {
+            momentRows(first + static_cast<int>(k), 1, row1, row2);
+            const Image shrunk1 = shrinkRows(row1, width);
+            const Image shrunk2 = shrinkRows(row2, width);
+            for (int x = 0; x < width; ++x) {
+                lean1.at(x, y) += weights[k] * shrunk1.at(x, 0);
+                lean2.at(x, y) += weights[k] * shrunk2.at(x, 0);
+            }
+        }
     }
-    maps.lean1.push_back(std::move(lean1));
-    maps.lean2.push_back(std::move(lean2));
-    const int levels = leanMipLevelCount(normalMap.width, normalMap.height);
     for (int level = 1; level < levels; ++level) {
-        maps.lean1.push_back(leanDownsample(maps.lean1.back()));
-        maps.lean2.push_back(leanDownsample(maps.lean2.back()));
+        onLevel(level, 0, lean1, lean2);
+        if (level + 1 < levels) {
+            lean1 = leanDownsample(lean1);
+            lean2 = leanDownsample(lean2);
+        }
     }
+    return success();
+}
+
+Result<LeanMaps> bakeLeanMaps(const Image& normalMap, float baseRoughness) {
+    LeanMaps maps;
+    const Status baked =
+        bakeLeanLevels(normalMap, baseRoughness, [&](int level, int firstRow, const Image& lean1, const Image& lean2) {
+            if (firstRow == 0) {
+                maps.lean1.push_back(lean1);
+                maps.lean2.push_back(lean2);
+                return;
+            }
+            Image& whole1 = maps.lean1[static_cast<size_t>(level)];
+            Image& whole2 = maps.lean2[static_cast<size_t>(level)];
+            whole1.texels.insert(whole1.texels.end(), lean1.texels.begin(), lean1.texels.end());
+            whole2.texels.insert(whole2.texels.end(), lean2.texels.begin(), lean2.texels.end());
+            whole1.height += lean1.height;
+            whole2.height += lean2.height;
+        });
+    if (!baked.ok()) return baked.error();
     return maps;
 }
 

@@ -25,6 +25,7 @@
 #include "core/Image.h"
 #include "core/Result.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,17 @@ Image leanDownsample(const Image& level);
 // Bakes both maps with the full chain. `baseRoughness` is a Beckmann m in
 // [0, 1]. Errors for an empty image or a roughness out of range.
 Result<LeanMaps> bakeLeanMaps(const Image& normalMap, float baseRoughness = 0.0f);
+
+// The same levels, handed to `onLevel` in pieces and not kept, for the GPU
+// upload (the memory budget, docs/testing.md "Memory"): level 0 in
+// bands of at most kLeanBandRows rows starting at `firstRow`, level 1 made row
+// by row from the normal map, and each later level whole (firstRow 0) from the
+// one before. So no full-size float copy of level 0 is ever held: the peak is
+// a quarter-size level instead of two full-size ones. The levels equal
+// bakeLeanMaps's bit for bit.
+constexpr int kLeanBandRows = 64;
+using LeanLevelSink = std::function<void(int level, int firstRow, const Image& lean1, const Image& lean2)>;
+Status bakeLeanLevels(const Image& normalMap, float baseRoughness, const LeanLevelSink& onLevel);
 
 // Writes PREFIX_lean1.exr and PREFIX_lean2.exr, 32-bit float, every mip level
 // as an OpenEXR mip-map (read back with loadMipChain).

@@ -113,6 +113,33 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
     return gpu;
 }
 
+// Trilinear filtering and wrapping, as glTF samplers default to.
+gl::Texture createMipmappedTexture(GLsizei levels, GLenum internalFormat, int width, int height) {
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.get(), levels, internalFormat, width, height);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
+// Images are stored top row first; GL's first row is the bottom one, and glTF
+// UVs have v = 0 at the top, so uploading top-first makes texture(uv) match
+// glTF's convention directly. In bands of rows: the driver converts the
+// floats to the texture's format through a temporary as large as what it is
+// given (Mesa does), and a band's temporary is small.
+constexpr int kUploadBandRows = 64;
+void uploadLevel(const gl::Texture& texture, int level, const Image& image, int firstRow = 0) {
+    for (int row = 0; row < image.height; row += kUploadBandRows) {
+        const int rows = std::min(kUploadBandRows, image.height - row);
+        glTextureSubImage2D(texture.get(), level, 0, firstRow + row, image.width, rows, GL_RGBA, GL_FLOAT,
+                            &image.texels[static_cast<size_t>(row) * static_cast<size_t>(image.width)]);
+    }
+}
+
+}  // namespace
+
 Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     GpuMaterial gpu;
     gpu.name = material.name;
@@ -130,15 +157,20 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     for (const auto& [image, texture] : maps)
         if (!image->empty()) *texture = uploadImage(*image);
     if (!material.normalMap.empty()) {
-        auto lean = bakeLeanMaps(material.normalMap);
-        if (!lean.ok()) return lean.error();
-        gpu.leanMap1 = uploadMipChain(lean->lean1, GL_RGBA16F);
-        gpu.leanMap2 = uploadMipChain(lean->lean2, GL_RG16F);
+        const Image& normals = material.normalMap;
+        const GLsizei levels = static_cast<GLsizei>(leanMipLevelCount(normals.width, normals.height));
+        gpu.leanMap1 = createMipmappedTexture(levels, GL_RGBA16F, normals.width, normals.height);
+        gpu.leanMap2 = createMipmappedTexture(levels, GL_RG16F, normals.width, normals.height);
+        // Each band and level goes to the GPU as it is made (lean/LeanBake.h).
+        const Status baked =
+            bakeLeanLevels(normals, 0.0f, [&](int level, int firstRow, const Image& lean1, const Image& lean2) {
+                uploadLevel(gpu.leanMap1, level, lean1, firstRow);
+                uploadLevel(gpu.leanMap2, level, lean2, firstRow);
+            });
+        if (!baked.ok()) return baked.error();
     }
     return gpu;
 }
-
-}  // namespace
 
 void GpuSubmesh::draw() const {
     glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT,
@@ -151,34 +183,14 @@ bool GpuCharacter::hasLeanMaps() const {
 
 gl::Texture uploadImage(const Image& image) {
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
-    const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
-    glTextureStorage2D(texture.get(), levels, format, image.width, image.height);
-    // Images are stored top row first; GL's first row is the bottom one, and
-    // glTF UVs have v = 0 at the top, so uploading top-first makes
-    // texture(uv) match glTF's convention directly.
-    glTextureSubImage2D(texture.get(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.texels.data());
+    // Decoded to the format the texture is used in: colour as sRGB 8-bit, data
+    // from an 8-bit file as 8-bit, anything finer as half floats.
+    const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8
+                          : image.sourceBitsPerChannel <= 8    ? GL_RGBA8
+                                                               : GL_RGBA16F;
+    gl::Texture texture = createMipmappedTexture(levels, format, image.width, image.height);
+    uploadLevel(texture, 0, image);
     glGenerateTextureMipmap(texture.get());
-    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    return texture;
-}
-
-gl::Texture uploadMipChain(const std::vector<Image>& levels, GLenum internalFormat) {
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.get(), static_cast<GLsizei>(levels.size()), internalFormat, levels[0].width,
-                       levels[0].height);
-    for (size_t level = 0; level < levels.size(); ++level) {
-        const Image& image = levels[level];
-        glTextureSubImage2D(texture.get(), static_cast<GLint>(level), 0, 0, image.width, image.height, GL_RGBA,
-                            GL_FLOAT, image.texels.data());
-    }
-    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     return texture;
 }
 

@@ -105,11 +105,11 @@ private:
     std::vector<GpuCharacter> mCharacters;
 };
 
-// Uploads with a full mip chain; sRGB images get an sRGB internal format.
-gl::Texture uploadImage(const Image& image);
+// A material's maps, and the LEAN maps baked from its normal map.
+Result<GpuMaterial> uploadMaterial(const ModelMaterial& material);
 
-// Uploads the given mip levels (level 0 first, each half the previous) as
-// they are, with trilinear filtering and wrapping like uploadImage.
-gl::Texture uploadMipChain(const std::vector<Image>& levels, GLenum internalFormat);
+// Uploads with a full mip chain; sRGB images get an sRGB 8-bit format, data
+// from an 8-bit file RGBA8, finer data RGBA16F.
+gl::Texture uploadImage(const Image& image);
 
 }  // namespace dermis

@@ -78,3 +78,23 @@ TEST_F(StressInvariantsRender, ScreenAndTextureSpaceAgreeOnSmoothLighting) {
         EXPECT_EQ(planted->violated, 1u) << "seed " << seed;
     }
 }
+
+// Invariant 5 on the default head: each of addLight's four ways (seeds 0-3)
+// darkens no pixel in either mode, and the planted 0.9 is caught.
+TEST_F(StressInvariantsRender, MoreLightDarkensNoPixelInEitherMode) {
+    for (const char* mode : {"ss", "ts"}) {
+        load("default.json", {std::string("mode=") + mode});
+        const std::vector<Light> lights = mScene->lights;
+        for (uint64_t seed = 0; seed < 4; ++seed) {
+            auto tally = checkMoreLight(*mRenderer, *mScene, seed, 96, 54);
+            ASSERT_TRUE(tally.ok()) << tally.error().message();
+            EXPECT_EQ(tally->checked, 1u);
+            EXPECT_EQ(tally->violated, 0u) << mode << " seed " << seed << ": "
+                                           << (tally->details.empty() ? "" : tally->details[0]);
+            EXPECT_EQ(mScene->lights.size(), lights.size()) << "the scene is restored";
+        }
+        auto planted = checkMoreLight(*mRenderer, *mScene, 0, 96, 54, Plant::MoreLight);
+        ASSERT_TRUE(planted.ok());
+        EXPECT_EQ(planted->violated, 1u) << mode;
+    }
+}

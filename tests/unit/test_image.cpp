@@ -251,6 +251,32 @@ TEST_F(ImageTest, OversizedImageIsRefused) {
     EXPECT_NE(loaded.error().what.find("16385"), std::string::npos) << loaded.error().message();
 }
 
+// The memory budget (core/Image.h kMaxImageTexels): one texel over it is
+// refused from the header alone, with a line naming the file and the budget.
+TEST_F(ImageTest, ImageAboveTheTexelBudgetIsRefusedByName) {
+    const int width = kMaxImageDimension;
+    const int height = static_cast<int>(kMaxImageTexels / static_cast<size_t>(width)) + 1;
+    std::vector<uint8_t> grey(static_cast<size_t>(width) * static_cast<size_t>(height), 90);
+    writeRaw<uint8_t>(path("big.png"), width, height, 1, OIIO::TypeDesc::UINT8, grey);
+    Result<Image> loaded = loadImage(path("big.png"), ColourSpace::Linear);
+    ASSERT_FALSE(loaded);
+    const std::string line = loaded.error().message();
+    EXPECT_NE(line.find("big.png"), std::string::npos) << line;
+    EXPECT_NE(line.find("budget of " + std::to_string(kMaxImageTexels)), std::string::npos) << line;
+    EXPECT_EQ(line.find('\n'), std::string::npos) << line;
+}
+
+// The texture upload picks an 8-bit format for 8-bit files.
+TEST_F(ImageTest, LoadedImagesRecordTheirSourceBitDepth) {
+    writeRaw<uint8_t>(path("a.png"), 2, 1, 1, OIIO::TypeDesc::UINT8, {10, 20});
+    writeRaw<uint16_t>(path("b.png"), 2, 1, 1, OIIO::TypeDesc::UINT16, {1000, 2000});
+    writeRaw<float>(path("c.exr"), 2, 1, 1, OIIO::TypeDesc::FLOAT, {0.5f, 2.0f});
+    EXPECT_EQ(loadImage(path("a.png"), ColourSpace::Linear)->sourceBitsPerChannel, 8);
+    EXPECT_EQ(loadImage(path("b.png"), ColourSpace::Linear)->sourceBitsPerChannel, 16);
+    EXPECT_EQ(loadImage(path("c.exr"), ColourSpace::Linear)->sourceBitsPerChannel, 32);
+    EXPECT_FLOAT_EQ(loadImage(path("a.png"), ColourSpace::Linear)->texels[1].g, 20.0f / 255.0f);
+}
+
 TEST_F(ImageTest, UnsupportedExtensionWritesNothing) {
     Image image = makeGradient(2, 2);
     Status saved = saveImage(path("a.tga"), image);

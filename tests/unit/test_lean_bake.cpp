@@ -147,3 +147,36 @@ TEST(LeanBake, FilesHoldEveryMipLevel) {
     }
     EXPECT_FALSE(loadMipChain(dir.file("missing.exr")).ok());
 }
+
+// The banded bake the GPU upload uses (bakeLeanLevels, assembled by
+// bakeLeanMaps) against the chain made the plain way: level 0 texel by texel
+// from leanFirstMoments / leanCrossMoment, each later level leanDownsample of
+// the one before. Bit for bit: the same weights are summed in the same order.
+// 150 rows span three bands; odd sizes make every footprint fractional.
+TEST(LeanBake, BandedBakeEqualsTheWholeImageChainBitForBit) {
+    ASSERT_LT(2 * kLeanBandRows, 150);
+    const Image normals = randomNormalMap(37, 150, 5u);
+    auto maps = bakeLeanMaps(normals, 0.25f);
+    ASSERT_TRUE(maps.ok());
+    Image level1 = normals;
+    Image level2 = normals;
+    for (size_t i = 0; i < normals.texels.size(); ++i) {
+        const glm::vec3 n(normals.texels[i]);
+        level1.texels[i] = leanFirstMoments(n);
+        level2.texels[i] = glm::vec4(leanCrossMoment(n), 0.5f * 0.25f * 0.25f, 0.0f, 1.0f);
+    }
+    ASSERT_EQ(maps->levels(), leanMipLevelCount(37, 150));
+    for (int level = 0; level < maps->levels(); ++level) {
+        const Image& banded1 = maps->lean1[static_cast<size_t>(level)];
+        const Image& banded2 = maps->lean2[static_cast<size_t>(level)];
+        ASSERT_EQ(banded1.width, level1.width);
+        ASSERT_EQ(banded1.height, level1.height);
+        ASSERT_EQ(banded1.texels.size(), level1.texels.size());
+        for (size_t i = 0; i < level1.texels.size(); ++i) {
+            ASSERT_EQ(banded1.texels[i], level1.texels[i]) << "level " << level << " texel " << i;
+            ASSERT_EQ(banded2.texels[i], level2.texels[i]) << "level " << level << " texel " << i;
+        }
+        level1 = leanDownsample(level1);
+        level2 = leanDownsample(level2);
+    }
+}

@@ -2,6 +2,8 @@
 
 #include "stress/InvariantRays.h"
 
+#include "gpu/UniformBlocks.h"
+
 #include <map>
 #include <random>
 
@@ -188,10 +190,72 @@ Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant, floa
     return tally;
 }
 
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant,
+std::string addLight(Scene& scene, uint64_t seed) {
+    const size_t lights = scene.lights.size();
+    const bool hasEnvironment = !scene.environment.source.empty();
+    switch (seed % 4) {
+    case 1:
+        if (lights > 0) {
+            const size_t which = (seed / 4) % lights;
+            scene.lights[which].intensity *= 8.0f;
+            return "light " + std::to_string(which) + " eight times as bright";
+        }
+        break;
+    case 2:
+        if (lights < DERMIS_MAX_LIGHTS) {
+            Light light;
+            light.type = LightType::Directional;
+            const glm::vec3 view = scene.camera.targetM - scene.camera.positionM;
+            light.direction = glm::length(view) > 0.0f ? glm::normalize(view) : glm::vec3(0.0f, 0.0f, -1.0f);
+            light.castsShadow = (seed / 4) % 2 == 0;
+            scene.lights.push_back(light);
+            return std::string("one more light from the camera, ") + (light.castsShadow ? "shadowed" : "unshadowed");
+        }
+        break;
+    case 3:
+        scene.settings.ambient += glm::vec3(0.2f);
+        return "ambient + 0.2";
+    default:
+        break;
+    }
+    if (lights == 0 && !hasEnvironment) {
+        scene.settings.ambient += glm::vec3(0.2f);
+        return "ambient + 0.2 (no light to brighten)";
+    }
+    for (Light& light : scene.lights) light.intensity *= 2.0f;
+    scene.environment.intensity *= 2.0f;
+    return "every light and the environment twice as bright";
+}
+
+Result<InvariantTally> checkMoreLight(Renderer& renderer, Scene& scene, uint64_t seed, int width, int height,
+                                      Plant plant) {
+    renderer.setPassInspector({});
+    auto before = renderAov(renderer, width, height, Aov::Radiance);
+    if (!before.ok()) return before.error();
+    const std::vector<Light> lights = scene.lights;
+    const glm::vec3 ambient = scene.settings.ambient;
+    const float environmentIntensity = scene.environment.intensity;
+    const std::string what = addLight(scene, seed);
+    auto after = renderAov(renderer, width, height, Aov::Radiance);
+    scene.lights = lights;
+    scene.settings.ambient = ambient;
+    scene.environment.intensity = environmentIntensity;
+    if (!after.ok()) return after.error();
+    if (plant == Plant::MoreLight)
+        for (glm::vec4& t : after->texels) t = glm::vec4(glm::vec3(t) * 0.9f, t.a);
+    InvariantTally tally;
+    checkMoreLightDarkensNothing(*before, *after, what, tally);
+    return tally;
+}
+
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, Scene& scene, const StressCase& c, Plant plant,
                                             std::shared_ptr<Programs> programs) {
     auto report = checkFrameInvariants(renderer, scene, c.width, c.height, plant);
-    if (!report.ok() || c.seed % kSsTsEvery != 0) return report;
+    if (!report.ok()) return report;
+    auto moreLight = checkMoreLight(renderer, scene, c.seed, c.width, c.height, plant);
+    if (!moreLight.ok()) return moreLight.error();
+    (*report)[Invariant::MoreLight].add(*moreLight);
+    if (c.seed % kSsTsEvery != 0) return report;
     auto ssTs = checkScreenVsTextureCase(c.seed, plant, nullptr, std::move(programs));
     if (!ssTs.ok()) return ssTs.error();
     (*report)[Invariant::SsTs].add(*ssTs);

@@ -33,11 +33,24 @@ Result<InvariantTally> checkScreenVsTextureCase(uint64_t seed, Plant plant = Pla
                                                 std::shared_ptr<Programs> programs = nullptr);
 Scene makeSmoothLightingScene(uint64_t seed, SssMode mode);
 
-// What `dermis stress` runs per case: invariants 1-3 on `scene` (the case's
-// scene as loaded and moved to its last frame, which `renderer` renders), and
-// every kSsTsEvery-th seed invariant 4 on the smooth-lighting case of that seed.
+// Adds light to `scene` in one of four ways chosen by `seed`: every light
+// (and the environment) twice as bright, one light eight times as bright
+// (past fp16 for the brightest cases), one more light from the camera, or
+// more ambient. Returns what it did, for a violation's detail.
+std::string addLight(Scene& scene, uint64_t seed);
+
+// Invariant 5 on `scene` as `renderer` (made from it) renders it: its
+// radiance before and after addLight(scene, seed), at width x height. The
+// scene is restored before returning.
+Result<InvariantTally> checkMoreLight(Renderer& renderer, Scene& scene, uint64_t seed, int width, int height,
+                                      Plant plant = Plant::None);
+
+// What `dermis stress` runs per case: invariants 1-3 and 5 on `scene` (the
+// case's scene as loaded and moved to its last frame, which `renderer`
+// renders), and every kSsTsEvery-th seed invariant 4 on the smooth-lighting
+// case of that seed.
 constexpr uint64_t kSsTsEvery = 10;
-Result<InvariantReport> checkCaseInvariants(Renderer& renderer, const Scene& scene, const StressCase& c, Plant plant,
+Result<InvariantReport> checkCaseInvariants(Renderer& renderer, Scene& scene, const StressCase& c, Plant plant,
                                             std::shared_ptr<Programs> programs = nullptr);
 
 }  // namespace dermis::stress

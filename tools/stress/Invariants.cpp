@@ -219,3 +219,36 @@ void checkScreenMatchesTexture(const Image& object, const Image& ssDiffuse, cons
 }
 
 }  // namespace dermis::stress
+
+namespace dermis::stress {
+
+void checkMoreLightDarkensNothing(const Image& before, const Image& after, const std::string& what,
+                                  InvariantTally& tally) {
+    ++tally.checked;
+    int darker = 0;
+    int worstX = 0, worstY = 0, worstChannel = 0;
+    float worstBefore = 0.0f, worstAfter = 0.0f, worstShortfall = 0.0f;
+    for (int y = 0; y < before.height; ++y) {
+        for (int x = 0; x < before.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const float b = before.at(x, y)[c];
+                const float a = after.at(x, y)[c];
+                const float floor = b * (1.0f - kMoreLightRelative) - kMoreLightAbsolute;
+                if (a >= floor) continue;  // false for NaN
+                ++darker;
+                const float shortfall = std::isfinite(a) ? (b - a) / std::max(b, 1e-30f) : INFINITY;
+                if (darker == 1 || shortfall > worstShortfall) {
+                    worstShortfall = shortfall;
+                    worstX = x, worstY = y, worstChannel = c;
+                    worstBefore = b, worstAfter = a;
+                }
+            }
+        }
+    }
+    if (darker > 0)
+        tally.violation(what + format(": %g pixel channels darker; the worst, pixel (%g, %g) channel %g, fell from %g",
+                                      darker, worstX, worstY, worstChannel, worstBefore) +
+                        format(" to %g", worstAfter));
+}
+
+}  // namespace dermis::stress

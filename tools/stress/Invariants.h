@@ -18,27 +18,29 @@
 
 namespace dermis::stress {
 
-enum class Invariant { Coverage, Energy, Black, SsTs };
+enum class Invariant { Coverage, Energy, Black, SsTs, MoreLight };
 
-inline constexpr EnumTable<Invariant, 4> kInvariants{
+inline constexpr EnumTable<Invariant, 5> kInvariants{
     "invariant",
     {{{Invariant::Coverage, "coverage", "object ids cover what the depth covers and what CPU rays see"},
       {Invariant::Energy, "energy", "diffuse after SSS <= the largest blurred irradiance x albedo^(1-mix)"},
       {Invariant::Black, "black", "a lit visible character is not black in radiance; visible radiance is not black after tone mapping"},
-      {Invariant::SsTs, "ss-ts", "screen- and texture-space diffuse agree on smooth lighting"}}}};
+      {Invariant::SsTs, "ss-ts", "screen- and texture-space diffuse agree on smooth lighting"},
+      {Invariant::MoreLight, "more-light", "more light (brighter lights, one more light, more ambient) darkens no pixel"}}}};
 static_assert(kInvariants.isOneToOne(), "every invariant and every name appears once");
 
 // `dermis stress --plant-violation NAME`: what the checks receive is changed
 // so that one invariant must fail (stress/InvariantFrame.cpp applies it).
-enum class Plant { None, Coverage, Energy, Black, SsTs };
+enum class Plant { None, Coverage, Energy, Black, SsTs, MoreLight };
 
-inline constexpr EnumTable<Plant, 5> kPlants{
+inline constexpr EnumTable<Plant, 6> kPlants{
     "planted violation",
     {{{Plant::None, "none", "nothing planted"},
       {Plant::Coverage, "coverage", "the largest character's ids are dropped from the object image"},
       {Plant::Energy, "energy", "the diffuse AOV is scaled by 1.5"},
       {Plant::Black, "black", "the radiance of the character with the most lit rays is zeroed"},
-      {Plant::SsTs, "ss-ts", "the texture-space diffuse is scaled by 1.25"}}}};
+      {Plant::SsTs, "ss-ts", "the texture-space diffuse is scaled by 1.25"},
+      {Plant::MoreLight, "more-light", "the frame with more light is scaled by 0.9"}}}};
 static_assert(kPlants.isOneToOne(), "every plant and every name appears once");
 
 // Violations kept per invariant and case with their numbers.
@@ -54,7 +56,7 @@ struct InvariantTally {
 };
 
 struct InvariantReport {
-    std::array<InvariantTally, 4> tallies;
+    std::array<InvariantTally, kInvariants.size()> tallies;
 
     InvariantTally& operator[](Invariant i) { return tallies[size_t(i)]; }
     const InvariantTally& operator[](Invariant i) const { return tallies[size_t(i)]; }
@@ -143,5 +145,17 @@ constexpr int kSsTsInteriorPx = 3;
 constexpr float kSsTsBound = 0.03f;
 void checkScreenMatchesTexture(const Image& object, const Image& ssDiffuse, const Image& tsDiffuse,
                                InvariantTally& tally, float* relativeDifference = nullptr);
+
+// 5: the same frame rendered again with more light (moreLight() says how)
+// is nowhere darker: per pixel and channel, radiance after >= radiance before
+// x (1 - kMoreLightRelative) - kMoreLightAbsolute. The light adds linearly in
+// every pass, so only rounding separates the two: the radiance passes through
+// up to four fp16 targets (irradiance, blur, accumulation, composite), each
+// within 2^-11 relative, 2e-3 in all with the blur's weights; the absolute
+// part is fp16's smallest normal step near 0. One check per case.
+constexpr float kMoreLightRelative = 1e-3f;
+constexpr float kMoreLightAbsolute = 1e-6f;
+void checkMoreLightDarkensNothing(const Image& before, const Image& after, const std::string& what,
+                                  InvariantTally& tally);
 
 }  // namespace dermis::stress

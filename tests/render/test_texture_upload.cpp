@@ -1,0 +1,92 @@
+// Textures are stored in the format they are used in (render/GpuScene.h
+// uploadImage, the memory budget): colour as sRGB 8-bit, data from an
+// 8-bit file as RGBA8, finer data as half floats; and the LEAN maps, uploaded
+// band by band and level by level, hold the same texels as the chain made
+// whole on the CPU.
+#include "GlTestEnvironment.h"
+#include "TestSupport.h"
+
+#include "core/Image.h"
+#include "gl/Gl.h"
+#include "lean/LeanBake.h"
+#include "render/GpuScene.h"
+
+#include <cmath>
+#include <random>
+
+using namespace dermis;
+
+namespace {
+
+class TextureUpload : public test::GlTest {};
+
+Image greyRamp(int width, int height, ColourSpace colourSpace, int sourceBits) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.colourSpace = colourSpace;
+    image.sourceBitsPerChannel = sourceBits;
+    for (int i = 0; i < width * height; ++i) {
+        const float v = static_cast<float>(i % 256) / 255.0f;
+        image.texels.emplace_back(v, v, v, 1.0f);
+    }
+    return image;
+}
+
+GLint internalFormat(const gl::Texture& texture) {
+    GLint format = 0;
+    glGetTextureLevelParameteriv(texture.get(), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    return format;
+}
+
+}  // namespace
+
+TEST_F(TextureUpload, EachImageGetsTheFormatItIsUsedIn) {
+    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Srgb, 8))), GL_SRGB8_ALPHA8);
+    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Linear, 8))), GL_RGBA8);
+    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Linear, 16))), GL_RGBA16F);
+    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Linear, 32))), GL_RGBA16F);
+
+    // An 8-bit data map keeps every one of its 256 values exactly.
+    const Image ramp = greyRamp(256, 1, ColourSpace::Linear, 8);
+    const gl::Texture texture = uploadImage(ramp);
+    std::vector<glm::u8vec4> back(256);
+    glGetTextureImage(texture.get(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(back.size() * sizeof(glm::u8vec4)),
+                      back.data());
+    for (int i = 0; i < 256; ++i) ASSERT_EQ(back[static_cast<size_t>(i)].r, i) << i;
+}
+
+// A material with a normal map: its LEAN textures, read back per level, are
+// the CPU chain (bakeLeanMaps) in half precision. 150 rows is three bands of
+// kLeanBandRows; 37 columns makes every level's footprint fractional.
+TEST_F(TextureUpload, LeanMapsUploadedInBandsEqualTheWholeChain) {
+    ASSERT_LT(2 * kLeanBandRows, 150);
+    std::mt19937 random(7u);
+    std::normal_distribution<float> slope(0.0f, 0.4f);
+    Image normals;
+    normals.width = 37;
+    normals.height = 150;
+    for (int i = 0; i < normals.width * normals.height; ++i) {
+        const glm::vec3 n = glm::normalize(glm::vec3(slope(random), slope(random), 1.0f));
+        normals.texels.emplace_back(n * 0.5f + 0.5f, 1.0f);
+    }
+    ModelMaterial material;
+    material.normalMap = normals;
+    auto gpu = uploadMaterial(material);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    auto whole = bakeLeanMaps(normals);
+    ASSERT_TRUE(whole.ok());
+    for (int level = 0; level < whole->levels(); ++level) {
+        const Image& expected = whole->lean1[static_cast<size_t>(level)];
+        std::vector<glm::vec4> back(expected.texels.size());
+        glGetTextureImage(gpu->leanMap1.get(), level, GL_RGBA, GL_FLOAT,
+                          static_cast<GLsizei>(back.size() * sizeof(glm::vec4)), back.data());
+        // Half floats have 10 mantissa bits; Mesa rounds toward zero, so
+        // allow one unit in the last place (a band at the wrong rows is off by
+        // whole slopes).
+        for (size_t i = 0; i < back.size(); ++i)
+            for (int c = 0; c < 4; ++c)
+                ASSERT_NEAR(back[i][c], expected.texels[i][c], std::abs(expected.texels[i][c]) * 0x1p-10f + 0x1p-24f)
+                    << "level " << level << " texel " << i << " channel " << c;
+    }
+}
