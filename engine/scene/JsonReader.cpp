@@ -12,7 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr size_t kMaxNestingDepth = 256;
 constexpr size_t kMaxQuotedChars = 60;
 
 // Keeps a message on one printable-ASCII line whatever bytes the input had.

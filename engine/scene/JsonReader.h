@@ -20,6 +20,8 @@ namespace dermis {
 
 // Larger inputs are refused before parsing (scene files are a few KiB).
 constexpr size_t kMaxJsonTextBytes = size_t(16) << 20;
+// Arrays and objects nested deeper are refused (a scene needs five levels).
+constexpr size_t kMaxNestingDepth = 256;
 
 // Parses text as strict JSON (no comments, no trailing data, no duplicate
 // keys). Errors carry `where` and one line with the line and column.

@@ -132,6 +132,13 @@ Result<SceneOverride> parseSceneOverride(const std::string& text) {
     if (!value.ok() && looksLikeOutOfRangeNumber(valueText)) {
         return makeError(change.where(), valueText + " is a number out of range (finite values up to about 1.8e308)");
     }
+    // An array or object that does not parse (a syntax error, or nested
+    // deeper than the limit) was meant as JSON: refuse it rather than read it
+    // as a string.
+    const size_t first = valueText.find_first_not_of(" \t");
+    if (!value.ok() && first != std::string::npos && (valueText[first] == '[' || valueText[first] == '{')) {
+        return makeError(change.where(), "the value is not valid JSON: " + value.error().what);
+    }
     change.value = value.ok() ? std::move(*value) : json(valueText);
     return change;
 }

@@ -2,6 +2,7 @@
 // settings shorthand, value parsing, precedence over the file, and errors that
 // name the override.
 
+#include "scene/JsonReader.h"
 #include "scene/SceneLoader.h"
 #include "scene/SceneOverrides.h"
 
@@ -148,7 +149,8 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
     EXPECT_ERROR(errorOf({"characters.0.name=42"}), "--set characters.0.name=42",
                  "/characters/0/name: expected a string, got a number");
     EXPECT_ERROR(errorOf({"camera.position_m=[0,0.1"}), "--set camera.position_m=[0,0.1",
-                 "/camera/position_m: expected an array of 3 numbers, got a string");
+                 "the value is not valid JSON: parse error at line 1, column 7: syntax error while parsing array - "
+                 "unexpected end of input; expected ']'");
     EXPECT_ERROR(errorOf({"characters.0.ssao.samples=3"}), "--set characters.0.ssao.samples=3",
                  "/characters/0/ssao/samples: must be 0 (use settings.ssao.samples) or in [8, 128], got 3");
     // An object value is checked inside too.
@@ -221,6 +223,18 @@ TEST(SceneOverrides, MalformedOverridesAreNamed) {
     EXPECT_EQ(errorOf({"exposure=2", "bad"}, "not json").where, "--set bad");
     // Control characters do not break the message onto two lines.
     EXPECT_EQ(errorOf({"a\nb"}).where, "--set a?b");
+    // An array or object that does not parse is an error, not a string: one
+    // nested deeper than the reader's limit, and one with a syntax error.
+    const std::string deep = "lights=" + std::string(kMaxNestingDepth + 1, '[') + std::string(kMaxNestingDepth + 1, ']');
+    const Error tooDeep = errorOf({deep});
+    EXPECT_EQ(tooDeep.where.rfind("--set lights=[[[", 0), 0u) << tooDeep.message();
+    EXPECT_NE(tooDeep.what.find("nested deeper than " + std::to_string(kMaxNestingDepth)), std::string::npos)
+        << tooDeep.message();
+    EXPECT_EQ(errorOf({"ambient=[0.1, 0.2"}).what.rfind("the value is not valid JSON: ", 0), 0u);
+    EXPECT_EQ(errorOf({"camera= {\"fov\": }"}).what.rfind("the value is not valid JSON: ", 0), 0u);
+    // Just inside the limit it parses (and is then refused as the wrong type, by key).
+    const std::string deepest = "ambient=" + std::string(kMaxNestingDepth, '[') + std::string(kMaxNestingDepth, ']');
+    EXPECT_EQ(errorOf({deepest}).what.find("not valid JSON"), std::string::npos);
 }
 
 TEST(SceneOverrides, ArrayElementsMustExist) {
