@@ -2,7 +2,9 @@
 """Peak memory per texel of a loaded texture: renders the default head with an
 8-bit PNG albedo map (and, separately, normal map) of each size, in its own
 process, and reports the process's peak resident memory (GNU time's %M) and
-the peak above the same render without a map, divided by the map's texels.
+the marginal cost per texel: the growth of the peak from the previous size,
+divided by the texels added (the peak without a map varies by 100 MiB from
+run to run with llvmpipe's threads, so the difference from it is not used).
 
 usage: tools/bench_memory.py [--dermis build/dermis] [--sizes 1024,2048,4096,8192,16384]
                              [--maps albedo,normal] [--json OUT.json]
@@ -87,15 +89,18 @@ def main():
                 write_scene(scene, map_path, kind)
                 peak, rc, error = peak_kib(args.dermis, scene, os.path.join(tmp, "out.png"))
                 os.remove(map_path)
-                texels = size * size
-                row = {"map": kind, "size": size, "png_bytes": None, "peak_mib": peak / 1024 if peak else None,
+                row = {"map": kind, "size": size, "peak_mib": peak / 1024 if peak else None,
                        "refused": error if rc else None}
                 if rc:
                     print(f"{kind} {size}^2: refused (peak {peak / 1024:.0f} MiB): {error}", flush=True)
                 else:
-                    row["bytes_per_texel"] = (peak - base) * 1024 / texels
-                    print(f"{kind} {size}^2: peak {peak / 1024:.0f} MiB, "
-                          f"{row['bytes_per_texel']:.1f} bytes per texel above the render without a map", flush=True)
+                    line = f"{kind} {size}^2: peak {peak / 1024:.0f} MiB"
+                    previous = rows[-1] if rows and rows[-1]["map"] == kind and not rows[-1]["refused"] else None
+                    if previous:
+                        added = size * size - previous["size"] ** 2
+                        row["marginal_bytes_per_texel"] = (peak / 1024 - previous["peak_mib"]) * 2**20 / added
+                        line += f", {row['marginal_bytes_per_texel']:.1f} bytes per texel added since {previous['size']}^2"
+                    print(line, flush=True)
                 rows.append(row)
     if args.json:
         with open(args.json, "w") as f:
