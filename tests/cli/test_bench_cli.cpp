@@ -43,6 +43,7 @@ std::vector<std::map<std::string, std::string>> readCsv(const std::string& path)
 
 }  // namespace
 
+// ctest: cost=95
 TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
     TempDir dir;
     const std::string out = dir.file("bench");

@@ -82,6 +82,7 @@ TEST(LeanCli, BakeRefusesBadInputWithOneLine) {
 // The variants are one graph: the final frame runs the same passes in c and
 // lbb (lbb's G-buffer, blurs and composite carry the moments, c's do not);
 // the specular AOV of lbb adds the LEAN specular pass.
+// ctest: cost=55
 TEST(LeanCli, VariantsAreOneGraphWithDifferentTargets) {
     TempDir dir;
     auto passesOf = [&](const char* variant, const char* aov) {

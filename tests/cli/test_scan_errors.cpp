@@ -21,6 +21,7 @@ using dermis::test::TempDir;
 //   shoulders that the back light grazes) reads 3.97% in screen space.
 // - irradiance 2.5%: delta lights' shadows drawn with pcf4x4's four-texel
 //   ramp instead of bilinear PCF read 2.78%.
+// ctest: slow content cost=70
 TEST(ScanErrors, TheDiagnosedCausesStayFixed) {
     if (!std::filesystem::exists(std::filesystem::path(dermis::test::sharedContentDir()) / "LeePerrySmith")) {
         GTEST_SKIP() << "the LeePerrySmith scan is not in " << dermis::test::sharedContentDir();

@@ -23,6 +23,7 @@ nlohmann::json readReport(const TempDir& dir) {
 // shadow maps, redrawn each frame as the light turns, took most of the
 // time; at 256 texels the frames still allocate, draw and free the same
 // kinds of targets.
+// ctest: slow cost=170
 TEST(Soak, FiveHundredFramesInBothModesKeepMemoryFlat) {
     TempDir dir;
     const auto r = runProcess(std::string(DERMIS_BINARY) + " soak " + dermis::test::contentScene("slab.json") +

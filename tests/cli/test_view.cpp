@@ -63,6 +63,7 @@ RegionStats stats(const dermis::Image& image, int x0, int y0, int x1, int y1) {
 // The batch flags render the window, panels included, and save it: the
 // screenshot has the window's size, is not uniform, and its panel column
 // looks different from the scene beside it.
+// ctest: slow window cost=40
 TEST(View, BatchScreenshotUnderXvfb) {
     if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt-get install xvfb): dermis view needs a display";
     TempDir dir;
@@ -91,6 +92,7 @@ TEST(View, BatchScreenshotUnderXvfb) {
 // A scene with the built-in sky as its environment, panels hidden: where the
 // head does not cover the frame the map shows, pale blue sky above the horizon
 // and ground below it, not the scene's flat, near-black background colour.
+// ctest: slow window
 TEST(View, EnvironmentShowsBehindTheHeadUnderXvfb) {
     if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt-get install xvfb): dermis view needs a display";
     TempDir dir;

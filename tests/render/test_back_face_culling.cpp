@@ -62,6 +62,7 @@ protected:
 // its 4899 head pixels at 160x90; culled, those show the front face. Bound: at
 // most 0.1% of the drawn pixels change by over 1% of the brightest. Broken on
 // purpose (GL_FRONT culled instead) 3787 of the default head's 3833 pixels changed.
+// ctest: cost=50
 TEST_F(BackFaceCulling, ClosedHeadsLookTheSame) {
     const Comparison head = compare("default.json", {});
     EXPECT_GT(head.drawn, 1000);
@@ -72,6 +73,7 @@ TEST_F(BackFaceCulling, ClosedHeadsLookTheSame) {
 }
 
 // The scan is closed too (measured: MeshTopology.TheScanIsClosed), so it is culled.
+// ctest: content
 TEST_F(BackFaceCulling, TheScanLooksTheSame) {
     if (!std::filesystem::exists(std::filesystem::path(test::sharedContentDir()) / "LeePerrySmith"))
         GTEST_SKIP() << "shared content not found (the LeePerrySmith head scan); skipping";

@@ -58,6 +58,7 @@ float maxChannelDifference(const Image& a, const Image& b) {
 
 }  // namespace
 
+// ctest: cost=35
 TEST_F(Crowds, HeadsOffScreenLeaveTheVisibleHeadUnchangedInBothModes) {
     loadCrowd(1);
     const Image aloneSs = renderIn(SssMode::ScreenSpace);

@@ -308,6 +308,7 @@ TEST_F(Materials, SpecularAndRoughnessMapsScaleAndReplaceTheScalars) {
 // The scan with its specular map (../shared/content/LeePerrySmith/Map-SPEC.jpg,
 // grey values in [0, 1]) as specular_map: the specular AOV may only drop, pixel
 // by pixel, and does over most of the face.
+// ctest: content
 TEST_F(Materials, HeadScanSpecularMapScalesItsSpecular) {
     const std::string map = test::sharedContentDir() + "/LeePerrySmith/Map-SPEC.jpg";
     if (!std::filesystem::exists(map)) GTEST_SKIP() << "../shared/content/LeePerrySmith is absent";

@@ -778,6 +778,7 @@ TEST_F(TextureSpace, HiddenLayersBehindTheVisibleSurfaceDoNotDarkenIt) {
     EXPECT_EQ(dark, 0);
 }
 
+// ctest: content
 TEST_F(TextureSpace, HeadScanHasNoDarkPixels) {
     if (!std::filesystem::exists(test::sharedContentDir() + "/LeePerrySmith")) {
         GTEST_SKIP() << "../shared/content/LeePerrySmith is absent";

@@ -727,6 +727,7 @@ TEST_F(GltfTest, RandomMutationsNeverCrash) {
     }
 }
 
+// ctest: content
 TEST(GltfSharedContent, LeePerrySmithHead) {
     const fs::path dir = fs::path(DERMIS_SHARED_CONTENT_DIR) / "LeePerrySmith";
     if (!fs::exists(dir / "LeePerrySmith.glb") || !fs::exists(dir / "LeePerrySmith_textured_flipV.glb"))

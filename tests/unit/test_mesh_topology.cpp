@@ -57,6 +57,7 @@ TEST(MeshTopology, ClosedOutwardMeshesAndTheOnesThatAreNot) {
     EXPECT_TRUE(isClosedOutward(head->mesh));
 }
 
+// ctest: content
 TEST(MeshTopology, TheScanIsClosed) {
     const std::filesystem::path file = std::filesystem::path(test::sharedContentDir()) / "LeePerrySmith" / "LeePerrySmith.glb";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << "shared content not found: " << file << "; skipping";

@@ -49,6 +49,7 @@ double relativeRmse(const Image& reference, const Image& test) {
 
 }  // namespace
 
+// ctest: slow
 TEST(ReferenceConvergence, ErrorFallsWithDensityOnTheSphere) {
     const float densities[] = {1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
     const float densest = 64.0f;

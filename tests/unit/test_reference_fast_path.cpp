@@ -55,6 +55,7 @@ std::vector<uint8_t> coveredByBoth(const Image& a, const Image& b) {
 
 }  // namespace
 
+// ctest: slow
 TEST(ReferenceFastPath, MemoChangesNothing) {
     const Scene scene = headScene(true);
     reference::ReferenceStats stats;
@@ -67,6 +68,7 @@ TEST(ReferenceFastPath, MemoChangesNothing) {
     EXPECT_GT(stats.sampleMemoHits, stats.sampleLookups / 50);
 }
 
+// ctest: slow
 TEST(ReferenceFastPath, EqualsTheSlowPathWithinItsNoise) {
     for (const bool environment : {false, true}) {
         const Scene scene = headScene(environment);

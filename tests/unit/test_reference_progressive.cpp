@@ -38,6 +38,7 @@ reference::ReferenceRenderer studioSphere() {
 
 }  // namespace
 
+// ctest: slow cost=35
 TEST(ReferenceProgressive, ProbedEstimateMatchesTheActualSpread) {
     reference::ReferenceRenderer renderer = studioSphere();
     const Image single = renderer.renderDiffuse(kWidth, kHeight);

@@ -16,7 +16,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -445,31 +444,4 @@ TEST(ShTransfer, SkinnedCylinderBindTransferTurnedWithItsVertices) {
     EXPECT_LT(turned.rms, 0.35);
     EXPECT_LT(turned.worst, 1.3f);
     EXPECT_LT(turned.rms, 0.7 * unturned.rms);
-}
-
-// ---- speed (printed, never asserted) --------------------------------------
-
-namespace {
-
-void timeTransfer(const MeshData& mesh, const char* what) {
-    const auto start = std::chrono::steady_clock::now();
-    Result<ShTransfer> transfer = computeShTransfer(mesh, quietOptions());
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ASSERT_TRUE(transfer) << transfer.error().message();
-    const double rays = double(mesh.vertices.size()) * kDefaultShTransferRays;
-    std::printf("%s: %zu vertices, %zu triangles, %d rays each, %d threads: %.2f s, %.2f Mrays/s\n", what,
-                mesh.vertices.size(), mesh.triangleCount(), kDefaultShTransferRays, raytrace::resolveThreadCount(0),
-                seconds, rays / seconds * 1e-6);
-}
-
-}  // namespace
-
-TEST(ShTransfer, SpeedOnTheProceduralHead) { timeTransfer(proceduralMesh("head"), "procedural head"); }
-
-TEST(ShTransfer, SpeedOnLeePerrySmith) {
-    const fs::path file = fs::path(DERMIS_SHARED_CONTENT_DIR) / "LeePerrySmith" / "LeePerrySmith.glb";
-    if (!fs::exists(file)) GTEST_SKIP() << "shared content not found: " << file << " (the LeePerrySmith head scan); skipping";
-    Result<Model> model = loadGltf(file.string());
-    ASSERT_TRUE(model) << model.error().message();
-    timeTransfer(model->mesh, "LeePerrySmith scan");
 }
