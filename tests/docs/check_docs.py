@@ -5,7 +5,10 @@
   file in the tree, and every #anchor to a heading of that file;
 - the tree cites papers by the keys of docs/references.md, never by the
   names of files or tracker entries outside the repository (the pattern
-  `stale` below), which a reader of the repository cannot follow.
+  `stale` below), which a reader of the repository cannot follow;
+- the README's command table lists exactly the program's commands (the
+  table in tools/dermis/main.cpp that `dermis --help` prints), and its layer
+  list exactly the folders of engine/.
 Prints every problem, exits 1 if there is one."""
 import re
 import subprocess
@@ -54,6 +57,20 @@ for name in tracked:
         if stale.search(line):
             problems.append(f"{name}:{number}: cites '{stale.search(line).group(0)}', which the repository does not hold; "
                             "cite by the keys of docs/references.md")
+
+readme = (root / "README.md").read_text(encoding="utf-8")
+program_commands = re.findall(r'^\s*\{"([a-z-]+)", "', (root / "tools/dermis/main.cpp").read_text(encoding="utf-8"),
+                              flags=re.M)
+readme_commands = re.findall(r"^\| `([a-z-]+)` \|", readme.split("## Using `dermis`")[1].split("\n## ")[0], flags=re.M)
+if not program_commands:
+    problems.append("tools/dermis/main.cpp: no command table found")
+if sorted(readme_commands) != sorted(program_commands):
+    problems.append(f"README.md: the command table lists {sorted(readme_commands)}; the program has "
+                    f"{sorted(program_commands)}")
+engine_layers = sorted(p.name for p in (root / "engine").iterdir() if p.is_dir())
+readme_layers = sorted(re.findall(r"^engine/([a-z]+)/ ", readme, flags=re.M))
+if readme_layers != engine_layers:
+    problems.append(f"README.md: the layer list has {readme_layers}; engine/ has {engine_layers}")
 
 for problem in problems:
     print(problem)
