@@ -2,7 +2,7 @@
 //   0: diffuse irradiance times the pre-scatter albedo^mix (Chappuis 2011 §2.2.4),
 //      the input of the SSS blur. Its alpha is 1, or with LIGHTING_LEAN the
 //      G-buffer's LEAN cross moment M'.xy, which the blur carries along with
-//      the irradiance (include/SssBlur.glsl, include/Lean.glsl). Each light's share is scaled by the energy
+//      the irradiance (include/SssChain.glsl, include/Lean.glsl). Each light's share is scaled by the energy
 //      the specular lobe leaves, 1 - rho_s rho_dt(N.L, m) (Chappuis 2011 §2.6);
 //      the uniform ambient by the SSAO; the environment's diffuse light
 //      (include/Environment.glsl) by the occlusion the scene chose: none, the

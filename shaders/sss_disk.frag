@@ -2,7 +2,6 @@
 // include/DiskSss.glsl for the method, how it is driven and the outputs.
 // With SSS_EXTRA_TARGETS = 1 the LEAN moments ride along in the packed chain.
 #define DERMIS_USE_DISK_SSS_BLOCK
-#define DERMIS_USE_SSS_BLUR_BLOCK  // SssBlur.glsl's functions name it; only its fetch is used here
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "DiskSss.glsl"

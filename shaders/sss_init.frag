@@ -4,12 +4,11 @@
 // irradiance unchanged. The irradiance's alpha (1, or the LEAN cross moment)
 // and, with SSS_EXTRA_TARGETS = 1, the extra target (the LEAN moments, unit
 // 2, output 1) start the same way with the mean of the identity weight
-// (include/SssBlur.glsl says why the mean); output 2 then starts the packed
+// (include/SssChain.glsl says why the mean); output 2 then starts the packed
 // chain the blurs read.
-#define DERMIS_USE_SSS_BLUR_BLOCK  // SssBlur.glsl's functions name it; only the packing is used here
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
-#include "SssBlur.glsl"
+#include "SssChain.glsl"
 
 layout(binding = 0) uniform sampler2D uIrradiance;
 layout(binding = 1) uniform usampler2D uDepthKey;

@@ -2,7 +2,7 @@
 // The debug pass of docs/stress.md: after every pass, read back each colour
 // texture it wrote and count what is wrong in it. Float targets: non-finite
 // texels (NaN, Inf) and, for fp16 ones, texels at the fp16 clamp (65504).
-// The packed SSS chain (RGBA32UI, eight halves: shaders/include/SssBlur.glsl
+// The packed SSS chain (RGBA32UI, eight halves: shaders/include/SssChain.glsl
 // sssPack) is decoded half by half as fp16. The depth key (R32UI:
 // UniformBlocks.glsl DERMIS_KEY_*) is checked for a valid slot. Unorm targets
 // (RGBA8, R8) are read as floats and checked to lie in [0, 1]. Depth and

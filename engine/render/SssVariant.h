@@ -34,7 +34,7 @@ bool frameUsesLean(const RenderSettings& settings);
 SssBlur sssBlurEdges(const SssSettings& settings);
 
 // The scalar weight the LEAN moments receive for a Gaussian whose RGB weight
-// is `rgb`: the mean of the channels. Why (shaders/include/SssBlur.glsl):
+// is `rgb`: the mean of the channels. Why (shaders/include/SssChain.glsl):
 // the profile's weights are normalised per channel, so the means also sum to
 // one and the accumulated moments stay a convex combination of moments: the
 // covariance M - B B^T of a mixture is positive semi-definite. One scalar for

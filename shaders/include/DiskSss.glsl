@@ -55,13 +55,13 @@
 //   used, so light that the edge test keeps out does not darken the result.
 //
 // EXTRA TARGETS AND ALPHA
-//   As SssBlur.glsl's section of that name: the colour's alpha and the extra
+//   As SssChain.glsl's section of that name: the colour's alpha and the extra
 //   target go through the same samples with one scalar weight per sample, the
 //   mean of its RGB weights, so the accumulated moments stay a convex
 //   combination of moments.
 //
 // CONFIGURATION (define before including)
-//   SSS_EXTRA_TARGETS  0 (default) or 1, as in SssBlur.glsl (whose fetch and
+//   SSS_EXTRA_TARGETS  0 (default) or 1, as in SssChain.glsl (whose fetch and
 //                      packing this header uses).
 //   DISK_SSS_ROTATE    1 (default): the per-pixel rotation of SAMPLES; 0: every
 //                      pixel samples the same spiral (the error then shows as
@@ -70,7 +70,7 @@
 #ifndef DERMIS_DISK_SSS_GLSL
 #define DERMIS_DISK_SSS_GLSL
 
-#include "SssBlur.glsl"
+#include "SssChain.glsl"
 #include "SssEdges.glsl"
 
 #ifndef DISK_SSS_ROTATE

@@ -58,14 +58,14 @@
 //   fetch-only: the benchmarks' floor.
 //
 // EXTRA TARGETS AND ALPHA
-//   As in SssBlur.glsl ("EXTRA TARGETS AND ALPHA"): the colour's alpha and
+//   As in SssChain.glsl ("EXTRA TARGETS AND ALPHA"): the colour's alpha and
 //   the extra target (the LEAN moments) go through the very same taps with
 //   one scalar weight per tap, the mean of its RGB weights, renormalised by
 //   their own sum: a convex combination, so the moments stay the moments of
 //   a mixture and an alpha of 1 stays 1.
 //
 // CONFIGURATION (define before including)
-//   SSS_EXTRA_TARGETS   0 (default) or 1, as SssBlur.glsl (the packed chain).
+//   SSS_EXTRA_TARGETS   0 (default) or 1, as SssChain.glsl (the packed chain).
 //   SEPARABLE_SSS_LAST  0 (default): the horizontal pass, writing the chain;
 //                       1: the vertical pass, writing the accumulations.
 //   SEPARABLE_SSS_FETCH 1 (default): a tap's weight split between the two
@@ -89,7 +89,7 @@
 #error "define DERMIS_USE_SEPARABLE_SSS_BLOCK before including UniformBlocks.glsl"
 #endif
 
-#include "SssBlur.glsl"
+#include "SssChain.glsl"
 
 // The scalar weight of a tap's alpha and extra target: the mean of its RGB weights.
 float separableScalarWeight(vec3 weight) {

@@ -35,36 +35,8 @@
 //      (the per-Gaussian scalar weight is the blend colour's alpha). A
 //      horizontal pass attaches location 0 only.
 //
-// EXTRA TARGETS AND ALPHA (the LEAN moments, include/Lean.glsl)
-//   The colour's alpha (1, or in the LEAN variants the cross moment M'.xy)
-//   and every extra target (B'.x, B'.y, M'.xx, M'.yy) are blurred with the
-//   very taps and weights of the colour, in the same draw (Vila Verde 2015 blurred four textures in four passes,
-//   about 4x the cost of the control blur; here the taps' depth keys and
-//   weights are computed once). Their accumulation weight per Gaussian is one
-//   scalar (alpha and extra targets alike), the mean of the Gaussian's RGB
-//   weights (engine/render/SssVariant.h),
-//   because:
-//   - the profile's weights are normalised per channel, so the means also
-//     sum to one with the identity weight: the accumulated moments are a
-//     convex combination of moments, i.e. the moments of a mixture, whose
-//     covariance M - B B^T is positive semi-definite (a per-channel or
-//     per-target weight would not be: B and M must come from one mixture);
-//   - every step above is itself convex (bilateral: renormalised weights;
-//     control: a lerp towards the centre), so nothing leaves that set;
-//   - the specular lobe is white: no channel of the profile has a claim on
-//     it, and the mean is the profile's average reach.
-//   An alpha of 1 therefore stays 1.
-//
-// PACKING (SSS_EXTRA_TARGETS = 1)
-//   Colour (RGBA) and extra target (RGBA) are eight halves; the chain keeps
-//   them in one RGBA32UI texture, two halves per channel (packHalf2x16, the
-//   fp16 the float targets would store), so a tap is one fetch of the chain
-//   and one of the key, as in the plain blur. The chain starts in sss_init,
-//   which packs the irradiance and the G-buffer's moments; the accumulations
-//   stay float, blended through multiple render targets. M'.xy rides in the
-//   irradiance's alpha, so the five moments and the irradiance fill exactly
-//   the eight halves. (On llvmpipe the fetches are the blur's cost; a GPU
-//   reads the same 16 bytes a tap either way.)
+// CHAIN, PACKING, EXTRA TARGETS AND EDGES: include/SssChain.glsl, shared
+//   with the other techniques.
 //
 // WIDTH (Chappuis 2011 §2.2.4; docs/screen-space.md, step 6)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
@@ -72,11 +44,6 @@
 //   metre at 1 m (height / (2 tan(fov/2))). World space is in metres, so each
 //   character's metres_per_unit is already in z. The centre pixel's depth
 //   sets the width, as in Jimenez's SeparableSSS.
-//
-// EDGES (include/SssEdges.glsl, shared with the other techniques)
-//   bilateral (the default of lbb), control (c, lcb) or fetch-only (the
-//   benchmarks' bandwidth floor: the same fetches of colour and key per tap,
-//   summed with the kernel weights and nothing else).
 //
 // SAMPLING AND WEIGHTS (per pixel, from its own width in pixels sigma_px)
 //   Taps fetch whole texels (texelFetch): a bilinear fetch at a silhouette
@@ -115,74 +82,15 @@
 //   one convex combination of moments (every blurred moment image is one, and
 //   the weights still sum to one), the argument of EXTRA TARGETS AND ALPHA.
 //
-// CONFIGURATION (define before including)
-//   SSS_EXTRA_TARGETS  0 (default) or 1: one extra RGBA target (the LEAN
-//                      moments) blurred with the same taps; the chain is then
-//                      packed (PACKING above) and SSS_CHAIN_SAMPLER is a
-//                      usampler2D.
-//   SSS_PACKED_OUT     with SSS_EXTRA_TARGETS = 1 only: 1 (default) writes the
-//                      packed chain, 0 writes the colour alone (WHERE THE
-//                      MOMENTS STOP). Read by sss_blur.frag.
+// CONFIGURATION: SSS_EXTRA_TARGETS and SSS_PACKED_OUT, include/SssChain.glsl.
 #ifndef DERMIS_SSS_BLUR_GLSL
 #define DERMIS_SSS_BLUR_GLSL
 
-#include "SssEdges.glsl"
-
-#ifndef SSS_EXTRA_TARGETS
-#define SSS_EXTRA_TARGETS 0
-#endif
-#if SSS_EXTRA_TARGETS < 0 || SSS_EXTRA_TARGETS > 1
-#error "SSS_EXTRA_TARGETS must be 0 or 1"
+#ifndef DERMIS_USE_SSS_BLUR_BLOCK
+#error "define DERMIS_USE_SSS_BLUR_BLOCK before including UniformBlocks.glsl"
 #endif
 
-#ifndef SSS_PACKED_OUT
-#define SSS_PACKED_OUT SSS_EXTRA_TARGETS
-#endif
-#if SSS_PACKED_OUT < 0 || SSS_PACKED_OUT > SSS_EXTRA_TARGETS
-#error "SSS_PACKED_OUT must be 0 or 1, and 1 only with SSS_EXTRA_TARGETS = 1"
-#endif
-
-#define SSS_VALUES (1 + SSS_EXTRA_TARGETS)
-#if SSS_EXTRA_TARGETS > 0
-#define SSS_CHAIN_SAMPLER usampler2D
-#else
-#define SSS_CHAIN_SAMPLER sampler2D
-#endif
-
-// The colour ([0]) and the extra target ([1]) at one pixel.
-struct SssValues {
-    vec4 v[SSS_VALUES];
-};
-
-SssValues sssFetch(SSS_CHAIN_SAMPLER chain, ivec2 pixel) {
-    SssValues values;
-#if SSS_EXTRA_TARGETS > 0
-    uvec4 halves = texelFetch(chain, pixel, 0);
-    values.v[0] = vec4(unpackHalf2x16(halves.x), unpackHalf2x16(halves.y));
-    values.v[1] = vec4(unpackHalf2x16(halves.z), unpackHalf2x16(halves.w));
-#else
-    values.v[0] = texelFetch(chain, pixel, 0);
-#endif
-    return values;
-}
-
-// The centre of every technique's step at `pixel`: its values, its depth key
-// and view depth; false when it is not on `slot` or has no depth (the stencil
-// keeps such pixels away; this is the belt to its braces).
-bool sssCentre(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 pixel, int slot, out SssValues values, out uint key,
-               out float viewDepthM) {
-    values = sssFetch(chain, pixel);
-    key = texelFetch(depthKey, pixel, 0).r;
-    viewDepthM = viewDepthFromKey(key);
-    return slotFromKey(key) == slot && viewDepthM > 0.0;
-}
-
-#if SSS_EXTRA_TARGETS > 0
-// The chain texel of sanitised values (sssSanitizeSigned / sanitizeColour).
-uvec4 sssPack(vec4 colour, vec4 extra) {
-    return uvec4(packHalf2x16(colour.rg), packHalf2x16(colour.ba), packHalf2x16(extra.rg), packHalf2x16(extra.ba));
-}
-#endif
+#include "SssChain.glsl"
 
 const int kSssMaxHalfTaps = DERMIS_MAX_BLUR_TAPS / 2;
 
@@ -263,12 +171,6 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     if (!(weightSum > 0.0)) return centre;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] /= weightSum;
     return sum;
-}
-
-// Keeps a signed value (a LEAN moment) storable in fp16 and free of NaN, so
-// one bad texel cannot spread through the chain.
-vec4 sssSanitizeSigned(vec4 value) {
-    return sanitiseRange(value, -kHalfMax, kHalfMax);
 }
 
 #endif
