@@ -35,7 +35,7 @@ def anchors(path):
 
 
 link = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
-for page in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
     text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
     for target in link.findall(text):
         if re.match(r"[a-z]+:", target):
