@@ -1,5 +1,7 @@
 #include "BenchContext.h"
 
+#include "measure/MeasuredRender.h"
+
 #include "core/Log.h"
 #include "scene/SceneLoader.h"
 
@@ -41,9 +43,8 @@ Image renderAov(Renderer& renderer, int width, int height, Aov aov) {
 }
 
 std::vector<uint8_t> sssPixelMask(Renderer& renderer, int width, int height) {
-    std::vector<uint8_t> mask;
-    for (const glm::vec4& t : renderAov(renderer, width, height, Aov::Albedo).texels) mask.push_back(t.a > 0.5f ? 1 : 0);
-    return mask;
+    auto mask = measure::sssMask(renderer, width, height);
+    return mask.ok() ? std::move(*mask) : std::vector<uint8_t>{};
 }
 
 double renderAndTime(Renderer& renderer, int width, int height, const std::string& prefix) {

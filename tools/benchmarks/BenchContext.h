@@ -29,7 +29,7 @@ std::vector<double> renderAndTimeAt(Renderer& renderer, int width, int height, f
 
 // One frame of `aov` read back (an empty image if the frame or the read fails).
 Image renderAov(Renderer& renderer, int width, int height, Aov aov);
-// 1 where the albedo AOV marks an SSS pixel (alpha > 0.5), else 0.
+// measure::sssMask, empty when the frame fails.
 std::vector<uint8_t> sssPixelMask(Renderer& renderer, int width, int height);
 
 // Figures recorded by benchmarks (median GPU ms per named measurement) for

@@ -1,5 +1,7 @@
 #include "Args.h"
 
+#include "core/Log.h"
+
 #include "core/Limits.h"
 
 #include <cerrno>
@@ -118,6 +120,23 @@ Result<std::vector<float>> parseSequence(const std::string& option, const std::s
     std::vector<float> times;
     for (size_t i = 0; i < static_cast<size_t>(count); ++i) times.push_back(static_cast<float>(double(*start) + double(i) / double(*fps)));
     return times;
+}
+
+Result<gl::Backend> parseBackend(const std::string& name) {
+    if (name == "auto") return gl::Backend::Auto;
+    if (name == "egl") return gl::Backend::Egl;
+    if (name == "osmesa") return gl::Backend::OsMesa;
+    return makeError("--backend " + name, "expected egl or osmesa");
+}
+
+int failure(const Error& error) {
+    log::error(error.message());
+    return 1;
+}
+
+int usageError(const Error& error) {
+    log::error(error.message());
+    return 2;
 }
 
 }  // namespace dermis::cli

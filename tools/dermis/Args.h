@@ -4,6 +4,7 @@
 
 #include "core/EnumTable.h"
 #include "core/Result.h"
+#include "gl/GlContext.h"
 #include "scene/JsonReader.h"
 
 #include <map>
@@ -48,5 +49,12 @@ Result<float> parseFloatIn(const std::string& option, const std::string& text, d
 Result<std::vector<float>> parseSequence(const std::string& option, const std::string& text, size_t maxFrames);
 // "WxH" -> {W, H}; both in 1..maxDimension.
 Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension);
+
+// --backend NAME: auto, egl or osmesa.
+Result<gl::Backend> parseBackend(const std::string& name);
+
+// The exit statuses, after the one error line.
+int failure(const Error& error);     // 1: the input or the run failed
+int usageError(const Error& error);  // 2: the command line is wrong
 
 }  // namespace dermis::cli

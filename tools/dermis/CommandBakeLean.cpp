@@ -1,7 +1,7 @@
 // dermis bake-lean: LEAN maps from a tangent-space normal map (engine/lean/LeanBake.h).
 #include "Args.h"
 #include "Commands.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/Log.h"
@@ -12,6 +12,8 @@
 #include <string>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =

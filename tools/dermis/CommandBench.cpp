@@ -2,11 +2,12 @@
 // modes, times each configuration and measures its error against the CPU
 // reference.
 #include "Args.h"
-#include "CauseMeter.h"
+#include "ReferenceOptions.h"
+#include "measure/CauseMeter.h"
 #include "Commands.h"
-#include "MeasuredRender.h"
+#include "measure/MeasuredRender.h"
 #include "Python.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "bench/BenchReport.h"
 #include "bench/SweepPlan.h"
@@ -31,6 +32,8 @@
 #include <unistd.h>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 using bench::BenchRow;

@@ -1,10 +1,11 @@
 // dermis compare: one frame of a scene in screen-space and in texture-space
 // mode, the images, a difference heatmap and the metrics.
 #include "Args.h"
-#include "CauseMeter.h"
+#include "ReferenceOptions.h"
+#include "measure/CauseMeter.h"
 #include "Commands.h"
-#include "MeasuredRender.h"
-#include "Session.h"
+#include "measure/MeasuredRender.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
@@ -24,6 +25,8 @@
 #include <set>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =
@@ -140,7 +143,7 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     };
     const MeasuredRender* ss = rendered(SssMode::ScreenSpace);
     const MeasuredRender* ts = rendered(SssMode::TextureSpace);
-    auto mask = sssMask(*session, width, height);
+    auto mask = sssMask(*session->renderer, width, height);
     if (!mask.ok()) return failure(mask.error());
     if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
 

@@ -3,8 +3,9 @@
 #include "CommandReference.h"
 
 #include "Args.h"
-#include "ReferenceImages.h"
-#include "Session.h"
+#include "ReferenceOptions.h"
+#include "measure/ReferenceImages.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/Log.h"
@@ -21,6 +22,8 @@
 #include <optional>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 constexpr int kMaxReferenceDimension = 8192;

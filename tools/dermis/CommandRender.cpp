@@ -1,7 +1,7 @@
 // dermis render: headless render of a scene file.
 #include "Args.h"
 #include "Commands.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/Limits.h"
@@ -16,6 +16,8 @@
 #include <filesystem>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =

@@ -5,7 +5,7 @@
 #include "Commands.h"
 #include "ProcessMemory.h"
 #include "Python.h"
-#include "Session.h"
+#include "measure/Session.h"
 #include "SoakGrowth.h"
 #include "SoakMotion.h"
 
@@ -26,6 +26,8 @@
 #include <filesystem>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =

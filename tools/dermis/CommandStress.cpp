@@ -2,7 +2,7 @@
 // target is checked for non-finite texels.
 #include "Args.h"
 #include "Commands.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Log.h"
 #include "core/OutputFiles.h"
@@ -26,6 +26,8 @@
 #include <fstream>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =

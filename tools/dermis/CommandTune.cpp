@@ -2,8 +2,8 @@
 // per on-screen scale, written as a quality table (docs/quality.md).
 #include "Args.h"
 #include "Commands.h"
-#include "MeasuredRender.h"
-#include "Session.h"
+#include "measure/MeasuredRender.h"
+#include "measure/Session.h"
 
 #include "bench/BenchReport.h"
 #include "bench/QualityTune.h"
@@ -21,6 +21,8 @@
 #include <sstream>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 constexpr int kFirstWarmUpFrames = 3;
@@ -184,7 +186,7 @@ int runTune(const std::vector<std::string>& rawArgs) {
         auto finest = measureRender(*session, scenePath, width, height, *frames, done == 0 ? kFirstWarmUpFrames : 1);
         if (!finest.ok()) return failure(finest.error());
         const float pixelsPerMm = nearestPixelsPerMm(*session);
-        auto mask = sssMask(*session, width, height);
+        auto mask = sssMask(*session->renderer, width, height);
         if (!mask.ok()) return failure(mask.error());
         if (pixelsPerMm <= 0.0f || std::count(mask->begin(), mask->end(), uint8_t{1}) == 0) {
             return failure(makeError(scenePath, "no SSS pixel is seen at distance factor " +

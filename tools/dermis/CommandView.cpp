@@ -1,7 +1,7 @@
 // dermis view: the interactive viewer (tools/viewer/).
 #include "Args.h"
 #include "Commands.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Log.h"
 #include "render/Aov.h"
@@ -13,6 +13,8 @@
 #include <filesystem>
 
 namespace dermis::cli {
+
+using namespace measure;
 namespace {
 
 const char* const kHelp =

@@ -3,7 +3,7 @@
 // measure it: N timed frames (medians), the final image, the linear diffuse
 // AOV, and which pixels belong to characters with a diffusion profile.
 
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 struct MeasuredRender {
     Image finalImage;      // tone-mapped, after the timed frames
@@ -34,9 +34,11 @@ Result<MeasuredRender> measureRender(Session& session, const std::string& sceneP
 // Per pixel: 0 for the background, else the character index + 1 (the object AOV).
 Result<std::vector<int>> objectIds(Session& session, int width, int height);
 
-// One byte per pixel: 1 where the surface seen scatters (the scatter AOV > 0:
-// a material with a profile, and its scatter map not 0 there).
-Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height);
+// The SSS mask, the one definition every measurement uses (bench, compare,
+// tune, the error causes, the benchmarks): one byte per pixel, 1 where the
+// surface seen scatters (the scatter AOV > 0: a material with a profile, and
+// its scatter map not 0 there). Renders one frame of that AOV.
+Result<std::vector<uint8_t>> sssMask(Renderer& renderer, int width, int height);
 
 // A linear float image of exactly width x height (the CPU reference), or an
 // error naming the file and the size it should have.
@@ -46,4 +48,4 @@ Result<Image> loadReferenceImage(const std::string& path, int width, int height)
 // has no infinity, so a non-finite figure is written as null.
 nlohmann::ordered_json differenceJson(const ImageDifference& difference);
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

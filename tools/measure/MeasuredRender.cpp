@@ -1,4 +1,4 @@
-#include "MeasuredRender.h"
+#include "measure/MeasuredRender.h"
 
 #include "core/Log.h"
 #include "render/Aov.h"
@@ -7,7 +7,7 @@
 #include <chrono>
 #include <cmath>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 Result<MeasuredRender> measureRender(Session& session, const std::string& scenePath, int width, int height,
                                      int frames, int warmUpFrames) {
@@ -54,10 +54,9 @@ Result<std::vector<int>> objectIds(Session& session, int width, int height) {
     return out;
 }
 
-Result<std::vector<uint8_t>> sssMask(Session& session, int width, int height) {
-    if (const Status status = session.renderer->renderFrame({width, height, Aov::Scatter}); !status.ok())
-        return status.error();
-    auto shares = session.renderer->readOutput();
+Result<std::vector<uint8_t>> sssMask(Renderer& renderer, int width, int height) {
+    if (const Status status = renderer.renderFrame({width, height, Aov::Scatter}); !status.ok()) return status.error();
+    auto shares = renderer.readOutput();
     if (!shares.ok()) return shares.error();
     std::vector<uint8_t> mask(shares->texels.size(), 0);
     for (size_t i = 0; i < mask.size(); ++i) mask[i] = shares->texels[i].r > 0.0f ? 1 : 0;
@@ -88,4 +87,4 @@ nlohmann::ordered_json differenceJson(const ImageDifference& difference) {
     return json;
 }
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -1,6 +1,6 @@
 #pragma once
-// What every GL subcommand starts with: a scene file, a headless context and
-// a renderer for it, plus the shared ways to fail.
+// What every GL measurement starts with: a scene file, a headless context and
+// a renderer for it.
 
 #include "core/Result.h"
 #include "gl/GlContext.h"
@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 struct Session {
     std::unique_ptr<Scene> scene;
@@ -26,10 +26,7 @@ struct Session {
     RunInfo runInfo(const std::string& scenePath, int width, int height, int frames) const;
 };
 
-Result<gl::Backend> parseBackend(const std::string& name);
 
 // Print "error: <where>: <what>" and return the exit status.
-int failure(const Error& error);     // 1: the input or the run failed
-int usageError(const Error& error);  // 2: the command line is wrong
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -11,8 +11,7 @@
 // Each FILE.exr has FILE.json holding its identity: the scene as loaded (with
 // every override) and the reference's settings.
 
-#include "Args.h"
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Image.h"
 #include "core/Result.h"
@@ -23,7 +22,7 @@
 #include <map>
 #include <string>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 struct ReferenceSettings {
     int width = 0;
@@ -67,14 +66,6 @@ private:
     std::map<std::string, Image> mMemory;  // identity -> image, this run's
 };
 
-// The options that set ReferenceSettings (all but the size), for the option
-// lists and help texts of the commands that take them.
-inline const std::set<std::string> kReferenceOptionNames = {"density",      "spp",          "change-spp",
-                                                            "irradiance-size", "target-error", "max-passes"};
-std::string referenceOptionsHelp();
-Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args);
-// --target-error PCT (default kDefaultTargetRelativeRmse) and --max-passes N.
-Result<reference::ProgressiveSettings> progressiveSettingsFromArgs(const ParsedArgs& args);
 // One line: the stages' wall seconds, the samples computed and reused, the passes.
 std::string referenceStagesSummary(const reference::ReferenceStats& stats);
 
@@ -83,4 +74,4 @@ std::string referenceStagesSummary(const reference::ReferenceStats& stats);
 // their defaults: two scenes that differ only there light the skin the same.
 Scene lightingOnly(const Scene& scene);
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -1,17 +1,10 @@
-#include "Session.h"
+#include "measure/Session.h"
 
 #include "core/Log.h"
 #include "gl/GlDebug.h"
 #include "scene/SceneLoader.h"
 
-namespace dermis::cli {
-
-Result<gl::Backend> parseBackend(const std::string& name) {
-    if (name == "auto") return gl::Backend::Auto;
-    if (name == "egl") return gl::Backend::Egl;
-    if (name == "osmesa") return gl::Backend::OsMesa;
-    return makeError("--backend " + name, "expected egl or osmesa");
-}
+namespace dermis::measure {
 
 Result<Session> Session::open(const std::string& scenePath, const std::vector<std::string>& overrides,
                               gl::Backend backend, bool glDebug) {
@@ -49,14 +42,4 @@ RunInfo Session::runInfo(const std::string& scenePath, int width, int height, in
     return info;
 }
 
-int failure(const Error& error) {
-    log::error(error.message());
-    return 1;
-}
-
-int usageError(const Error& error) {
-    log::error(error.message());
-    return 2;
-}
-
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -5,8 +5,8 @@
 // (rendered once per distinct configuration), and the regions from the
 // object-id AOV and the reference's thickness.
 
-#include "ReferenceImages.h"
-#include "Session.h"
+#include "measure/ReferenceImages.h"
+#include "measure/Session.h"
 
 #include "bench/ErrorCauses.h"
 #include "core/Image.h"
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 class CauseMeter {
 public:
@@ -57,4 +57,4 @@ private:
     bool mSceneScatters = true;
 };
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -1,6 +1,6 @@
-#include "CauseMeter.h"
+#include "measure/CauseMeter.h"
 
-#include "MeasuredRender.h"
+#include "measure/MeasuredRender.h"
 
 #include "core/ImageResample.h"
 #include "render/Aov.h"
@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace dermis::cli {
+namespace dermis::measure {
 
 Result<CauseMeter> CauseMeter::create(Session& session, ReferenceImages& references, std::optional<Image> fullReference) {
     CauseMeter meter(references);
@@ -37,7 +37,7 @@ Result<CauseMeter> CauseMeter::create(Session& session, ReferenceImages& referen
     meter.mRegions = bench::classifyRegions(width, height, *ids, isSss, *thickness);
     // Only what scatters is an SSS pixel: a character's hair, eyes and cloth
     // are not (the scatter AOV, docs/materials.md).
-    auto scatters = cli::sssMask(session, width, height);
+    auto scatters = measure::sssMask(*session.renderer, width, height);
     if (!scatters.ok()) return scatters.error();
     for (size_t i = 0; i < meter.mRegions.size(); ++i)
         if (!(*scatters)[i]) meter.mRegions[i] = bench::kNoRegion;
@@ -76,4 +76,4 @@ Result<bench::CauseErrors> CauseMeter::measure(Session& session, const Image& di
     return errors;
 }
 
-}  // namespace dermis::cli
+}  // namespace dermis::measure

@@ -1,0 +1,96 @@
+#include "ReferenceOptions.h"
+
+#include "reference/PixelSampling.h"
+
+#include <cstdio>
+
+namespace dermis::cli {
+namespace {
+
+using measure::ReferenceSettings;
+
+// 8.0 -> "8", 0.2 -> "0.2".
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+// 0.002 -> "0.2".
+std::string percentText(double fraction) { return shortNumber(100.0 * fraction); }
+
+}  // namespace
+
+std::string referenceOptionsHelp() {
+    const ReferenceSettings defaults;
+    return "  --density N        the references' quadrature density when they are computed (default " +
+           shortNumber(defaults.density) +
+           ")\n"
+           "  --spp N            the references' samples per pixel, a square (default " +
+           std::to_string(defaults.samplesPerPixel) +
+           ": the pixel centre,\n"
+           "                     where the engine shades)\n"
+           "  --change-spp N     the same for the matched reference's scattering change (default " +
+           std::to_string(defaults.changeSamplesPerPixel) + ")\n"
+           "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
+           "                     (default " + std::to_string(defaults.irradianceSizeTexels) + ")\n"
+           "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
+           "                     rays until the estimated relative RMSE of their noise is at most PCT\n"
+           "                     percent (default " +
+           percentText(reference::kDefaultTargetRelativeRmse) +
+           ")\n"
+           "  --max-passes N     at most N passes of each, up to " + std::to_string(reference::kMaxProgressivePasses) +
+           " (default " + std::to_string(reference::kDefaultProgressivePasses) + ")\n";
+}
+
+Result<reference::ProgressiveSettings> progressiveSettingsFromArgs(const ParsedArgs& args) {
+    reference::ProgressiveSettings settings;
+    if (args.has("target-error")) {
+        auto percent = parsePositiveFloat("--target-error", args.get("target-error", ""));
+        if (!percent.ok()) return percent.error();
+        settings.targetRelativeRmse = double(*percent) / 100.0;
+    }
+    if (args.has("max-passes")) {
+        auto passes = parsePositiveInt("--max-passes", args.get("max-passes", ""));
+        if (!passes.ok()) return passes.error();
+        if (*passes > reference::kMaxProgressivePasses) {
+            return makeError("--max-passes", "at most " + std::to_string(reference::kMaxProgressivePasses));
+        }
+        settings.maxPasses = *passes;
+    }
+    return settings;
+}
+
+Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
+    ReferenceSettings settings;  // its defaults stand where an option is absent (and in the help)
+    if (args.has("density")) {
+        auto density = parsePositiveFloat("--density", args.get("density", ""));
+        if (!density.ok()) return density.error();
+        settings.density = *density;
+    }
+    const struct {
+        const char* name;
+        int* target;
+        bool square;  // sub-samples per pixel: checked here, before any reference is computed and written
+    } integers[] = {{"spp", &settings.samplesPerPixel, true},
+                    {"change-spp", &settings.changeSamplesPerPixel, true},
+                    {"irradiance-size", &settings.irradianceSizeTexels, false}};
+    for (const auto& integer : integers) {
+        if (!args.has(integer.name)) continue;
+        const std::string option = std::string("--") + integer.name;
+        auto value = parsePositiveInt(option, args.get(integer.name, ""));
+        if (!value.ok()) return value.error();
+        if (integer.square && reference::strataPerSide(*value) == 0) {
+            return makeError(option, "must be a perfect square from 1 to " +
+                                         std::to_string(reference::kMaxSamplesPerPixel) + ", got " +
+                                         std::to_string(*value));
+        }
+        *integer.target = *value;
+    }
+    auto progressive = progressiveSettingsFromArgs(args);
+    if (!progressive.ok()) return progressive.error();
+    settings.progressive = *progressive;
+    return settings;
+}
+
+}  // namespace dermis::cli
