@@ -99,7 +99,6 @@ Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSp
     image.width = spec.width;
     image.height = spec.height;
     image.colourSpace = colourSpace;
-    image.sourceBitsPerChannel = static_cast<int>(spec.format.size()) * 8;
     image.texels.resize(texelCount);
     // Read straight into the RGBA texels (a texel stride of 16 bytes), in bands
     // of rows, and widen in place: OpenImageIO converts through a temporary as

@@ -21,7 +21,6 @@ struct Image {
     int width = 0;
     int height = 0;
     ColourSpace colourSpace = ColourSpace::Linear;
-    int sourceBitsPerChannel = 32;  // of the file it came from: 8-bit data needs only an 8-bit texture
     std::vector<glm::vec4> texels;  // row-major, row 0 is the image's top row
 
     bool empty() const { return texels.empty(); }

@@ -183,11 +183,11 @@ bool GpuCharacter::hasLeanMaps() const {
 
 gl::Texture uploadImage(const Image& image) {
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-    // Decoded to the format the texture is used in: colour as sRGB 8-bit, data
-    // from an 8-bit file as 8-bit, anything finer as half floats.
-    const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8
-                          : image.sourceBitsPerChannel <= 8    ? GL_RGBA8
-                                                               : GL_RGBA16F;
+    // Colour as sRGB 8-bit. Data maps stay half floats even from an 8-bit
+    // file: filtered as RGBA8, llvmpipe interpolates in 8-bit steps, and the
+    // scan's texture-space irradiance error (SSS off on both sides, 320x180)
+    // rose from 2.21% to 4.31% against the reference (docs/testing.md "Memory").
+    const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
     gl::Texture texture = createMipmappedTexture(levels, format, image.width, image.height);
     uploadLevel(texture, 0, image);
     glGenerateTextureMipmap(texture.get());

@@ -109,7 +109,7 @@ private:
 Result<GpuMaterial> uploadMaterial(const ModelMaterial& material);
 
 // Uploads with a full mip chain; sRGB images get an sRGB 8-bit format, data
-// from an 8-bit file RGBA8, finer data RGBA16F.
+// maps RGBA16F.
 gl::Texture uploadImage(const Image& image);
 
 }  // namespace dermis

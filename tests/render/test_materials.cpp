@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <glm/gtc/packing.hpp>
 #include <nlohmann/json.hpp>
 
 using namespace dermis;
@@ -360,8 +361,8 @@ TEST_F(Materials, GltfRoughnessTextureMapsToBeckmannMAsRSquared) {
     const std::vector<std::string> shiny = {"characters.0.material.rho_s=0.3"};
     load(scene, shiny);
     const Image fromTexture = render(Aov::Specular, kWidth, kHeight);
-    // An 8-bit data map is uploaded as RGBA8 (render/GpuScene.cpp uploadImage): G is g exactly.
-    const float r = g * factor;
+    // Linear maps are uploaded as RGBA16F (render/GpuScene.cpp uploadImage): G is g in half precision.
+    const float r = glm::unpackHalf1x16(glm::packHalf1x16(g)) * factor;
     std::vector<std::string> scalar = shiny;
     char m[32];
     std::snprintf(m, sizeof m, "%.9g", r * r);

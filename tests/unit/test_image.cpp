@@ -266,17 +266,6 @@ TEST_F(ImageTest, ImageAboveTheTexelBudgetIsRefusedByName) {
     EXPECT_EQ(line.find('\n'), std::string::npos) << line;
 }
 
-// The texture upload picks an 8-bit format for 8-bit files.
-TEST_F(ImageTest, LoadedImagesRecordTheirSourceBitDepth) {
-    writeRaw<uint8_t>(path("a.png"), 2, 1, 1, OIIO::TypeDesc::UINT8, {10, 20});
-    writeRaw<uint16_t>(path("b.png"), 2, 1, 1, OIIO::TypeDesc::UINT16, {1000, 2000});
-    writeRaw<float>(path("c.exr"), 2, 1, 1, OIIO::TypeDesc::FLOAT, {0.5f, 2.0f});
-    EXPECT_EQ(loadImage(path("a.png"), ColourSpace::Linear)->sourceBitsPerChannel, 8);
-    EXPECT_EQ(loadImage(path("b.png"), ColourSpace::Linear)->sourceBitsPerChannel, 16);
-    EXPECT_EQ(loadImage(path("c.exr"), ColourSpace::Linear)->sourceBitsPerChannel, 32);
-    EXPECT_FLOAT_EQ(loadImage(path("a.png"), ColourSpace::Linear)->texels[1].g, 20.0f / 255.0f);
-}
-
 TEST_F(ImageTest, UnsupportedExtensionWritesNothing) {
     Image image = makeGradient(2, 2);
     Status saved = saveImage(path("a.tga"), image);
