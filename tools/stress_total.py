@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Totals of several `dermis stress` summaries (docs/stress.md, "Measured").
+"""Totals of several `dermis stress` summaries (docs/results/stress.md).
 
 A long run is split into processes of consecutive seeds, each writing its
 own summary; this adds them up: cases, failures, refusals, the sanitised

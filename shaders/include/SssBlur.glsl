@@ -141,7 +141,6 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float halfWeights[kSssMaxHalfTaps + 1];
     float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.source.x > 0.5, halfWeights);
     int edges = int(uSssBlur.edges.x + 0.5);
-    bool fetchOnly = edges == DERMIS_BLUR_EDGES_FETCH_ONLY;
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -149,13 +148,6 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     for (int j = -halfTaps; j <= halfTaps; ++j) {
         ivec2 tapPixel = clamp(pixel + ivec2(direction * (float(j) * spacingPx)), ivec2(0), size - 1);
         float weight = halfWeights[abs(j)];
-        if (fetchOnly) {
-            SssValues tap = sssFetch(colour, tapPixel);
-            tap.v[0].a = float(texelFetch(depthKey, tapPixel, 0).r & 255u);
-            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * tap.v[k];
-            weightSum += weight;
-            continue;
-        }
         SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges, uSssBlur.edges.y,
                                      uSssBlur.edges.z);
         if (edge.weight <= 0.0) continue;

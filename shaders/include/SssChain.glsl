@@ -38,8 +38,8 @@
 //
 // EDGES (include/SssEdges.glsl)
 //   bilateral (the default of lbb), control (c, lcb) or fetch-only (the
-//   benchmarks' bandwidth floor: the same fetches of colour and key per tap,
-//   summed with the kernel weights and nothing else).
+//   benchmarks' bandwidth floor: the fetches of colour and key of every tap
+//   on the same profile, summed with the kernel weights and nothing else).
 //
 // CONFIGURATION (define before including)
 //   SSS_EXTRA_TARGETS  0 (default) or 1: one extra RGBA target (the LEAN

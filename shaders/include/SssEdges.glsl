@@ -14,7 +14,11 @@
 //   - control (Jimenez et al. 2009, Vila Verde 2015 §3.2.2): the tap's value
 //     is lerped back to the centre's by min(1, k d), k = controlScalePerMm;
 //     its weight stays. A tap on another profile is the centre.
-//   - fetch-only: weight 1, no lerp (a benchmark floor, not a blur).
+//   - fetch-only: weight 1, no lerp, on the same profile (a benchmark floor,
+//     not a blur); a tap on another profile or the background is dropped as
+//     bilateral drops it: the chain holds no value of this frame there (the
+//     SSS init writes only the profiles' pixels, and a pooled target keeps
+//     what it held), which stress seed 1835 read as light from nowhere.
 // A tap whose toCentre is 1 must not be fetched at all (selection, not a
 // multiply), so a non-finite value outside the mask can never leak in.
 #ifndef DERMIS_SSS_EDGES_GLSL
@@ -29,10 +33,11 @@ struct SssEdgeTap {
 
 SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, int edges, float bilateralDepthMm, float controlScalePerMm) {
     SssEdgeTap result = SssEdgeTap(1.0, 0.0);
-    if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) return result;
     float distanceMm = keyDistanceMm(centreKey, tapKey);
     bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
-    if (edges == DERMIS_BLUR_EDGES_BILATERAL) {
+    if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) {
+        result.weight = sameProfile ? 1.0 : 0.0;
+    } else if (edges == DERMIS_BLUR_EDGES_BILATERAL) {
         result.weight = sameProfile ? exp(-distanceMm * distanceMm / (2.0 * bilateralDepthMm * bilateralDepthMm)) : 0.0;
     } else {
         result.toCentre = sameProfile ? min(controlScalePerMm * distanceMm, 1.0) : 1.0;

@@ -33,6 +33,21 @@ TEST(Stress, FortyCasesFailNone) {
     EXPECT_EQ(summary["hashes"].size(), 40u);
 }
 
+// Seeds a long run failed on once, each for a fault since fixed
+// (docs/results/stress.md): 1835, the fetch-only blur of a LEAN variant
+// summing the packed chain's stale texels off its profile into a character
+// lit by nothing (energy invariant, 10 pixels).
+TEST(Stress, SeedsThatFailedOnceFailNone) {
+    for (int seed : {1835}) {
+        TempDir dir;
+        const auto r = runProcess(std::string(DERMIS_BINARY) + " stress --cases 1 --seed " + std::to_string(seed) +
+                                  " --quiet --out " + dir.file("summary.json"));
+        const auto summary = nlohmann::json::parse(dermis::test::readTextFile(dir.file("summary.json")));
+        EXPECT_EQ(r.exitCode, 0) << "seed " << seed << ": " << summary["failures"].dump(2);
+        EXPECT_EQ(summary["failed_cases"], 0) << "seed " << seed;
+    }
+}
+
 // Determinism, texel for texel: each case's hash covers every texel the pass
 // inspector reads and every frame's output (tools/stress/StressHash.h).
 // Runs: A = seeds 77-80, B = the same again, C = seeds 79-80 alone.
