@@ -41,21 +41,33 @@ std::vector<float> footprintWeights(int i, int source, int dest, int& first) {
     return weights;
 }
 
-Image shrinkRows(const Image& source, int width) {
+// The footprints of every dest texel when `source` texels shrink to `dest`.
+struct Footprints {
+    std::vector<int> firsts;
+    std::vector<std::vector<float>> weights;
+};
+
+Footprints footprints(int source, int dest) {
+    Footprints out;
+    out.firsts.resize(static_cast<size_t>(dest));
+    out.weights.resize(static_cast<size_t>(dest));
+    for (int i = 0; i < dest; ++i)
+        out.weights[static_cast<size_t>(i)] = footprintWeights(i, source, dest, out.firsts[static_cast<size_t>(i)]);
+    return out;
+}
+
+// Each row shrunk to columns.firsts.size() texels.
+Image shrinkRows(const Image& source, const Footprints& columns) {
+    const int width = static_cast<int>(columns.firsts.size());
     Image out;
     out.width = width;
     out.height = source.height;
     out.colourSpace = source.colourSpace;
     out.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(source.height), glm::vec4(0.0f));
-    std::vector<int> firsts(static_cast<size_t>(width));
-    std::vector<std::vector<float>> weights(static_cast<size_t>(width));
-    for (int x = 0; x < width; ++x) {
-        weights[static_cast<size_t>(x)] = footprintWeights(x, source.width, width, firsts[static_cast<size_t>(x)]);
-    }
     for (int y = 0; y < source.height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const std::vector<float>& w = weights[static_cast<size_t>(x)];
-            const int first = firsts[static_cast<size_t>(x)];
+            const std::vector<float>& w = columns.weights[static_cast<size_t>(x)];
+            const int first = columns.firsts[static_cast<size_t>(x)];
             glm::vec4 sum(0.0f);
             for (size_t k = 0; k < w.size(); ++k) sum += w[k] * source.at(first + static_cast<int>(k), y);
             out.at(x, y) = sum;
@@ -63,6 +75,8 @@ Image shrinkRows(const Image& source, int width) {
     }
     return out;
 }
+
+Image shrinkRows(const Image& source, int width) { return shrinkRows(source, footprints(source.width, width)); }
 
 Image transpose(const Image& image) {
     Image out;
@@ -148,38 +162,43 @@ Status bakeLeanLevels(const Image& normalMap, float baseRoughness, const LeanLev
         }
     };
 
-    Image band1;
-    Image band2;
-    for (int first = 0; first < normalMap.height; first += kLeanBandRows) {
-        momentRows(first, std::min(kLeanBandRows, normalMap.height - first), band1, band2);
-        onLevel(0, first, band1, band2);
-    }
-    const int levels = leanMipLevelCount(normalMap.width, normalMap.height);
-    if (levels == 1) return success();
-
     // Level 1 as leanDownsample makes it (rows shrunk, then columns, the same
-    // weights in the same order), one destination row at a time.
+    // weights added in the same order), accumulated from each band of level 0
+    // as it is made: a destination row sums its source rows in their order.
+    const int levels = leanMipLevelCount(normalMap.width, normalMap.height);
     const int width = std::max(1, normalMap.width / 2);
     const int height = std::max(1, normalMap.height / 2);
+    const Footprints columns = footprints(normalMap.width, width);
+    const Footprints rows = footprints(normalMap.height, height);
     Image lean1;
     Image lean2;
     lean1.width = lean2.width = width;
     lean1.height = lean2.height = height;
     lean1.colourSpace = lean2.colourSpace = ColourSpace::Linear;
-    lean1.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height), glm::vec4(0.0f));
-    lean2.texels.assign(lean1.texels.size(), glm::vec4(0.0f));
-    Image row1;
-    Image row2;
-    for (int y = 0; y < height; ++y) {
-        int first = 0;
-        const std::vector<float> weights = footprintWeights(y, normalMap.height, height, first);
-        for (size_t k = 0; k < weights.size(); ++k) {
-            momentRows(first + static_cast<int>(k), 1, row1, row2);
-            const Image shrunk1 = shrinkRows(row1, width);
-            const Image shrunk2 = shrinkRows(row2, width);
-            for (int x = 0; x < width; ++x) {
-                lean1.at(x, y) += weights[k] * shrunk1.at(x, 0);
-                lean2.at(x, y) += weights[k] * shrunk2.at(x, 0);
+    if (levels > 1) {
+        lean1.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height), glm::vec4(0.0f));
+        lean2.texels.assign(lean1.texels.size(), glm::vec4(0.0f));
+    }
+    int firstDestRow = 0;  // the first destination row whose footprint has not ended
+    Image band1;
+    Image band2;
+    for (int first = 0; first < normalMap.height; first += kLeanBandRows) {
+        momentRows(first, std::min(kLeanBandRows, normalMap.height - first), band1, band2);
+        onLevel(0, first, band1, band2);
+        if (levels == 1) continue;
+        const Image shrunk1 = shrinkRows(band1, columns);
+        const Image shrunk2 = shrinkRows(band2, columns);
+        for (int r = 0; r < band1.height; ++r) {
+            const int source = first + r;
+            while (firstDestRow < height &&
+                   rows.firsts[size_t(firstDestRow)] + int(rows.weights[size_t(firstDestRow)].size()) <= source)
+                ++firstDestRow;
+            for (int y = firstDestRow; y < height && rows.firsts[size_t(y)] <= source; ++y) {
+                const float weight = rows.weights[size_t(y)][size_t(source - rows.firsts[size_t(y)])];
+                for (int x = 0; x < width; ++x) {
+                    lean1.at(x, y) += weight * shrunk1.at(x, r);
+                    lean2.at(x, y) += weight * shrunk2.at(x, r);
+                }
             }
         }
     }

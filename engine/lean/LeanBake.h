@@ -61,9 +61,9 @@ Result<LeanMaps> bakeLeanMaps(const Image& normalMap, float baseRoughness = 0.0f
 
 // The same levels, handed to `onLevel` in pieces and not kept, for the GPU
 // upload (the memory budget, docs/testing.md "Memory"): level 0 in
-// bands of at most kLeanBandRows rows starting at `firstRow`, level 1 made row
-// by row from the normal map, and each later level whole (firstRow 0) from the
-// one before. So no full-size float copy of level 0 is ever held: the peak is
+// bands of at most kLeanBandRows rows starting at `firstRow`, level 1
+// accumulated from those bands as they are made, and each later level whole
+// (firstRow 0) from the one before. So no full-size float copy of level 0 is ever held: the peak is
 // a quarter-size level instead of two full-size ones. The levels equal
 // bakeLeanMaps's bit for bit.
 constexpr int kLeanBandRows = 64;

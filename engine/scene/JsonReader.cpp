@@ -336,7 +336,7 @@ bool JsonObject::readFloat(const json& value, const std::string& where, const Ra
     // float) is stored as the float next to it inside the range.
     auto f = static_cast<float>(x);
     if (range.contains(x) && !range.contains(double(f))) {
-        const float inward = std::nextafter(f, x > 0.0 ? 0.0f : (x < 0.0 ? 0.0f : f));
+        const float inward = std::nextafter(f, 0.0f);
         if (range.contains(double(inward))) f = inward;
     }
     if (!range.contains(double(f))) {

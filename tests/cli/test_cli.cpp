@@ -23,19 +23,9 @@ std::string defaultScene() { return dermis::test::contentScene("default.json"); 
 
 // The error output is one "error: ..." line (progress lines aside).
 std::string errorLine(const ProcessResult& r) {
-    std::string found;
-    size_t start = 0;
-    while (start < r.err.size()) {
-        size_t end = r.err.find('\n', start);
-        if (end == std::string::npos) end = r.err.size();
-        const std::string line = r.err.substr(start, end - start);
-        if (line.rfind("error: ", 0) == 0) {
-            EXPECT_TRUE(found.empty()) << "more than one error line:\n" << r.err;
-            found = line;
-        }
-        start = end + 1;
-    }
-    return found;
+    const std::vector<std::string> lines = dermis::test::errorLines(r.err);
+    EXPECT_LE(lines.size(), 1u) << "more than one error line:\n" << r.err;
+    return lines.empty() ? std::string() : lines.back();
 }
 
 void expectCleanFailure(const ProcessResult& r, const std::string& outFile, const std::vector<std::string>& mentions) {

@@ -18,22 +18,9 @@ namespace {
 
 const std::string kDermis = DERMIS_BINARY;
 
-// The stderr lines that start with "error: ".
-std::vector<std::string> errorLines(const ProcessResult& r) {
-    std::vector<std::string> lines;
-    size_t start = 0;
-    while (start < r.err.size()) {
-        size_t end = r.err.find('\n', start);
-        if (end == std::string::npos) end = r.err.size();
-        if (r.err.compare(start, 7, "error: ") == 0) lines.push_back(r.err.substr(start, end - start));
-        start = end + 1;
-    }
-    return lines;
-}
-
 void expectOneError(const ProcessResult& r, const std::string& fragment) {
     EXPECT_NE(r.exitCode, 0);
-    const std::vector<std::string> lines = errorLines(r);
+    const std::vector<std::string> lines = dermis::test::errorLines(r.err);
     ASSERT_EQ(lines.size(), 1u) << r.err;
     EXPECT_NE(lines[0].find(fragment), std::string::npos) << lines[0];
 }

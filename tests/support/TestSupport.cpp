@@ -68,6 +68,18 @@ Image latLongImage(int width, int height, const std::function<glm::vec3(const gl
     return map;
 }
 
+std::vector<std::string> errorLines(const std::string& stderrText) {
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start < stderrText.size()) {
+        size_t end = stderrText.find('\n', start);
+        if (end == std::string::npos) end = stderrText.size();
+        if (stderrText.compare(start, 7, "error: ") == 0) lines.push_back(stderrText.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
+}
+
 std::vector<std::string> namesIn(const std::filesystem::path& dir) {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());

@@ -35,6 +35,8 @@ struct ProcessResult {
 
 // Runs `command` through /bin/sh with stdout and stderr captured.
 ProcessResult runProcess(const std::string& command);
+// The lines of a command's stderr that start with "error: ", in order.
+std::vector<std::string> errorLines(const std::string& stderrText);
 
 void writeTextFile(const std::string& path, const std::string& text);
 std::string readTextFile(const std::string& path);

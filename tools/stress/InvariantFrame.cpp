@@ -232,14 +232,10 @@ Result<InvariantTally> checkMoreLight(Renderer& renderer, Scene& scene, uint64_t
     renderer.setPassInspector({});
     auto before = renderAov(renderer, width, height, Aov::Radiance);
     if (!before.ok()) return before.error();
-    const std::vector<Light> lights = scene.lights;
-    const glm::vec3 ambient = scene.settings.ambient;
-    const float environmentIntensity = scene.environment.intensity;
+    const Scene unchanged = scene;  // the renderer keeps a reference to `scene` itself
     const std::string what = addLight(scene, seed);
     auto after = renderAov(renderer, width, height, Aov::Radiance);
-    scene.lights = lights;
-    scene.settings.ambient = ambient;
-    scene.environment.intensity = environmentIntensity;
+    scene = unchanged;
     if (!after.ok()) return after.error();
     if (plant == Plant::MoreLight)
         for (glm::vec4& t : after->texels) t = glm::vec4(glm::vec3(t) * 0.9f, t.a);

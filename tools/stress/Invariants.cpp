@@ -218,10 +218,6 @@ void checkScreenMatchesTexture(const Image& object, const Image& ssDiffuse, cons
                         format(" (bound %g)", kSsTsBound));
 }
 
-}  // namespace dermis::stress
-
-namespace dermis::stress {
-
 void checkMoreLightDarkensNothing(const Image& before, const Image& after, const std::string& what,
                                   InvariantTally& tally) {
     ++tally.checked;
