@@ -36,7 +36,7 @@ packages=(
   cmake ninja-build g++ pkg-config python3 python3-glad ccache
   libglfw3-dev libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev libstb-dev
   libosmesa6-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
-  libgtest-dev libgmock-dev libbenchmark-dev libembree-dev libmeshoptimizer-dev gltfpack libdraco-dev draco
+  libgtest-dev libgmock-dev libbenchmark-dev libembree-dev libtbb-dev libmeshoptimizer-dev gltfpack libdraco-dev draco
   xvfb xauth python3-matplotlib
 )
 

@@ -1,5 +1,7 @@
 #include "env/ShTransferCache.h"
 
+#include "core/CacheDirectory.h"
+#include "core/ContentHash.h"
 #include "core/Log.h"
 
 #include <unistd.h>
@@ -18,8 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr char kMagic[8] = {'D', 'R', 'M', 'S', 'S', 'H', 'T', '1'};
-constexpr uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ULL;
-constexpr uint64_t kFnvPrime = 0x100000001b3ULL;
 
 struct CacheHeader {
     char magic[8];
@@ -30,12 +30,6 @@ struct CacheHeader {
     uint64_t payloadHash;
 };
 static_assert(sizeof(CacheHeader) == 40, "the header is packed by layout, without padding");
-
-uint64_t fnv1a(const void* bytes, size_t size, uint64_t hash = kFnvOffsetBasis) {
-    const auto* p = static_cast<const unsigned char*>(bytes);
-    for (size_t i = 0; i < size; ++i) hash = (hash ^ p[i]) * kFnvPrime;
-    return hash;
-}
 
 uint64_t payloadHash(const ShTransfer& transfer) {
     return fnv1a(transfer.perVertex.data(), transfer.perVertex.size() * sizeof(ShScalar9));
@@ -112,12 +106,6 @@ uint64_t shTransferCacheKey(const MeshData& mesh, int raysPerVertex) {
     return fnv1a(&kShTransferCacheVersion, sizeof kShTransferCacheVersion, hash);
 }
 
-fs::path shTransferCacheDirectory() {
-    if (const char* dir = std::getenv("DERMIS_CACHE_DIR"); dir && *dir) return fs::path(dir);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "dermis";
-    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "dermis";
-    return {};
-}
 
 std::string shTransferCacheFileName(uint64_t key) {
     char hex[17];
@@ -128,7 +116,7 @@ std::string shTransferCacheFileName(uint64_t key) {
 Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTransferOptions& options) {
     ShTransferLoad load;
     const uint64_t key = shTransferCacheKey(mesh, options.raysPerVertex);
-    const fs::path dir = shTransferCacheDirectory();
+    const fs::path dir = cacheDirectory();
     if (!dir.empty()) load.cacheFile = dir / shTransferCacheFileName(key);
     std::error_code error;
     if (!load.cacheFile.empty() && fs::exists(load.cacheFile, error)) {

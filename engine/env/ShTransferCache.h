@@ -5,7 +5,7 @@
 // Key: 64-bit FNV-1a over the raw bytes of every vertex's position and
 // normal, the indices, the rays per vertex and kShTransferCacheVersion
 // (bumped whenever the sampling or the file layout changes). Directory:
-// $DERMIS_CACHE_DIR, else $XDG_CACHE_HOME/dermis, else $HOME/.cache/dermis.
+// core/CacheDirectory.h.
 // File sh-transfer-<16 hex digits>.bin, native byte order:
 //   magic "DRMSSHT1" (8 bytes), version u32, rays per vertex u32,
 //   vertex count u64, key u64, FNV-1a of the payload u64,
@@ -29,9 +29,6 @@ namespace dermis {
 constexpr uint32_t kShTransferCacheVersion = 1;
 
 uint64_t shTransferCacheKey(const MeshData& mesh, int raysPerVertex);
-
-// Empty when none of the variables is set.
-std::filesystem::path shTransferCacheDirectory();
 
 // "sh-transfer-<key in 16 hex digits>.bin"
 std::string shTransferCacheFileName(uint64_t key);

@@ -163,4 +163,25 @@ double CharacterSurface::areaM2() const {
     return area;
 }
 
+void CharacterSurface::hashContent(ContentHash& hash) const {
+    hash.text(mName).values(mPositionsM).values(mNormals).values(mTangents).values(mUvs).values(mRawUvs);
+    hash.values(mColours).values(mIndices).values(mTriangleMaterials);
+    auto hashMap = [&](const MipPyramid& map) {
+        if (map.empty()) {
+            hash.number(0);
+            return;
+        }
+        const Image& level0 = map.level(0);  // the other levels follow from it
+        hash.number(uint64_t(level0.width)).number(uint64_t(level0.height)).values(level0.texels);
+    };
+    for (const SurfaceMaterial& m : mMaterials) {
+        hashMap(m.albedoMap);
+        hashMap(m.normalMap);
+        hashMap(m.scatterMap);
+        const float factors[] = {m.albedoTint.r, m.albedoTint.g, m.albedoTint.b, m.roughness, m.rhoS, m.scatter,
+                                 m.scattering.widthScale};
+        hash.bytes(factors, sizeof factors).text(m.scattering.profile);
+    }
+}
+
 }  // namespace dermis::reference

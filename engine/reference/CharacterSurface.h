@@ -8,6 +8,7 @@
 // read from mip pyramids: trilinearly at a pixel's footprint for the points a
 // camera sees, bilinearly at level 0 for the integral's samples.
 
+#include "core/ContentHash.h"
 #include "core/Result.h"
 #include "mesh/Model.h"
 #include "reference/MipPyramid.h"
@@ -70,6 +71,9 @@ public:
     uint32_t materialOf(size_t triangle) const { return mTriangleMaterials[triangle]; }
     size_t materialCount() const { return mMaterials.size(); }
     const SurfaceScattering& scattering(size_t material) const { return mMaterials[material].scattering; }
+    // Everything above reads, into `hash` (the reference images' disk cache key):
+    // a member added below must be added there too.
+    void hashContent(ContentHash& hash) const;
 
 private:
     // Hanika 2021's point: `pointM` (weights of the three corners) lifted to the

@@ -13,6 +13,7 @@
 // with another technique (multiple importance sampling) if they matter.
 // Directions are in map space; the caller rotates them.
 
+#include "core/ContentHash.h"
 #include "core/Image.h"
 
 #include <glm/glm.hpp>
@@ -47,6 +48,10 @@ public:
     glm::vec3 radiance(const glm::vec3& direction) const;
     // Both at once (one texel look-up): what sample() would have given for `direction`.
     EnvironmentSample lookUp(const glm::vec3& direction) const;
+    // The map (and so its distribution), into `hash`.
+    void hashContent(ContentHash& hash) const {
+        hash.number(uint64_t(mWidth)).number(uint64_t(mHeight)).values(mTexels);
+    }
 
 private:
     glm::ivec2 texelOf(const glm::vec3& direction) const;

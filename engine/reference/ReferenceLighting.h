@@ -103,6 +103,9 @@ public:
     // E_env alone (0 without an environment).
     glm::vec3 environmentIrradiance(const SurfacePoint& point, uint32_t sampleSet = 0) const;
     bool hasEnvironment() const { return !mEnvironment.empty() && mEnvironmentIntensity > 0.0f; }
+    // What it read from files (the environment map), into `hash`; the rest follows
+    // from the scene's own values.
+    void hashContent(ContentHash& hash) const { mEnvironment.hashContent(hash); }
     // The fraction of light `index` that reaches the point (1 for an unshadowed
     // light), with the light's centre towards `l`; sets its bits in `visibility`.
     float lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,

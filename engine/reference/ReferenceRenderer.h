@@ -128,8 +128,8 @@ public:
     // the estimated relative RMSE of the mean's noise, from the spread of the
     // passes over the covered pixels, is at most the target (or maxPasses); the
     // image is the passes' mean and each estimate is logged. A second pass over
-    // one pixel in 8 first estimates pass 0's noise, which is often within the
-    // target already. Without an environment nothing is random: one pass. The
+    // a few hundred pixels first estimates pass 0's noise, which is often within
+    // the target already. Without an environment nothing is random: one pass. The
     // sub-samples' positions are part of the pixel's definition (the same every
     // pass) and the quadrature's error (the density) is not noise: docs/reference.md
     // gives both.
@@ -147,6 +147,10 @@ public:
     static Ray cameraRay(const Camera& camera, int width, int height, int x, int y);
 
     const ReferenceStats& stats() const { return mStats; }
+    // A hash of what it read from files (every character's surface and maps, the
+    // environment map): with the scene's own values and the program, the key of
+    // the reference images' disk cache (measure/ReferenceImages.h).
+    uint64_t contentHash() const;
 
 private:
     struct Hit {

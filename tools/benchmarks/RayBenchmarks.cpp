@@ -37,13 +37,6 @@ constexpr int kCameraWidth = 320;
 constexpr int kCameraHeight = 180;
 constexpr float kOffsetM = 1e-5f;  // as the reference's shadow rays
 
-struct Workload {
-    std::vector<glm::vec3> cornersM;
-    std::vector<raytrace::Ray> occlusion;
-    std::vector<raytrace::Ray> camera;
-    float nearM = 0.0f, farM = 0.0f;
-};
-
 struct RayFigures {
     size_t triangles = 0;
     double buildMs[2] = {0, 0};       // in-house, Embree
@@ -54,7 +47,9 @@ struct RayFigures {
 };
 std::map<std::string, RayFigures> sFigures;
 
-bool loadWorkload(const std::string& sceneName, Workload* out) {
+}  // namespace
+
+bool loadRayWorkload(const std::string& sceneName, RayWorkload* out) {
     const Scene& scene = contentScene(sceneName);
     for (const Character& character : scene.characters) {
         auto model = loadCharacterModel(character);
@@ -94,12 +89,14 @@ bool loadWorkload(const std::string& sceneName, Workload* out) {
     return true;
 }
 
+namespace {
+
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <class Tracer>
-void trace(const Tracer& tracer, const Workload& work, std::vector<uint8_t>& occluded, std::vector<raytrace::BvhHit>& hits,
+void trace(const Tracer& tracer, const RayWorkload& work, std::vector<uint8_t>& occluded, std::vector<raytrace::BvhHit>& hits,
            double* occlusionMs, double* cameraMs) {
     auto start = std::chrono::steady_clock::now();
     occluded.resize(work.occlusion.size());
@@ -114,8 +111,8 @@ void trace(const Tracer& tracer, const Workload& work, std::vector<uint8_t>& occ
 }
 
 void rayTracers(benchmark::State& state, const std::string& sceneName) {
-    Workload work;
-    if (!loadWorkload(sceneName, &work)) {
+    RayWorkload work;
+    if (!loadRayWorkload(sceneName, &work)) {
         state.SkipWithError(("cannot load " + sceneName + " (the scan's content absent?)").c_str());
         return;
     }

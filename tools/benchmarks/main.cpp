@@ -6,6 +6,7 @@
 #include "EnvironmentBenchmarks.h"
 #include "GltfDecodeBenchmarks.h"
 #include "LeanBenchmarks.h"
+#include "ParallelLoopBenchmarks.h"
 #include "QualityBenchmarks.h"
 #include "RayBenchmarks.h"
 #include "TechniqueBenchmarks.h"
@@ -67,5 +68,6 @@ int main(int argc, char** argv) {
     dermis::bench::printTechniqueSummary();
     dermis::bench::printQualitySummary();
     dermis::bench::printRaySummary();
+    dermis::bench::printParallelLoopSummary();
     return 0;
 }

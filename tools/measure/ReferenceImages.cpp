@@ -1,6 +1,9 @@
 #include "measure/ReferenceImages.h"
 
+#include "core/CacheDirectory.h"
+#include "core/ContentHash.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
 #include "core/TextFile.h"
 #include "reference/PixelSampling.h"
 #include "reference/ReferenceRenderer.h"
@@ -43,14 +46,40 @@ reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) 
 // 6.7 s (docs/reference.md, "Speed").
 constexpr int kSssOffEnvironmentSamples = 1024;
 
-Result<Image> renderProgressive(const Scene& scene, const ReferenceSettings& settings, int environmentSamples) {
-    reference::ReferenceOptions options = referenceOptions(settings);
-    options.environmentSamples = environmentSamples;
-    auto renderer = reference::ReferenceRenderer::load(scene, options);
-    if (!renderer.ok()) return renderer.error();
-    Image image = renderer->renderDiffuseProgressive(settings.width, settings.height, settings.progressive);
-    log::info(referenceStagesSummary(renderer->stats()));
+Image renderProgressive(reference::ReferenceRenderer& renderer, const ReferenceSettings& settings) {
+    Image image = renderer.renderDiffuseProgressive(settings.width, settings.height, settings.progressive);
+    log::info(referenceStagesSummary(renderer.stats()));
     return image;
+}
+
+// The shared cache's copy of an image: found by a key of its identity, the
+// content the renderer read from files and the program itself, and checked
+// against the identity written beside it.
+Result<Image> sharedOrComputed(const std::string& identity, const reference::ReferenceRenderer& renderer,
+                               const ReferenceSettings& settings, const std::function<Image()>& compute) {
+    const std::filesystem::path directory = cacheDirectory();
+    if (directory.empty() || programContentHash() == 0) return compute();
+    const std::string fullIdentity = identity + "\ncontent " + std::to_string(renderer.contentHash()) + " program " +
+                                     std::to_string(programContentHash());
+    char name[32];
+    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(ContentHash().text(fullIdentity).value()));
+    const std::filesystem::path image = directory / "reference" / (std::string(name) + ".exr");
+    const std::filesystem::path note = directory / "reference" / (std::string(name) + ".json");
+    std::error_code error;
+    if (std::filesystem::exists(image, error) && readIdentity(note) == fullIdentity) {
+        auto loaded = loadImage(image.string(), ColourSpace::Linear);
+        if (loaded.ok() && loaded->width == settings.width && loaded->height == settings.height) {
+            log::info("reusing " + image.string() + " (the same scene, files, settings and program)");
+            return loaded;
+        }
+    }
+    Image computed = compute();
+    OutputFiles files;
+    Status saved = files.stageImage(image.string(), computed);
+    if (saved.ok()) saved = files.stageText(note.string(), nlohmann::ordered_json{{"identity", fullIdentity}}.dump() + "\n");
+    if (saved.ok()) saved = files.commit();
+    if (!saved.ok()) log::warn("the reference is not cached: " + saved.error().message());
+    return computed;
 }
 
 }  // namespace
@@ -124,10 +153,15 @@ std::string identityOf(const Scene& scene, const ReferenceSettings& settings, co
 }  // namespace
 
 Result<Image> ReferenceImages::full(const Scene& scene) {
-    return cached("reference", identityOf(scene, mSettings, "full"), [&]() -> Result<Image> {
-        log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
-                  std::to_string(mSettings.height));
-        return renderProgressive(scene, mSettings, reference::kEnvironmentSamples);
+    const std::string identity = identityOf(scene, mSettings, "full");
+    return cached("reference", identity, [&]() -> Result<Image> {
+        auto renderer = reference::ReferenceRenderer::load(scene, referenceOptions(mSettings));
+        if (!renderer.ok()) return renderer.error();
+        return sharedOrComputed(identity, *renderer, mSettings, [&] {
+            log::info("computing the CPU reference at " + std::to_string(mSettings.width) + "x" +
+                      std::to_string(mSettings.height));
+            return renderProgressive(*renderer, mSettings);
+        });
     });
 }
 
@@ -135,21 +169,30 @@ Result<Image> ReferenceImages::sssOff(const Scene& scene) {
     Scene off = scene;
     off.settings.sss.enabled = false;
     const std::string what = "sss off, " + std::to_string(kSssOffEnvironmentSamples) + " environment rays";
-    return cached("reference_sss_off", identityOf(off, mSettings, what), [&]() -> Result<Image> {
-        log::info("computing the CPU reference with SSS off");
-        return renderProgressive(off, mSettings, kSssOffEnvironmentSamples);
+    const std::string identity = identityOf(off, mSettings, what);
+    return cached("reference_sss_off", identity, [&]() -> Result<Image> {
+        reference::ReferenceOptions options = referenceOptions(mSettings);
+        options.environmentSamples = kSssOffEnvironmentSamples;
+        auto renderer = reference::ReferenceRenderer::load(off, options);
+        if (!renderer.ok()) return renderer.error();
+        return sharedOrComputed(identity, *renderer, mSettings, [&] {
+            log::info("computing the CPU reference with SSS off");
+            return renderProgressive(*renderer, mSettings);
+        });
     });
 }
 
 Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
-    return cached("thickness", identityOf(scene, mSettings, "thickness"), [&]() -> Result<Image> {
+    const std::string identity = identityOf(scene, mSettings, "thickness");
+    return cached("thickness", identity, [&]() -> Result<Image> {
         // Thickness reads only the geometry: a renderer without SSS skips
         // tessellating every character for the diffusion integral.
         Scene geometryOnly = scene;
         geometryOnly.settings.sss.enabled = false;
         auto renderer = reference::ReferenceRenderer::load(geometryOnly, referenceOptions(mSettings));
         if (!renderer.ok()) return renderer.error();
-        return renderer->renderThicknessMm(mSettings.width, mSettings.height);
+        return sharedOrComputed(identity, *renderer, mSettings,
+                                [&] { return renderer->renderThicknessMm(mSettings.width, mSettings.height); });
     });
 }
 
@@ -171,12 +214,19 @@ Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
         auto irradiance = session.renderer->captureIrradianceTextures(mSettings.irradianceSizeTexels);
         session.scene->settings.sss.enabled = configured;
         if (!irradiance.ok()) return irradiance.error();
+        // The engine's part is the captured irradiance itself: its hash keys the shared copy,
+        // whatever code and shaders made it.
+        ContentHash captured;
+        for (const Image& texture : *irradiance) {
+            captured.number(uint64_t(texture.width)).number(uint64_t(texture.height)).values(texture.texels);
+        }
         reference::ReferenceOptions options = referenceOptions(mSettings);
         options.engineIrradiance = std::move(*irradiance);
         options.samplesPerPixel = mSettings.changeSamplesPerPixel;
         auto renderer = reference::ReferenceRenderer::load(scene, options);
         if (!renderer.ok()) return renderer.error();
-        return renderer->renderScatterChange(mSettings.width, mSettings.height);
+        return sharedOrComputed(identity + "\nengine irradiance " + std::to_string(captured.value()), *renderer,
+                                mSettings, [&] { return renderer->renderScatterChange(mSettings.width, mSettings.height); });
     });
 }
 
