@@ -2,30 +2,27 @@
 // modes, times each configuration and measures its error against the CPU
 // reference.
 #include "Args.h"
-#include "ReferenceOptions.h"
-#include "measure/CauseMeter.h"
 #include "Commands.h"
-#include "measure/MeasuredRender.h"
 #include "Python.h"
-#include "measure/Session.h"
+#include "ReferenceOptions.h"
 
 #include "bench/BenchReport.h"
 #include "bench/SweepPlan.h"
 #include "bench/SweepSpec.h"
 #include "core/Image.h"
-#include "core/ImageMetrics.h"
-#include "core/ImageResample.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
 #include "core/TextFile.h"
+#include "measure/BenchSweep.h"
+#include "measure/CauseMeter.h"
+#include "measure/MeasuredRender.h"
+#include "measure/Session.h"
 #include "scene/SceneEnums.h"
-#include "scene/SceneLoader.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <set>
 
@@ -36,15 +33,11 @@ namespace dermis::cli {
 using namespace measure;
 namespace {
 
-using bench::BenchRow;
-
 // The reference takes ambient occlusion as 1 (reference/ReferenceRenderer.h),
 // so every configuration is rendered without SSAO: like is compared with like.
 // Light through thin parts is in the reference (the profile over 3-D distance),
 // so transmittance and the translucent shadow map stay as the scene sets them.
 const std::vector<std::string> kReferenceDefinition = {"ssao.enabled=false"};
-constexpr int kFirstWarmUpFrames = 3;
-constexpr double kErrorLimit = 0.02;  // "the cheapest setting within 2% relative RMSE"
 
 const char* const kHelp =
     "usage: dermis bench SCENE --out DIR [options]\n"
@@ -136,10 +129,97 @@ Status stagePlots(const std::filesystem::path& outDir, const std::vector<std::pa
     return success();
 }
 
-double sssGpuMs(const std::vector<PassSummary>& passes) {
-    double total = 0.0;
-    for (const PassSummary& pass : passes) total += bench::isSssPass(pass.name) ? pass.gpuMs : 0.0;
-    return total;
+std::string helpText() {
+    std::string errorImages;
+    for (const EnumEntry<SssMode>& mode : kSssModes) {
+        errorImages += (errorImages.empty() ? "error_" : ", error_") + std::string(mode.name) + ".png";
+    }
+    std::string help = kHelp;
+    for (const auto& [word, text] : {std::pair<std::string, std::string>{"DEFAULT_SWEEP", bench::kDefaultSweepSpec},
+                                     {"MODE_PREFIX", bench::modePrefixSyntax()},
+                                     {"ERROR_IMAGES", errorImages},
+                                     {"REGIONS", bench::kErrorRegions.list(", ")},
+                                     {"REFERENCE_OPTIONS", referenceOptionsHelp()}}) {
+        help.replace(help.find(word), word.size(), text);
+    }
+    return help;
+}
+
+struct BenchOptions {
+    BenchSweepSettings sweep;
+    std::filesystem::path outDir;
+    std::string sweepSpec;
+    std::vector<std::string> base;  // --set strings of every configuration, after kReferenceDefinition
+    std::vector<bench::PlannedConfig> planned;
+    ReferenceSettings reference;
+    std::string givenReference;  // --reference FILE, or empty
+    gl::Backend backend = gl::Backend::Auto;
+    bool plots = true;
+};
+
+// Every option checked, and every configuration loaded, before anything is rendered.
+// A usage error is marked by `usage`.
+Result<BenchOptions> parseBenchOptions(const ParsedArgs& args, bool* usage) {
+    *usage = true;
+    if (args.positional.size() != 1) return makeError("bench", "expected exactly one SCENE file");
+    if (!args.has("out")) return makeError("bench", "--out DIR is required");
+    BenchOptions options;
+    options.sweep.scenePath = args.positional[0];
+    options.outDir = args.get("out", "");
+    auto size = parseSize(args.get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return size.error();
+    auto frames = parsePositiveInt("--frames", args.get("frames", "5"));
+    if (!frames.ok()) return frames.error();
+    auto backend = parseBackend(args.get("backend", "auto"));
+    if (!backend.ok()) return backend.error();
+    auto reference = referenceSettingsFromArgs(args);
+    if (!reference.ok()) return reference.error();
+    options.sweepSpec = args.get("sweep", bench::kDefaultSweepSpec);
+    auto axes = bench::parseSweepSpec(options.sweepSpec);
+    if (!axes.ok()) return axes.error();
+    auto sweep = bench::expandSweep(*axes);
+    if (!sweep.ok()) return sweep.error();
+    options.sweep.width = size->first;
+    options.sweep.height = size->second;
+    options.sweep.frames = *frames;
+    options.backend = *backend;
+    options.reference = *reference;
+    options.reference.width = size->first;
+    options.reference.height = size->second;
+    options.givenReference = args.get("reference", "");
+    options.plots = !args.flags.count("no-plots");
+    options.base = kReferenceDefinition;
+    for (const std::string& change : args.all("set")) options.base.push_back(change);
+    *usage = false;
+    auto planned = bench::planConfigs(options.sweep.scenePath, options.base, *sweep);
+    if (!planned.ok()) return planned.error();
+    options.planned = std::move(*planned);
+    return options;
+}
+
+// Stages results.csv, passes.csv, summary.json, the error images and (unless
+// --no-plots) the plots.
+Status stageBenchOutputs(const BenchOptions& options, const BenchSweepResult& result,
+                         const nlohmann::ordered_json& summary, OutputFiles& outputs) {
+    auto file = [&](const std::string& name) { return (options.outDir / name).string(); };
+    for (const auto& [name, image] : result.errorImages)
+        if (Status saved = outputs.stageImage(file(name), image); !saved.ok()) return saved;
+    const std::vector<std::pair<std::string, std::string>> texts = {{"results.csv", bench::resultsCsv(result.rows)},
+                                                                     {"passes.csv", bench::passesCsv(result.rows)},
+                                                                     {"summary.json", summary.dump(2) + "\n"}};
+    for (const auto& [name, text] : texts)
+        if (Status written = outputs.stageText(file(name), text); !written.ok()) return written;
+    return options.plots ? stagePlots(options.outDir, texts, outputs) : success();
+}
+
+void printDefaults(const nlohmann::ordered_json& summary) {
+    for (const auto& [mode, entry] : summary["modes"].items()) {
+        if (log::quiet() || entry["default"].is_null()) continue;
+        std::printf("%s default: %.1f ms, relative RMSE %.2f%% (scatter %.2f%%)\n", mode.c_str(),
+                    entry["default"]["frame_gpu_ms"].get<double>(), 100.0 * entry["default"]["relative_rmse"].get<double>(),
+                    entry["default"]["scatter_relative_rmse"].is_null()
+                        ? NAN : 100.0 * entry["default"]["scatter_relative_rmse"].get<double>());
+    }
 }
 
 }  // namespace
@@ -149,165 +229,43 @@ int runBench(const std::vector<std::string>& rawArgs) {
     valued.insert(kReferenceOptionNames.begin(), kReferenceOptionNames.end());
     auto args = parseArgs(rawArgs, valued, {"no-plots", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
-    if (args->flags.count("help")) {
-        std::string errorImages;
-        for (const EnumEntry<SssMode>& mode : kSssModes) {
-            errorImages += (errorImages.empty() ? "error_" : ", error_") + std::string(mode.name) + ".png";
-        }
-        std::string help = kHelp;
-        for (const auto& [word, text] : {std::pair<std::string, std::string>{"DEFAULT_SWEEP", bench::kDefaultSweepSpec},
-                                         {"MODE_PREFIX", bench::modePrefixSyntax()},
-                                         {"ERROR_IMAGES", errorImages},
-                                         {"REGIONS", bench::kErrorRegions.list(", ")},
-                                         {"REFERENCE_OPTIONS", referenceOptionsHelp()}}) {
-            help.replace(help.find(word), word.size(), text);
-        }
-        std::fputs(help.c_str(), stdout);
-        return 0;
-    }
-    if (args->positional.size() != 1) return usageError(makeError("bench", "expected exactly one SCENE file"));
-    if (!args->has("out")) return usageError(makeError("bench", "--out DIR is required"));
+    if (args->flags.count("help")) return std::fputs(helpText().c_str(), stdout), 0;
     log::setQuiet(args->flags.count("quiet") > 0);
-    const std::string scenePath = args->positional[0];
-    const std::filesystem::path outDir = args->get("out", "");
-    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
-    if (!size.ok()) return usageError(size.error());
-    auto frames = parsePositiveInt("--frames", args->get("frames", "5"));
-    if (!frames.ok()) return usageError(frames.error());
-    auto backend = parseBackend(args->get("backend", "auto"));
-    if (!backend.ok()) return usageError(backend.error());
-    auto parsedReference = referenceSettingsFromArgs(*args);
-    if (!parsedReference.ok()) return usageError(parsedReference.error());
-    ReferenceSettings referenceSettings = *parsedReference;
-    auto axes = bench::parseSweepSpec(args->get("sweep", bench::kDefaultSweepSpec));
-    if (!axes.ok()) return usageError(axes.error());
-    auto sweep = bench::expandSweep(*axes);
-    if (!sweep.ok()) return usageError(sweep.error());
-    const int width = size->first;
-    const int height = size->second;
-
-    std::vector<std::string> base = kReferenceDefinition;
-    for (const std::string& change : args->all("set")) base.push_back(change);
-    auto planned = bench::planConfigs(scenePath, base, *sweep);
-    if (!planned.ok()) return failure(planned.error());
+    bool usage = false;
+    auto options = parseBenchOptions(*args, &usage);
+    if (!options.ok()) return usage ? usageError(options.error()) : failure(options.error());
 
     OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
-    if (Status prepared = outputs.prepareDirectory(outDir.string()); !prepared.ok()) return failure(prepared.error());
-    auto file = [&](const std::string& name) { return (outDir / name).string(); };
-
+    if (Status prepared = outputs.prepareDirectory(options->outDir.string()); !prepared.ok())
+        return failure(prepared.error());
     std::optional<Image> givenReference;
-    if (args->has("reference")) {
-        auto loaded = loadReferenceImage(args->get("reference", ""), width, height);
+    if (!options->givenReference.empty()) {
+        auto loaded = loadReferenceImage(options->givenReference, options->sweep.width, options->sweep.height);
         if (!loaded.ok()) return failure(loaded.error());
         givenReference = std::move(*loaded);
     }
-    auto session = Session::open(scenePath, base, *backend, false);
+    auto session = Session::open(options->sweep.scenePath, options->base, options->backend, false);
     if (!session.ok()) return failure(session.error());
-    referenceSettings.width = width;
-    referenceSettings.height = height;
-    ReferenceImages references(outDir, referenceSettings);
+    ReferenceImages references(options->outDir, options->reference);
     auto meter = CauseMeter::create(*session, references, std::move(givenReference));
     if (!meter.ok()) return failure(meter.error());
-    const Image& reference = meter->fullReference();
-    const std::vector<uint8_t> mask = meter->sssMask();
 
-    log::info("bench: " + std::to_string(planned->size()) + " configurations of " + scenePath + " at " +
-              std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(*frames) + " frames each");
-    std::vector<BenchRow> rows;
-    for (size_t i = 0; i < planned->size(); ++i) {
-        const bench::PlannedConfig& config = (*planned)[i];
-        session->scene->settings = config.scene.settings;
-        session->scene->environment = config.scene.environment;  // its quality keys may be swept (SweepSpec.cpp)
-        const int w = std::max(1, static_cast<int>(std::lround(width * config.sweep.scale)));
-        const int h = std::max(1, static_cast<int>(std::lround(height * config.sweep.scale)));
-        // The first configuration also warms up the process (first use of every
-        // program, the shadow maps' cache).
-        auto measured = measureRender(*session, scenePath, w, h, *frames, i == 0 ? kFirstWarmUpFrames : 1);
-        if (!measured.ok()) return failure(measured.error());
-        const Image diffuse = (w == width && h == height) ? measured->diffuse : resampleImage(measured->diffuse, width, height);
-        auto error = compareImages(reference, diffuse, mask);
-        if (!error.ok()) return failure(error.error());
-        auto errors = meter->measure(*session, diffuse, w, h);
-        if (!errors.ok()) return failure(errors.error());
-
-        if (config.isDefault) {
-            const std::string heatmap = file("error_" + config.sweep.mode + ".png");
-            const double scaleMax = roundUpToNiceNumber(differencePercentile(reference, diffuse, mask, 0.99));
-            if (Status saved = outputs.stageImage(heatmap, differenceHeatmap(reference, diffuse, mask, scaleMax));
-                !saved.ok())
-                return failure(saved.error());
-        }
-
-        BenchRow row;
-        row.id = static_cast<int>(i);
-        row.mode = config.sweep.mode;
-        if (config.scene.settings.mode == SssMode::ScreenSpace) {
-            row.technique = std::string(kSssTechniques.name(config.scene.settings.sss.technique));
-        }
-        row.label = config.sweep.label.empty() ? "default" : config.sweep.label;
-        row.isDefault = config.isDefault;
-        row.width = w;
-        row.height = h;
-        row.frames = *frames;
-        for (const PassSummary& pass : measured->timings.summary()) {
-            if (pass.executed) row.passes.push_back(pass);
-        }
-        row.frameGpuMs = measured->timings.frameGpuMs();
-        row.sssGpuMs = sssGpuMs(row.passes);
-        row.wallMs = measured->wallMsPerFrame;
-        row.relativeRmse = error->relativeRmse;
-        row.maxAbsDifference = error->maxAbsDifference;
-        row.psnrDb = error->psnrDb;
-        row.errors = *errors;
-        row.overrides = config.sweep.overrides;
-        rows.push_back(std::move(row));
-        if (!log::quiet()) {
-            std::printf("[%zu/%zu] %s %-40s %8.1f ms  relative RMSE: total %6.2f%%, irradiance %6.2f%%, scatter %6.2f%%\n",
-                        i + 1, planned->size(), rows.back().mode.c_str(), rows.back().label.c_str(),
-                        rows.back().frameGpuMs, 100.0 * rows.back().relativeRmse,
-                        100.0 * rows.back().errors.relativeRmse(bench::ErrorCause::Irradiance),
-                        100.0 * rows.back().errors.relativeRmse(bench::ErrorCause::Scatter));
-            std::fflush(stdout);
-        }
-    }
-    bench::markParetoFronts(rows);
-
-    nlohmann::ordered_json summary;
-    summary["scene"] = scenePath;
-    summary["width"] = width;
-    summary["height"] = height;
-    summary["frames"] = *frames;
-    summary["renderer"] = session->context->renderer();
-    summary["sweep"] = args->get("sweep", bench::kDefaultSweepSpec);
-    summary["every_configuration"] = base;
-    summary["reference"] = args->has("reference") ? args->get("reference", "") : file("reference.exr");
-    summary["reference_spp"] = referenceSettings.samplesPerPixel;
-    summary["irradiance_size_texels"] = referenceSettings.irradianceSizeTexels;
-    summary["sss_pixels"] = std::count(mask.begin(), mask.end(), uint8_t{1});
-    summary["uncovered_pixels"] = meter->uncoveredPixels();
-    for (const EnumEntry<bench::ErrorRegion>& region : bench::kErrorRegions) {
-        const std::vector<uint8_t> inRegion = bench::regionMask(meter->regions(), region.value);
-        summary["region_pixels"][std::string(region.name)] = std::count(inRegion.begin(), inRegion.end(), uint8_t{1});
-    }
-    summary["scatter_error_limit"] = bench::kScatterErrorLimit;  // the goal line of the plots
-    summary["modes"] = bench::benchSummary(rows, kErrorLimit);
-    const std::vector<std::pair<std::string, std::string>> texts = {{"results.csv", bench::resultsCsv(rows)},
-                                                                     {"passes.csv", bench::passesCsv(rows)},
-                                                                     {"summary.json", summary.dump(2) + "\n"}};
-    for (const auto& [name, text] : texts)
-        if (Status written = outputs.stageText(file(name), text); !written.ok()) return failure(written.error());
-    if (!args->flags.count("no-plots")) {
-        if (Status plotted = stagePlots(outDir, texts, outputs); !plotted.ok()) return failure(plotted.error());
-    }
+    log::info("bench: " + std::to_string(options->planned.size()) + " configurations of " + options->sweep.scenePath +
+              " at " + std::to_string(options->sweep.width) + "x" + std::to_string(options->sweep.height) + ", " +
+              std::to_string(options->sweep.frames) + " frames each");
+    auto result = measureBenchSweep(*session, *meter, options->planned, options->sweep);
+    if (!result.ok()) return failure(result.error());
+    nlohmann::ordered_json summary = benchSummaryJson(options->sweep, *result, *meter, *session);
+    summary["sweep"] = options->sweepSpec;
+    summary["every_configuration"] = options->base;
+    summary["reference"] =
+        options->givenReference.empty() ? (options->outDir / "reference.exr").string() : options->givenReference;
+    summary["reference_spp"] = options->reference.samplesPerPixel;
+    summary["irradiance_size_texels"] = options->reference.irradianceSizeTexels;
+    if (Status staged = stageBenchOutputs(*options, *result, summary, outputs); !staged.ok()) return failure(staged.error());
     if (Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
-    for (const auto& [mode, entry] : summary["modes"].items()) {
-        if (log::quiet() || entry["default"].is_null()) continue;
-        std::printf("%s default: %.1f ms, relative RMSE %.2f%% (scatter %.2f%%)\n", mode.c_str(),
-                    entry["default"]["frame_gpu_ms"].get<double>(), 100.0 * entry["default"]["relative_rmse"].get<double>(),
-                    entry["default"]["scatter_relative_rmse"].is_null()
-                        ? NAN : 100.0 * entry["default"]["scatter_relative_rmse"].get<double>());
-    }
-    log::info("wrote " + outDir.string());
+    printDefaults(summary);
+    log::info("wrote " + options->outDir.string());
     return 0;
 }
 
