@@ -145,53 +145,34 @@ std::string helpText() {
     return help;
 }
 
-struct BenchOptions {
-    BenchSweepSettings sweep;
-    std::filesystem::path outDir;
+struct BenchOptions : MeasureOptions {
     std::string sweepSpec;
     std::vector<std::string> base;  // --set strings of every configuration, after kReferenceDefinition
     std::vector<bench::PlannedConfig> planned;
-    ReferenceSettings reference;
     std::string givenReference;  // --reference FILE, or empty
-    gl::Backend backend = gl::Backend::Auto;
     bool plots = true;
+    BenchSweepSettings sweep() const { return {scenePath, width, height, frames}; }
 };
 
 // Every option checked, and every configuration loaded, before anything is rendered.
 // A usage error is marked by `usage`.
 Result<BenchOptions> parseBenchOptions(const ParsedArgs& args, bool* usage) {
     *usage = true;
-    if (args.positional.size() != 1) return makeError("bench", "expected exactly one SCENE file");
-    if (!args.has("out")) return makeError("bench", "--out DIR is required");
+    auto common = measureOptionsFromArgs(args, "bench");
+    if (!common.ok()) return common.error();
     BenchOptions options;
-    options.sweep.scenePath = args.positional[0];
-    options.outDir = args.get("out", "");
-    auto size = parseSize(args.get("size", "640x360"), kMaxFrameDimension);
-    if (!size.ok()) return size.error();
-    auto frames = parsePositiveInt("--frames", args.get("frames", "5"));
-    if (!frames.ok()) return frames.error();
-    auto backend = parseBackend(args.get("backend", "auto"));
-    if (!backend.ok()) return backend.error();
-    auto reference = referenceSettingsFromArgs(args);
-    if (!reference.ok()) return reference.error();
+    static_cast<MeasureOptions&>(options) = std::move(*common);
     options.sweepSpec = args.get("sweep", bench::kDefaultSweepSpec);
     auto axes = bench::parseSweepSpec(options.sweepSpec);
     if (!axes.ok()) return axes.error();
     auto sweep = bench::expandSweep(*axes);
     if (!sweep.ok()) return sweep.error();
-    options.sweep.width = size->first;
-    options.sweep.height = size->second;
-    options.sweep.frames = *frames;
-    options.backend = *backend;
-    options.reference = *reference;
-    options.reference.width = size->first;
-    options.reference.height = size->second;
     options.givenReference = args.get("reference", "");
     options.plots = !args.flags.count("no-plots");
     options.base = kReferenceDefinition;
     for (const std::string& change : args.all("set")) options.base.push_back(change);
     *usage = false;
-    auto planned = bench::planConfigs(options.sweep.scenePath, options.base, *sweep);
+    auto planned = bench::planConfigs(options.scenePath, options.base, *sweep);
     if (!planned.ok()) return planned.error();
     options.planned = std::move(*planned);
     return options;
@@ -240,22 +221,22 @@ int runBench(const std::vector<std::string>& rawArgs) {
         return failure(prepared.error());
     std::optional<Image> givenReference;
     if (!options->givenReference.empty()) {
-        auto loaded = loadReferenceImage(options->givenReference, options->sweep.width, options->sweep.height);
+        auto loaded = loadReferenceImage(options->givenReference, options->width, options->height);
         if (!loaded.ok()) return failure(loaded.error());
         givenReference = std::move(*loaded);
     }
-    auto session = Session::open(options->sweep.scenePath, options->base, options->backend, false);
+    auto session = Session::open(options->scenePath, options->base, options->backend, false);
     if (!session.ok()) return failure(session.error());
     ReferenceImages references(options->outDir, options->reference);
     auto meter = CauseMeter::create(*session, references, std::move(givenReference));
     if (!meter.ok()) return failure(meter.error());
 
-    log::info("bench: " + std::to_string(options->planned.size()) + " configurations of " + options->sweep.scenePath +
-              " at " + std::to_string(options->sweep.width) + "x" + std::to_string(options->sweep.height) + ", " +
-              std::to_string(options->sweep.frames) + " frames each");
-    auto result = measureBenchSweep(*session, *meter, options->planned, options->sweep);
+    log::info("bench: " + std::to_string(options->planned.size()) + " configurations of " + options->scenePath +
+              " at " + std::to_string(options->width) + "x" + std::to_string(options->height) + ", " +
+              std::to_string(options->frames) + " frames each");
+    auto result = measureBenchSweep(*session, *meter, options->planned, options->sweep());
     if (!result.ok()) return failure(result.error());
-    nlohmann::ordered_json summary = benchSummaryJson(options->sweep, *result, *meter, *session);
+    nlohmann::ordered_json summary = benchSummaryJson(options->sweep(), *result, *meter, *session);
     summary["sweep"] = options->sweepSpec;
     summary["every_configuration"] = options->base;
     summary["reference"] =

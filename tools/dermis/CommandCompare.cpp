@@ -1,26 +1,22 @@
 // dermis compare: one frame of a scene in screen-space and in texture-space
 // mode, the images, a difference heatmap and the metrics.
 #include "Args.h"
-#include "ReferenceOptions.h"
-#include "measure/CauseMeter.h"
 #include "Commands.h"
-#include "measure/MeasuredRender.h"
-#include "measure/Session.h"
+#include "ReferenceOptions.h"
 
 #include "core/Image.h"
 #include "core/ImageMetrics.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
-#include "bench/BenchReport.h"
-#include "core/TextFile.h"
-#include "frame/Renderer.h"
+#include "measure/CauseMeter.h"
+#include "measure/MeasuredRender.h"
+#include "measure/ModeComparison.h"
+#include "measure/Session.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <set>
 
@@ -73,13 +69,76 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene, the GL context or a write fails,\n"
     "2 for bad command-line usage.\n";
 
-Result<MeasuredRender> renderMode(Session& session, const std::string& scenePath, SssMode mode, int width,
-                                  int height, int frames) {
-    session.scene->settings.mode = mode;
-    log::info("rendering " + scenePath + " in mode " + std::string(kSssModes.name(mode)));
-    return measureRender(session, scenePath, width, height, frames, /*warmUpFrames=*/0);
+std::string helpText() {
+    std::string help = kHelp;
+    const std::string word = "REFERENCE_OPTIONS";
+    help.replace(help.find(word), word.size(), referenceOptionsHelp());
+    return help;
 }
 
+struct CompareOptions : MeasureOptions {
+    bool byCause = false;
+    bool glDebug = false;
+    std::string referencePath;  // --reference FILE, or empty
+    std::vector<std::string> overrides;
+};
+
+Result<CompareOptions> parseCompareOptions(const ParsedArgs& args) {
+    auto common = measureOptionsFromArgs(args, "compare");
+    if (!common.ok()) return common.error();
+    CompareOptions options;
+    static_cast<MeasureOptions&>(options) = std::move(*common);
+    options.byCause = args.flags.count("errors") > 0;
+    options.glDebug = args.flags.count("gl-debug") > 0;
+    options.referencePath = args.get("reference", "");
+    options.overrides = args.all("set");
+    if (options.byCause) options.overrides.insert(options.overrides.begin(), "ssao.enabled=false");
+    return options;
+}
+
+// The metrics of every comparison the options ask for.
+Result<nlohmann::ordered_json> compareMetrics(const CompareOptions& options, Session& session, const ModeRenders& modes,
+                                              const std::optional<Image>& reference, double* heatmapScaleMax,
+                                              std::optional<ImageDifference>* difference) {
+    nlohmann::ordered_json metrics;
+    metrics["scene"] = options.scenePath;
+    metrics["width"] = options.width;
+    metrics["height"] = options.height;
+    metrics["frames"] = options.frames;
+    metrics["compared"] = "diffuse AOV (linear), texture space (test) against screen space (reference), SSS pixels";
+    *heatmapScaleMax = addModeDifference(modes, metrics, difference);
+    if (reference) {
+        metrics["against_reference"] = againstReference(modes, *reference);
+        metrics["against_reference"]["file"] = options.referencePath;
+    }
+    if (options.byCause) {
+        ReferenceImages references(options.outDir, options.reference);
+        auto meter = CauseMeter::create(session, references, reference);
+        if (!meter.ok()) return meter.error();
+        metrics["uncovered_pixels"] = meter->uncoveredPixels();
+        auto errors = errorsByCause(session, *meter, modes, options.width, options.height);
+        if (!errors.ok()) return errors.error();
+        metrics["errors"] = *errors;
+    }
+    for (const auto& [mode, measured] : modes.renders) metrics["timings"][mode] = nlohmann::json::parse(measured.timingsJson);
+    return metrics;
+}
+
+// MODE.exr (the diffuse AOV) and MODE.png (the final image) of every mode, the heatmap and metrics.json.
+Status stageCompareOutputs(const CompareOptions& options, const ModeRenders& modes, const nlohmann::ordered_json& metrics,
+                           double heatmapScaleMax, OutputFiles& outputs) {
+    auto file = [&](const std::string& name) { return (options.outDir / name).string(); };
+    for (const char* extension : {".exr", ".png"}) {
+        for (const auto& [mode, measured] : modes.renders) {
+            const Image& image = std::string(extension) == ".exr" ? measured.diffuse : measured.finalImage;
+            if (const Status saved = outputs.stageImage(file(mode + extension), image); !saved.ok()) return saved;
+        }
+    }
+    const Image heatmap = differenceHeatmap(modes.of(SssMode::ScreenSpace).diffuse,
+                                            modes.of(SssMode::TextureSpace).diffuse, modes.sssMask, heatmapScaleMax);
+    if (const Status saved = outputs.stageImage(file("difference.png"), heatmap); !saved.ok()) return saved;
+    return outputs.stageText(file("metrics.json"), metrics.dump(2) + "\n");
+}
 
 }  // namespace
 
@@ -88,145 +147,38 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     valued.insert(kReferenceOptionNames.begin(), kReferenceOptionNames.end());
     auto args = parseArgs(rawArgs, valued, {"errors", "gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
-    if (args->flags.count("help")) {
-        std::string help = kHelp;
-        const std::string word = "REFERENCE_OPTIONS";
-        help.replace(help.find(word), word.size(), referenceOptionsHelp());
-        std::fputs(help.c_str(), stdout);
-        return 0;
-    }
-    if (args->positional.size() != 1) return usageError(makeError("compare", "expected exactly one SCENE file"));
-    if (!args->has("out")) return usageError(makeError("compare", "--out DIR is required"));
+    if (args->flags.count("help")) return std::fputs(helpText().c_str(), stdout), 0;
+    auto options = parseCompareOptions(*args);
+    if (!options.ok()) return usageError(options.error());
     log::setQuiet(args->flags.count("quiet") > 0);
-    const std::string scenePath = args->positional[0];
-    const std::filesystem::path outDir = args->get("out", "");
-    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
-    if (!size.ok()) return usageError(size.error());
-    auto frames = parsePositiveInt("--frames", args->get("frames", "5"));
-    if (!frames.ok()) return usageError(frames.error());
-    auto backend = parseBackend(args->get("backend", "auto"));
-    if (!backend.ok()) return usageError(backend.error());
 
     std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec || !std::filesystem::is_directory(outDir)) return failure(makeError(outDir.string(), "cannot create the directory"));
-
+    std::filesystem::create_directories(options->outDir, ec);
+    if (ec || !std::filesystem::is_directory(options->outDir))
+        return failure(makeError(options->outDir.string(), "cannot create the directory"));
     std::optional<Image> reference;
-    if (args->has("reference")) {
-        auto loaded = loadReferenceImage(args->get("reference", ""), size->first, size->second);
+    if (!options->referencePath.empty()) {
+        auto loaded = loadReferenceImage(options->referencePath, options->width, options->height);
         if (!loaded.ok()) return failure(loaded.error());
         reference = std::move(*loaded);
     }
-
-    const bool byCause = args->flags.count("errors") > 0;
-    auto referenceSettings = referenceSettingsFromArgs(*args);
-    if (!referenceSettings.ok()) return usageError(referenceSettings.error());
-    std::vector<std::string> overrides = args->all("set");
-    if (byCause) overrides.insert(overrides.begin(), "ssao.enabled=false");
-    auto session = Session::open(scenePath, overrides, *backend, args->flags.count("gl-debug") > 0);
+    auto session = Session::open(options->scenePath, options->overrides, options->backend, options->glDebug);
     if (!session.ok()) return failure(session.error());
-    const int width = size->first;
-    const int height = size->second;
-
-    // Every mode is rendered; the difference is texture space (test) against screen space (reference).
-    std::vector<std::pair<std::string, MeasuredRender>> renders;
-    for (const EnumEntry<SssMode>& mode : kSssModes) {
-        auto measured = renderMode(*session, scenePath, mode.value, width, height, *frames);
-        if (!measured.ok()) return failure(measured.error());
-        renders.emplace_back(std::string(mode.name), std::move(*measured));
-    }
-    auto rendered = [&renders](SssMode mode) -> const MeasuredRender* {
-        for (const auto& [name, measured] : renders) {
-            if (name == kSssModes.name(mode)) return &measured;
-        }
-        return &renders.front().second;
-    };
-    const MeasuredRender* ss = rendered(SssMode::ScreenSpace);
-    const MeasuredRender* ts = rendered(SssMode::TextureSpace);
-    auto mask = sssMask(*session->renderer, width, height);
-    if (!mask.ok()) return failure(mask.error());
-    if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
-
-    auto file = [&](const std::string& name) { return (outDir / name).string(); };
+    auto modes = renderEveryMode(*session, options->scenePath, options->width, options->height, options->frames);
+    if (!modes.ok()) return failure(modes.error());
+    double heatmapScaleMax = 0.0;
+    std::optional<ImageDifference> difference;
+    auto metrics = compareMetrics(*options, *session, *modes, reference, &heatmapScaleMax, &difference);
+    if (!metrics.ok()) return failure(metrics.error());
     OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
-    for (const char* extension : {".exr", ".png"}) {
-        for (const auto& [mode, measured] : renders) {
-            const Image& image = std::string(extension) == ".exr" ? measured.diffuse : measured.finalImage;
-            if (const Status saved = outputs.stageImage(file(mode + extension), image); !saved.ok())
-                return failure(saved.error());
-        }
-    }
-
-    nlohmann::ordered_json metrics;
-    metrics["scene"] = scenePath;
-    metrics["width"] = width;
-    metrics["height"] = height;
-    metrics["frames"] = *frames;
-    metrics["compared"] = "diffuse AOV (linear), texture space (test) against screen space (reference), SSS pixels";
-    auto difference = compareImages(ss->diffuse, ts->diffuse, *mask);
-    double scaleMax = 0.0;
-    if (difference.ok()) {
-        metrics.update(differenceJson(*difference));
-        // The heatmap's scale tops out at the 99th percentile, so that a few
-        // outliers do not leave the rest black; larger differences saturate.
-        const double p99 = differencePercentile(ss->diffuse, ts->diffuse, *mask, 0.99);
-        metrics["difference_p99"] = std::isfinite(p99) ? nlohmann::ordered_json(p99) : nlohmann::ordered_json();
-        scaleMax = roundUpToNiceNumber(p99);
-        metrics["heatmap_scale_max"] = scaleMax;
-    } else {
-        metrics["sss_pixels"] = 0;
-        log::warn("no SSS pixel on screen: the metrics are empty");
-    }
-    if (reference) {
-        nlohmann::ordered_json against;
-        against["file"] = args->get("reference", "");
-        for (const auto& [mode, measured] : renders) {
-            auto error = compareImages(*reference, measured.diffuse, *mask);
-            against[mode] = error.ok() ? differenceJson(*error) : nlohmann::ordered_json();
-            if (error.ok() && !log::quiet()) {
-                std::printf("%s against the reference: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", mode.c_str(),
-                            error->relativeRmse, error->maxAbsDifference, error->psnrDb);
-            }
-        }
-        metrics["against_reference"] = against;
-    }
-    if (byCause) {
-        referenceSettings->width = width;
-        referenceSettings->height = height;
-        ReferenceImages references(outDir, *referenceSettings);
-        auto meter = CauseMeter::create(*session, references, reference);
-        if (!meter.ok()) return failure(meter.error());
-        metrics["uncovered_pixels"] = meter->uncoveredPixels();
-        const SssMode shippedMode = session->scene->settings.mode;
-        for (const auto& [mode, measured] : renders) {
-            session->scene->settings.mode = *kSssModes.parse(mode);
-            auto errors = meter->measure(*session, measured.diffuse, width, height);
-            if (!errors.ok()) return failure(errors.error());
-            metrics["errors"][mode] = bench::causeErrorsJson(*errors);
-            if (!log::quiet()) {
-                std::printf("%s relative RMSE: total %.2f%%, irradiance %.2f%%, scatter %.2f%%\n", mode.c_str(),
-                            100.0 * errors->relativeRmse(bench::ErrorCause::Total),
-                            100.0 * errors->relativeRmse(bench::ErrorCause::Irradiance),
-                            100.0 * errors->relativeRmse(bench::ErrorCause::Scatter));
-            }
-        }
-        session->scene->settings.mode = shippedMode;
-    }
-    for (const auto& [mode, measured] : renders) metrics["timings"][mode] = nlohmann::json::parse(measured.timingsJson);
-
-    if (const Status saved =
-            outputs.stageImage(file("difference.png"), differenceHeatmap(ss->diffuse, ts->diffuse, *mask, scaleMax));
-        !saved.ok()) {
-        return failure(saved.error());
-    }
-    if (const Status written = outputs.stageText(file("metrics.json"), metrics.dump(2) + "\n"); !written.ok())
-        return failure(written.error());
+    if (Status staged = stageCompareOutputs(*options, *modes, *metrics, heatmapScaleMax, outputs); !staged.ok())
+        return failure(staged.error());
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
-    if (!log::quiet() && difference.ok()) {
+    if (!log::quiet() && difference) {
         std::printf("%zu SSS pixels: relative RMSE %.4f, max difference %.4g, PSNR %.1f dB\n", difference->pixels,
                     difference->relativeRmse, difference->maxAbsDifference, difference->psnrDb);
     }
-    log::info("wrote " + outDir.string());
+    log::info("wrote " + options->outDir.string());
     return 0;
 }
 

@@ -93,4 +93,28 @@ Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
     return settings;
 }
 
+Result<MeasureOptions> measureOptionsFromArgs(const ParsedArgs& args, const std::string& command) {
+    if (args.positional.size() != 1) return makeError(command, "expected exactly one SCENE file");
+    if (!args.has("out")) return makeError(command, "--out DIR is required");
+    MeasureOptions options;
+    options.scenePath = args.positional[0];
+    options.outDir = args.get("out", "");
+    auto size = parseSize(args.get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return size.error();
+    auto frames = parsePositiveInt("--frames", args.get("frames", "5"));
+    if (!frames.ok()) return frames.error();
+    auto backend = parseBackend(args.get("backend", "auto"));
+    if (!backend.ok()) return backend.error();
+    auto reference = referenceSettingsFromArgs(args);
+    if (!reference.ok()) return reference.error();
+    options.width = size->first;
+    options.height = size->second;
+    options.frames = *frames;
+    options.backend = *backend;
+    options.reference = *reference;
+    options.reference.width = size->first;
+    options.reference.height = size->second;
+    return options;
+}
+
 }  // namespace dermis::cli
