@@ -2,12 +2,11 @@
 // per on-screen scale, written as a quality table (docs/quality.md).
 #include "Args.h"
 #include "Commands.h"
-#include "measure/MeasuredRender.h"
+#include "measure/QualityTuning.h"
 #include "measure/Session.h"
 
 #include "bench/BenchReport.h"
 #include "bench/QualityTune.h"
-#include "core/ImageMetrics.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
 #include "core/TextFile.h"
@@ -25,7 +24,6 @@ namespace dermis::cli {
 using namespace measure;
 namespace {
 
-constexpr int kFirstWarmUpFrames = 3;
 // A choice qualifies when its loss is within this fraction of the budget: the
 // loss depends on the content as well as the scale, and on
 // content/scenes/crowd8_mixed.json at 640x360 a table tuned at the full
@@ -95,23 +93,6 @@ Result<std::vector<double>> parseDistances(const std::string& text) {
     return out;
 }
 
-double sssGpuMs(const FrameTimings& timings) {
-    double total = 0.0;
-    for (const PassSummary& pass : timings.summary()) {
-        if (pass.executed && bench::isSssPass(pass.name)) total += pass.gpuMs;
-    }
-    return total;
-}
-
-// The largest pixels per mm of the characters with SSS in the last frame.
-float nearestPixelsPerMm(const Session& session) {
-    float best = 0.0f;
-    for (const CharacterReport& report : session.renderer->characterReports()) {
-        if (report.hasSss && report.visible) best = std::max(best, report.pixelsPerMm);
-    }
-    return best;
-}
-
 std::string markdownPath(const std::string& jsonPath) {
     std::filesystem::path path(jsonPath);
     path.replace_extension(".md");
@@ -162,73 +143,10 @@ int runTune(const std::vector<std::string>& rawArgs) {
     for (const std::string& change : args->all("set")) base.push_back(change);
     auto session = Session::open(scenePath, base, *backend, false);
     if (!session.ok()) return failure(session.error());
-    const Camera camera = session->scene->camera;
-    const SssSettings sss = session->scene->settings.sss;
-    const std::vector<SssChoice>& candidates = bench::tuneCandidates();
-    const size_t total = distances->size() * (candidates.size() + 1);
-    log::info("tune: margin " + formatNumberForMessage(*margin) + " x budget; " + scenePath + " at " + std::to_string(width) + "x" + std::to_string(height) + ", " +
-              std::to_string(distances->size()) + " distances x " + std::to_string(candidates.size() + 1) +
-              " choices, " + std::to_string(*frames) + " frames each");
-
-    QualityTable table;
-    table.budget = *budget;
-    table.tunedOn = scenePath;
-    table.width = width;
-    table.height = height;
-    size_t done = 0;
-    for (double distance : *distances) {
-        session->scene->camera = camera;
-        session->scene->camera.positionM = camera.targetM + float(distance) * (camera.positionM - camera.targetM);
-        // The finest, the reference of every loss at this view.
-        session->scene->settings.sss = sss;
-        SssChoice::finest().applyTo(session->scene->settings.sss);
-        session->scene->settings.sss.minWidthPx = 0.0f;
-        auto finest = measureRender(*session, scenePath, width, height, *frames, done == 0 ? kFirstWarmUpFrames : 1);
-        if (!finest.ok()) return failure(finest.error());
-        const float pixelsPerMm = nearestPixelsPerMm(*session);
-        auto mask = sssMask(*session->renderer, width, height);
-        if (!mask.ok()) return failure(mask.error());
-        if (pixelsPerMm <= 0.0f || std::count(mask->begin(), mask->end(), uint8_t{1}) == 0) {
-            return failure(makeError(scenePath, "no SSS pixel is seen at distance factor " +
-                                                    formatNumberForMessage(distance) + " (fewer or smaller --distances)"));
-        }
-        const double finestSssMs = sssGpuMs(finest->timings);
-        ++done;
-        if (!log::quiet()) {
-            std::printf("[%zu/%zu] distance %g: %.3g px/mm, finest %-28s SSS %8.3f ms  frame %8.3f ms\n", done, total,
-                        distance, pixelsPerMm, describeSssChoice(SssChoice::finest()).c_str(), finestSssMs,
-                        finest->timings.frameGpuMs());
-            std::fflush(stdout);
-        }
-        std::vector<bench::TuneMeasurement> measured;
-        for (const SssChoice& choice : candidates) {
-            session->scene->settings.sss = sss;
-            choice.applyTo(session->scene->settings.sss);
-            auto render = measureRender(*session, scenePath, width, height, *frames, 1);
-            if (!render.ok()) return failure(render.error());
-            auto loss = compareImages(finest->diffuse, render->diffuse, *mask);
-            if (!loss.ok()) return failure(loss.error());
-            measured.push_back({choice, loss->relativeRmse, sssGpuMs(render->timings), render->timings.frameGpuMs()});
-            ++done;
-            if (!log::quiet()) {
-                std::printf("[%zu/%zu] distance %g: %.3g px/mm, %-35s SSS %8.3f ms  frame %8.3f ms  loss %6.3f%%%s\n",
-                            done, total, distance, pixelsPerMm, describeSssChoice(choice).c_str(),
-                            measured.back().sssMs, measured.back().frameMs, 100.0 * measured.back().loss,
-                            measured.back().loss <= *margin * *budget ? "" : "  (over margin x budget)");
-                std::fflush(stdout);
-            }
-        }
-        table.rows.push_back(bench::cheapestWithin(pixelsPerMm, measured, *margin * *budget, finestSssMs));
-    }
-    std::sort(table.rows.begin(), table.rows.end(),
-              [](const QualityRow& a, const QualityRow& b) { return a.pixelsPerMm < b.pixelsPerMm; });
-    for (size_t i = 1; i < table.rows.size(); ++i) {
-        if (table.rows[i].pixelsPerMm <= table.rows[i - 1].pixelsPerMm) {
-            return failure(makeError(scenePath, "two distances give the same scale (" +
-                                                    formatNumberForMessage(table.rows[i].pixelsPerMm) +
-                                                    " px/mm): choose distance factors further apart"));
-        }
-    }
+    TuneSettings settings{scenePath, width, height, *distances, *frames, *budget, *margin};
+    auto tuned = tuneQualityTable(*session, settings);
+    if (!tuned.ok()) return failure(tuned.error());
+    const QualityTable& table = *tuned;
     // Written, then read back as a scene would, so a table tune writes always loads.
     const std::string json = qualityTableJson(table);
     if (auto check = parseQualityTable(json, outPath); !check.ok()) return failure(check.error());
