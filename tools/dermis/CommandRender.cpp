@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 namespace dermis::cli {
 
@@ -74,6 +75,101 @@ std::string sequenceFramePath(const std::string& outPath, size_t frame) {
     return (path.parent_path() / (path.stem().string() + number + path.extension().string())).string();
 }
 
+struct RenderOptions {
+    std::string scenePath;
+    FrameRequest request;           // the frame's size and AOV (Radiance for a final EXR), the time
+    int frames = 10;                // timed frames, when there is no sequence
+    std::vector<float> sequence;    // --sequence: one frame per time, each written
+    std::string outPath;
+    std::optional<std::string> timingsPath;  // --timings
+    std::vector<std::string> overrides;
+    gl::Backend backend = gl::Backend::Auto;
+    bool glDebug = false;
+};
+
+// --mode and --variant as the scene overrides they stand for.
+Status addModeOverrides(const ParsedArgs& args, std::vector<std::string>& overrides) {
+    if (args.has("mode")) {
+        const std::string mode = args.get("mode", "");
+        if (!kSssModes.parse(mode)) return makeError("--mode " + mode, "expected " + expectedNames(kSssModes));
+        overrides.push_back("mode=" + mode);
+    }
+    if (args.has("variant")) {
+        const std::string variant = args.get("variant", "");
+        if (!kSssVariants.parse(variant)) return makeError("--variant " + variant, "expected " + expectedNames(kSssVariants));
+        // The variant's blur too, whatever the scene file names.
+        overrides.push_back("sss.variant=" + variant);
+        overrides.push_back("sss.blur=variant");
+    }
+    return success();
+}
+
+Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
+    if (args.positional.size() != 1) return makeError("render", "expected exactly one SCENE file");
+    RenderOptions options;
+    options.scenePath = args.positional[0];
+    auto size = parseSize(args.get("size", "640x360"), kMaxFrameDimension);
+    if (!size.ok()) return size.error();
+    auto frames = parsePositiveInt("--frames", args.get("frames", "10"));
+    if (!frames.ok()) return frames.error();
+    auto aov = kAovs.parse(args.get("aov", "final"));
+    if (!aov) return makeError("--aov " + args.get("aov", ""), "expected one of " + kAovs.list());
+    const std::string defaultOut = "out/" + std::filesystem::path(options.scenePath).stem().string() + ".png";
+    options.outPath = args.get("out", defaultOut);
+    const std::string extension = std::filesystem::path(options.outPath).extension().string();
+    if (extension != ".png" && extension != ".exr") return makeError("--out " + options.outPath, "the file must end in .png or .exr");
+    auto backend = parseBackend(args.get("backend", "auto"));
+    if (!backend.ok()) return backend.error();
+    auto time = parseFloatIn("--time", args.get("time", "0"), -kMaxAnimationTimeS, kMaxAnimationTimeS);
+    if (!time.ok()) return time.error();
+    if (args.has("sequence")) {
+        if (args.has("time") || args.has("frames"))
+            return makeError("--sequence", "renders each time once: give it without --time and --frames");
+        auto parsed = parseSequence("--sequence", args.get("sequence", ""), kMaxSequenceFrames);
+        if (!parsed.ok()) return parsed.error();
+        options.sequence = std::move(*parsed);
+    }
+    options.overrides = args.all("set");
+    if (Status modes = addModeOverrides(args, options.overrides); !modes.ok()) return modes.error();
+    // An EXR of the final image is linear: the frame before exposure and tone mapping.
+    options.request = FrameRequest{size->first, size->second, (*aov == Aov::Final && extension == ".exr") ? Aov::Radiance : *aov};
+    options.request.timeS = *time;
+    options.frames = options.sequence.empty() ? *frames : static_cast<int>(options.sequence.size());
+    if (args.has("timings")) options.timingsPath = args.get("timings", "");
+    options.backend = *backend;
+    options.glDebug = args.flags.count("gl-debug") > 0;
+    return options;
+}
+
+// Renders every frame; a sequence's frames are staged as they come, else the last one is.
+// Returns the wall milliseconds per frame.
+Result<double> renderFrames(const RenderOptions& options, Session& session, OutputFiles& outputs) {
+    Renderer& renderer = *session.renderer;
+    FrameRequest request = options.request;
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < options.frames; ++i) {
+        if (!options.sequence.empty()) request.timeS = options.sequence[static_cast<size_t>(i)];
+        if (const Status status = renderer.renderFrame(request); !status.ok()) return status.error();
+        if (options.sequence.empty()) continue;
+        auto image = renderer.readOutput();
+        if (!image.ok()) return image.error();
+        const std::string framePath = sequenceFramePath(options.outPath, static_cast<size_t>(i));
+        if (const Status saved = outputs.stageImage(framePath, *image); !saved.ok()) return saved.error();
+        log::info("frame " + std::to_string(i + 1) + "/" + std::to_string(options.frames) + " at " +
+                  formatNumberForMessage(request.timeS) + " s: " + framePath);
+    }
+    glFinish();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    renderer.finishTimings();
+    if (const Status gl = session.checkGlErrors(); !gl.ok()) return gl.error();
+    if (options.sequence.empty()) {
+        auto image = renderer.readOutput();
+        if (!image.ok()) return image.error();
+        if (const Status saved = outputs.stageImage(options.outPath, *image); !saved.ok()) return saved.error();
+    }
+    return wallMs / options.frames;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
@@ -86,97 +182,28 @@ int runRender(const std::vector<std::string>& rawArgs) {
                     kSssVariants.helpLines(indent).c_str());
         return 0;
     }
-    if (args->positional.size() != 1) return usageError(makeError("render", "expected exactly one SCENE file"));
+    auto options = parseRenderOptions(*args);
+    if (!options.ok()) return usageError(options.error());
     log::setQuiet(args->flags.count("quiet") > 0);
-
-    const std::string scenePath = args->positional[0];
-    auto size = parseSize(args->get("size", "640x360"), kMaxFrameDimension);
-    if (!size.ok()) return usageError(size.error());
-    auto frames = parsePositiveInt("--frames", args->get("frames", "10"));
-    if (!frames.ok()) return usageError(frames.error());
-    auto aov = kAovs.parse(args->get("aov", "final"));
-    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + kAovs.list()));
-    const std::string defaultOut = "out/" + std::filesystem::path(scenePath).stem().string() + ".png";
-    const std::string outPath = args->get("out", defaultOut);
-    const std::string extension = std::filesystem::path(outPath).extension().string();
-    if (extension != ".png" && extension != ".exr") {
-        return usageError(makeError("--out " + outPath, "the file must end in .png or .exr"));
-    }
-    auto backend = parseBackend(args->get("backend", "auto"));
-    if (!backend.ok()) return usageError(backend.error());
-    auto time = parseFloatIn("--time", args->get("time", "0"), -kMaxAnimationTimeS, kMaxAnimationTimeS);
-    if (!time.ok()) return usageError(time.error());
-    std::vector<float> sequence;
-    if (args->has("sequence")) {
-        if (args->has("time") || args->has("frames"))
-            return usageError(makeError("--sequence", "renders each time once: give it without --time and --frames"));
-        auto parsed = parseSequence("--sequence", args->get("sequence", ""), kMaxSequenceFrames);
-        if (!parsed.ok()) return usageError(parsed.error());
-        sequence = std::move(*parsed);
-    }
-
-    std::vector<std::string> overrides = args->all("set");
-    if (args->has("mode")) {
-        const std::string mode = args->get("mode", "");
-        if (!kSssModes.parse(mode)) return usageError(makeError("--mode " + mode, "expected " + expectedNames(kSssModes)));
-        overrides.push_back("mode=" + mode);
-    }
-    if (args->has("variant")) {
-        const std::string variant = args->get("variant", "");
-        if (!kSssVariants.parse(variant)) {
-            return usageError(makeError("--variant " + variant, "expected " + expectedNames(kSssVariants)));
-        }
-        // The variant's blur too, whatever the scene file names.
-        overrides.push_back("sss.variant=" + variant);
-        overrides.push_back("sss.blur=variant");
-    }
-    auto session = Session::open(scenePath, overrides, *backend, args->flags.count("gl-debug") > 0);
+    auto session = Session::open(options->scenePath, options->overrides, options->backend, options->glDebug);
     if (!session.ok()) return failure(session.error());
-    Renderer& renderer = *session->renderer;
-
-    // An EXR of the final image is linear: the frame before exposure and tone mapping.
-    const Aov frameAov = (*aov == Aov::Final && extension == ".exr") ? Aov::Radiance : *aov;
-    FrameRequest request{size->first, size->second, frameAov};
-    request.timeS = *time;
-    const int frameCount = sequence.empty() ? *frames : static_cast<int>(sequence.size());
-    log::info("rendering " + scenePath + " at " + std::to_string(request.width) + "x" + std::to_string(request.height) +
-              ", " + std::to_string(frameCount) + " frames on " + session->context->renderer());
-    const auto start = std::chrono::steady_clock::now();
+    log::info("rendering " + options->scenePath + " at " + std::to_string(options->request.width) + "x" +
+              std::to_string(options->request.height) + ", " + std::to_string(options->frames) + " frames on " +
+              session->context->renderer());
     OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
-    for (int i = 0; i < frameCount; ++i) {
-        if (!sequence.empty()) request.timeS = sequence[static_cast<size_t>(i)];
-        const Status status = renderer.renderFrame(request);
-        if (!status.ok()) return failure(status.error());
-        if (sequence.empty()) continue;
-        auto image = renderer.readOutput();
-        if (!image.ok()) return failure(image.error());
-        const std::string framePath = sequenceFramePath(outPath, static_cast<size_t>(i));
-        if (const Status saved = outputs.stageImage(framePath, *image); !saved.ok()) return failure(saved.error());
-        log::info("frame " + std::to_string(i + 1) + "/" + std::to_string(frameCount) + " at " +
-                  formatNumberForMessage(request.timeS) + " s: " + framePath);
-    }
-    glFinish();
-    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    renderer.finishTimings();
-    if (const Status gl = session->checkGlErrors(); !gl.ok()) return failure(gl.error());
-
-    if (sequence.empty()) {
-        auto image = renderer.readOutput();
-        if (!image.ok()) return failure(image.error());
-        if (const Status saved = outputs.stageImage(outPath, *image); !saved.ok()) return failure(saved.error());
-    }
-
-    RunInfo info = session->runInfo(scenePath, request.width, request.height, frameCount);
-    info.wallMsPerFrame = wallMs / frameCount;
+    auto wallMsPerFrame = renderFrames(*options, *session, outputs);
+    if (!wallMsPerFrame.ok()) return failure(wallMsPerFrame.error());
+    Renderer& renderer = *session->renderer;
+    RunInfo info = session->runInfo(options->scenePath, options->request.width, options->request.height, options->frames);
+    info.wallMsPerFrame = *wallMsPerFrame;
     info.characters = renderer.characterReports();
-    if (args->has("timings")) {
-        const std::string timingsPath = args->get("timings", "");
-        if (const Status staged = outputs.stageText(timingsPath, renderer.timings().toJson(info)); !staged.ok())
+    if (options->timingsPath) {
+        if (const Status staged = outputs.stageText(*options->timingsPath, renderer.timings().toJson(info)); !staged.ok())
             return failure(staged.error());
     }
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     if (!log::quiet()) std::printf("%s", renderer.timings().toTable(info).c_str());
-    if (sequence.empty()) log::info("wrote " + outPath);
+    if (options->sequence.empty()) log::info("wrote " + options->outPath);
     return 0;
 }
 
