@@ -75,90 +75,113 @@ const char* const kHelp =
     "Exit status: 0 on success, 1 when the scene or its content fails to load or the file\n"
     "cannot be written, 2 for bad command-line usage. On failure no output file is written.\n";
 
-}  // namespace
+struct ReferenceCommandOptions {
+    std::string scenePath;
+    std::string outPath;
+    int width = 0, height = 0;
+    reference::ReferenceOptions renderer;
+    std::optional<reference::ProgressiveSettings> progressive;  // with --target-error or --max-passes
+    std::vector<std::string> overrides;
+};
 
-int runReference(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "integral-env-samples", "target-error", "max-passes", "set", "threads"}, {"quiet", "help"});
-    if (!args.ok()) return usageError(args.error());
-    if (args->flags.count("help")) {
-        std::printf("%s", kHelp);
-        return 0;
-    }
-    if (args->positional.size() != 1) return usageError(makeError("reference", "expected exactly one SCENE file"));
-    log::setQuiet(args->flags.count("quiet") > 0);
-
-    const std::string scenePath = args->positional[0];
-    if (!args->has("out")) return usageError(makeError("reference", "--out FILE.exr is required"));
-    const std::string outPath = args->get("out", "");
-    if (std::filesystem::path(outPath).extension() != ".exr") {
-        return usageError(makeError("--out " + outPath, "the reference is linear float: the file must end in .exr"));
-    }
-    const std::filesystem::path outDir = std::filesystem::path(outPath).parent_path();
-    if (!outDir.empty() && !std::filesystem::is_directory(outDir)) {
-        return failure(makeError("--out " + outPath, "no such directory: " + outDir.string()));
-    }
-    const std::string aov = args->get("aov", "diffuse");
-    if (aov != "diffuse") return usageError(makeError("--aov " + aov, "the reference computes only: diffuse"));
-    auto size = parseSize(args->get("size", "640x360"), kMaxReferenceDimension);
-    if (!size.ok()) return usageError(size.error());
-    reference::ReferenceOptions options;
-    if (args->has("density")) {
-        auto density = parsePositiveFloat("--density", args->get("density", ""));
-        if (!density.ok()) return usageError(density.error());
+// --density, --spp, --env-samples, --integral-env-samples and --threads into `options`.
+Status parseRendererOptions(const ParsedArgs& args, reference::ReferenceOptions& options) {
+    if (args.has("density")) {
+        auto density = parsePositiveFloat("--density", args.get("density", ""));
+        if (!density.ok()) return density.error();
         options.quadrature.density = *density;
     }
-    if (args->has("spp")) {
-        auto spp = parsePositiveInt("--spp", args->get("spp", ""));
-        if (!spp.ok()) return usageError(spp.error());
+    if (args.has("spp")) {
+        auto spp = parsePositiveInt("--spp", args.get("spp", ""));
+        if (!spp.ok()) return spp.error();
         if (reference::strataPerSide(*spp) == 0) {
-            return usageError(makeError("--spp " + args->get("spp", ""), "expected a perfect square from 1 to " +
-                                                                            std::to_string(reference::kMaxSamplesPerPixel) +
-                                                                            " (1, 4, 9, 16, ...)"));
+            return makeError("--spp " + args.get("spp", ""), "expected a perfect square from 1 to " +
+                                                                 std::to_string(reference::kMaxSamplesPerPixel) +
+                                                                 " (1, 4, 9, 16, ...)");
         }
         options.samplesPerPixel = *spp;
     }
     for (auto [name, target] : {std::pair<std::string, int*>{"env-samples", &options.environmentSamples},
                                 {"integral-env-samples", &options.integralEnvironmentSamples}}) {
-        if (!args->has(name)) continue;
-        auto samples = parsePositiveInt("--" + name, args->get(name, ""));
-        if (!samples.ok()) return usageError(samples.error());
+        if (!args.has(name)) continue;
+        auto samples = parsePositiveInt("--" + name, args.get(name, ""));
+        if (!samples.ok()) return samples.error();
         if (*samples < reference::kMinEnvironmentSamples || *samples > reference::kMaxEnvironmentSamples) {
-            return usageError(makeError("--" + name + " " + args->get(name, ""),
-                                        "expected " + std::to_string(reference::kMinEnvironmentSamples) + " to " +
-                                            std::to_string(reference::kMaxEnvironmentSamples)));
+            return makeError("--" + name + " " + args.get(name, ""), "expected " +
+                                                                         std::to_string(reference::kMinEnvironmentSamples) +
+                                                                         " to " + std::to_string(reference::kMaxEnvironmentSamples));
         }
         *target = *samples;
     }
-    std::optional<reference::ProgressiveSettings> progressive;
-    if (args->has("target-error") || args->has("max-passes")) {
-        auto settings = progressiveSettingsFromArgs(*args);
-        if (!settings.ok()) return usageError(settings.error());
-        progressive = *settings;
-    }
-    if (args->has("threads")) {
-        auto threads = parsePositiveInt("--threads", args->get("threads", ""));
-        if (!threads.ok()) return usageError(threads.error());
-        if (*threads > 1024) return usageError(makeError("--threads", "at most 1024"));
+    if (args.has("threads")) {
+        auto threads = parsePositiveInt("--threads", args.get("threads", ""));
+        if (!threads.ok()) return threads.error();
+        if (*threads > 1024) return makeError("--threads", "at most 1024");
         options.threads = *threads;
     }
-    options.showProgress = !log::quiet();
+    return success();
+}
 
-    auto scene = loadScene(scenePath, args->all("set"));
+// A usage error is marked by `usage`; a missing output directory is not one.
+Result<ReferenceCommandOptions> parseReferenceCommandOptions(const ParsedArgs& args, bool* usage) {
+    *usage = true;
+    if (args.positional.size() != 1) return makeError("reference", "expected exactly one SCENE file");
+    if (!args.has("out")) return makeError("reference", "--out FILE.exr is required");
+    ReferenceCommandOptions options;
+    options.scenePath = args.positional[0];
+    options.outPath = args.get("out", "");
+    if (std::filesystem::path(options.outPath).extension() != ".exr")
+        return makeError("--out " + options.outPath, "the reference is linear float: the file must end in .exr");
+    const std::filesystem::path outDir = std::filesystem::path(options.outPath).parent_path();
+    if (!outDir.empty() && !std::filesystem::is_directory(outDir)) {
+        *usage = false;
+        return makeError("--out " + options.outPath, "no such directory: " + outDir.string());
+    }
+    const std::string aov = args.get("aov", "diffuse");
+    if (aov != "diffuse") return makeError("--aov " + aov, "the reference computes only: diffuse");
+    auto size = parseSize(args.get("size", "640x360"), kMaxReferenceDimension);
+    if (!size.ok()) return size.error();
+    options.width = size->first;
+    options.height = size->second;
+    if (Status parsed = parseRendererOptions(args, options.renderer); !parsed.ok()) return parsed.error();
+    if (args.has("target-error") || args.has("max-passes")) {
+        auto settings = progressiveSettingsFromArgs(args);
+        if (!settings.ok()) return settings.error();
+        options.progressive = *settings;
+    }
+    options.overrides = args.all("set");
+    *usage = false;
+    return options;
+}
+
+}  // namespace
+
+int runReference(const std::vector<std::string>& rawArgs) {
+    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "integral-env-samples", "target-error", "max-passes", "set", "threads"}, {"quiet", "help"});
+    if (!args.ok()) return usageError(args.error());
+    if (args->flags.count("help")) return std::printf("%s", kHelp), 0;
+    log::setQuiet(args->flags.count("quiet") > 0);
+    bool usage = false;
+    auto options = parseReferenceCommandOptions(*args, &usage);
+    if (!options.ok()) return usage ? usageError(options.error()) : failure(options.error());
+    options->renderer.showProgress = !log::quiet();
+    auto scene = loadScene(options->scenePath, options->overrides);
     if (!scene.ok()) return failure(scene.error());
 
     const auto start = std::chrono::steady_clock::now();
-    log::info("reference: loading " + scenePath);
-    auto renderer = reference::ReferenceRenderer::load(*scene, options);
+    log::info("reference: loading " + options->scenePath);
+    auto renderer = reference::ReferenceRenderer::load(*scene, options->renderer);
     if (!renderer.ok()) return failure(renderer.error());
     const auto built = std::chrono::steady_clock::now();
-    log::info("reference: " + std::to_string(size->first) + "x" + std::to_string(size->second) + ", density " +
-              std::to_string(options.quadrature.density) + " per s^2, " + std::to_string(options.samplesPerPixel) +
-              " samples per pixel, " +
-              std::to_string(raytrace::resolveThreadCount(options.threads)) + " threads");
-    const Image image = progressive ? renderer->renderDiffuseProgressive(size->first, size->second, *progressive)
-                                    : renderer->renderDiffuse(size->first, size->second);
+    log::info("reference: " + std::to_string(options->width) + "x" + std::to_string(options->height) + ", density " +
+              std::to_string(options->renderer.quadrature.density) + " per s^2, " +
+              std::to_string(options->renderer.samplesPerPixel) + " samples per pixel, " +
+              std::to_string(raytrace::resolveThreadCount(options->renderer.threads)) + " threads");
+    const Image image = options->progressive
+                            ? renderer->renderDiffuseProgressive(options->width, options->height, *options->progressive)
+                            : renderer->renderDiffuse(options->width, options->height);
     const auto done = std::chrono::steady_clock::now();
-    if (const Status saved = saveImage(outPath, image); !saved.ok()) return failure(saved.error());
+    if (const Status saved = saveImage(options->outPath, image); !saved.ok()) return failure(saved.error());
 
     const reference::ReferenceStats& stats = renderer->stats();
     auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
@@ -169,7 +192,7 @@ int runReference(const std::vector<std::string>& rawArgs) {
                   seconds(built, done));
     log::info(summary);
     log::info(referenceStagesSummary(stats));
-    log::info("wrote " + outPath);
+    log::info("wrote " + options->outPath);
     return 0;
 }
 
