@@ -90,6 +90,10 @@ struct SoakOptions {
     int warmup = 100;
     int plantLeakKib = 0;
     bool quiet = false;
+    bool plot = true;
+    std::vector<SssMode> modes;
+    gl::Backend backend = gl::Backend::Auto;
+    std::filesystem::path outDir;
     int period() const { return 2 * changeEvery; }
 };
 
@@ -235,7 +239,45 @@ Result<SoakOptions> parseSoakOptions(const ParsedArgs& args) {
                              std::to_string(o.warmup + 2 * o.period()) + ", to compare two periods after the warm-up");
     }
     o.quiet = args.flags.count("quiet") > 0;
+    o.plot = !args.flags.count("no-plot");
+    const std::string modeName = args.get("mode", "both");
+    if (modeName == "both") {
+        o.modes = {SssMode::ScreenSpace, SssMode::TextureSpace};
+    } else if (auto mode = kSssModes.parse(modeName)) {
+        o.modes = {*mode};
+    } else {
+        return makeError("--mode " + modeName, "expected " + expectedNames(kSssModes) + " or both");
+    }
+    auto backend = parseBackend(args.get("backend", "auto"));
+    if (!backend.ok()) return backend.error();
+    o.backend = *backend;
+    o.outDir = args.get("out", "out/soak");
     return o;
+}
+
+// Each mode soaked in turn, into report["modes"]; why each grew, into `failures`.
+Status soakModes(const SoakOptions& options, nlohmann::ordered_json& report, std::vector<std::string>& failures) {
+    for (const SssMode mode : options.modes) {
+        const std::string name(kSssModes.name(mode));
+        auto samples = soakMode(options, mode);
+        if (!samples.ok()) return samples.error();
+        const SoakGrowth growth = measureSoakGrowth(*samples, options.warmup, options.period(), options.frames);
+        const std::string why = growthFailure(name, growth);
+        if (!why.empty()) failures.push_back(why);
+        nlohmann::ordered_json& m = report["modes"][name];
+        m["resident_growth_bytes"] = growth.residentBytes();
+        m["pool_growth_bytes"] = growth.poolBytes();
+        m["first_window"] = {growth.firstWindowStart + 1, growth.firstWindowEnd};
+        m["last_window"] = {growth.lastWindowStart + 1, growth.lastWindowEnd};
+        m["flat"] = why.empty();
+        for (const SoakSample& sample : *samples) {
+            m["samples"].push_back({{"frame", sample.frame},
+                                    {"characters", sample.characters},
+                                    {"resident_bytes", sample.residentBytes},
+                                    {"pool_bytes", sample.poolBytes}});
+        }
+    }
+    return success();
 }
 
 }  // namespace
@@ -252,20 +294,7 @@ int runSoak(const std::vector<std::string>& rawArgs) {
     }
     auto options = parseSoakOptions(*args);
     if (!options.ok()) return usageError(options.error());
-    const std::string modeName = args->get("mode", "both");
-    std::vector<SssMode> modes;
-    if (modeName == "both") {
-        modes = {SssMode::ScreenSpace, SssMode::TextureSpace};
-    } else if (auto mode = kSssModes.parse(modeName)) {
-        modes = {*mode};
-    } else {
-        return usageError(makeError("--mode " + modeName, "expected " + expectedNames(kSssModes) + " or both"));
-    }
-    auto backend = parseBackend(args->get("backend", "auto"));
-    if (!backend.ok()) return usageError(backend.error());
-    const std::filesystem::path outDir = args->get("out", "out/soak");
-
-    auto context = gl::createHeadlessContext({*backend, false});
+    auto context = gl::createHeadlessContext({options->backend, false});
     if (!context.ok()) return failure(context.error());
     log::setQuiet(true);  // each re-created renderer's loading messages would drown the progress lines
     const auto start = std::chrono::steady_clock::now();
@@ -280,37 +309,18 @@ int runSoak(const std::vector<std::string>& rawArgs) {
     report["plant_leak_kib"] = options->plantLeakKib;
     report["max_resident_growth_mib"] = kMaxResidentGrowthMiB;
     std::vector<std::string> failures;
-    for (const SssMode mode : modes) {
-        const std::string name(kSssModes.name(mode));
-        auto samples = soakMode(*options, mode);
-        if (!samples.ok()) return failure(samples.error());
-        const SoakGrowth growth = measureSoakGrowth(*samples, options->warmup, options->period(), options->frames);
-        const std::string why = growthFailure(name, growth);
-        if (!why.empty()) failures.push_back(why);
-        nlohmann::ordered_json& m = report["modes"][name];
-        m["resident_growth_bytes"] = growth.residentBytes();
-        m["pool_growth_bytes"] = growth.poolBytes();
-        m["first_window"] = {growth.firstWindowStart + 1, growth.firstWindowEnd};
-        m["last_window"] = {growth.lastWindowStart + 1, growth.lastWindowEnd};
-        m["flat"] = why.empty();
-        for (const SoakSample& s : *samples) {
-            m["samples"].push_back({{"frame", s.frame},
-                                    {"characters", s.characters},
-                                    {"resident_bytes", s.residentBytes},
-                                    {"pool_bytes", s.poolBytes}});
-        }
-    }
+    if (const Status soaked = soakModes(*options, report, failures); !soaked.ok()) return failure(soaked.error());
     report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log::setQuiet(options->quiet);
 
     std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    const std::string jsonPath = (outDir / "soak.json").string();
+    std::filesystem::create_directories(options->outDir, ec);
+    const std::string jsonPath = (options->outDir / "soak.json").string();
     if (const Status written = writeTextFileAtomically(jsonPath, report.dump(1) + "\n"); !written.ok()) {
         return failure(written.error());
     }
-    if (!args->flags.count("no-plot")) {
-        if (const Status plotted = drawPlot(outDir); !plotted.ok()) log::warn(plotted.error().message() + "; no plot");
+    if (options->plot) {
+        if (const Status plotted = drawPlot(options->outDir); !plotted.ok()) log::warn(plotted.error().message() + "; no plot");
     }
     for (const std::string& why : failures) log::error(why);
     if (!options->quiet) std::printf("%s in %.1f s (%s)\n", failures.empty() ? "flat" : "grew",
