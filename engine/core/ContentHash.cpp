@@ -1,5 +1,7 @@
 #include "core/ContentHash.h"
 
+#include "core/Image.h"
+
 #include <cstring>
 #include <fstream>
 
@@ -16,6 +18,10 @@ ContentHash& ContentHash::bytes(const void* data, size_t size) {
     for (; i < size; ++i) mHash = (mHash ^ p[i]) * kFnvPrime;
     mHash = (mHash ^ uint64_t(size)) * kFnvPrime;
     return *this;
+}
+
+ContentHash& ContentHash::image(const Image& image) {
+    return number(uint64_t(image.width)).number(uint64_t(image.height)).values(image.texels);
 }
 
 uint64_t ContentHash::value() const {

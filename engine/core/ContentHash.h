@@ -9,6 +9,8 @@
 
 namespace dermis {
 
+struct Image;
+
 constexpr uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ULL;
 constexpr uint64_t kFnvPrime = 0x100000001b3ULL;
 
@@ -31,6 +33,8 @@ public:
     }
     ContentHash& text(const std::string& s) { return bytes(s.data(), s.size()); }
     ContentHash& number(uint64_t n) { return bytes(&n, sizeof n); }
+    // Its size and texels (the colour space is not part of the content).
+    ContentHash& image(const Image& image);
     uint64_t value() const;
 
 private:

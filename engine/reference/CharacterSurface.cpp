@@ -171,8 +171,7 @@ void CharacterSurface::hashContent(ContentHash& hash) const {
             hash.number(0);
             return;
         }
-        const Image& level0 = map.level(0);  // the other levels follow from it
-        hash.number(uint64_t(level0.width)).number(uint64_t(level0.height)).values(level0.texels);
+        hash.image(map.level(0));  // the other levels follow from it
     };
     for (const SurfaceMaterial& m : mMaterials) {
         hashMap(m.albedoMap);

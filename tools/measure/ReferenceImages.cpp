@@ -217,9 +217,7 @@ Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
         // The engine's part is the captured irradiance itself: its hash keys the shared copy,
         // whatever code and shaders made it.
         ContentHash captured;
-        for (const Image& texture : *irradiance) {
-            captured.number(uint64_t(texture.width)).number(uint64_t(texture.height)).values(texture.texels);
-        }
+        for (const Image& texture : *irradiance) captured.image(texture);
         reference::ReferenceOptions options = referenceOptions(mSettings);
         options.engineIrradiance = std::move(*irradiance);
         options.samplesPerPixel = mSettings.changeSamplesPerPixel;
