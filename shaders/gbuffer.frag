@@ -4,8 +4,10 @@
 //   target 1       RGBA16F: xy octahedral view-space normal, z roughness m, w rho_s (include/Material.glsl)
 //   target 2       R32UI: profile slot and view depth packed, the key that
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
-//   target 3       RG16F: the scattering share s and the KHR_materials_volume
+//   target 3       RGBA16F: the scattering share s, the KHR_materials_volume
 //                  thickness in mm (DERMIS_GBUFFER_SCATTER_LOCATION, docs/materials.md)
+//                  the surface's curvature in 1/mm and the profile slot
+//                  (include/PreintegratedSkin.glsl reads both)
 // With GBUFFER_LEAN defined (variants lcb and lbb, render/SssVariant.h):
 //   target 4       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
 //   target 5       R16F: LEAN M'.xy
@@ -40,7 +42,7 @@ in vec3 vColour;
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;
 layout(location = 2) out uint oDepthKey;
-layout(location = DERMIS_GBUFFER_SCATTER_LOCATION) out vec2 oScatter;
+layout(location = DERMIS_GBUFFER_SCATTER_LOCATION) out vec4 oScatter;
 #ifdef GBUFFER_LEAN
 layout(location = 4) out vec4 oLeanMoments;
 layout(location = 5) out float oLeanCross;
@@ -58,6 +60,25 @@ mat3 tangentFrame(vec3 N) {
     T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
     vec3 B = cross(N, T) * (vViewTangent.w < 0.0 ? -1.0 : 1.0);
     return mat3(T, B, N);
+}
+
+// |dN| / |dP| across the pixel of the interpolated vertex normal: 1/r on a
+// sphere of radius r, whatever the direction (Penner & Borshukov 2011).
+float curvaturePerMm() {
+    // The normalised normal's change: the interpolated one's, less its part along
+    // the normal, over its length (written out: llvmpipe's LLVM 15 crashed on
+    // dFdx(safeNormalize(...)) here).
+    float lengthN = max(length(vViewNormal), 1e-8);
+    vec3 N = vViewNormal / lengthN;
+    vec3 dNdx = dFdx(vViewNormal);
+    vec3 dNdy = dFdy(vViewNormal);
+    dNdx -= N * dot(N, dNdx);
+    dNdy -= N * dot(N, dNdy);
+    vec3 dPdx = dFdx(vViewPositionM);
+    vec3 dPdy = dFdy(vViewPositionM);
+    float normalChange = sqrt(dot(dNdx, dNdx) + dot(dNdy, dNdy)) / lengthN;
+    float positionChangeMm = 1000.0 * sqrt(dot(dPdx, dPdx) + dot(dPdy, dPdy));
+    return positionChangeMm > 0.0 ? normalChange / positionChangeMm : 0.0;
 }
 
 void main() {
@@ -102,7 +123,7 @@ void main() {
     vec4 scattering = uObject.scattering;
     float scatter = scattering.x * (scattering.y > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
     float thicknessMm = scattering.z * (scattering.w > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
-    oScatter = vec2(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0));
+    oScatter = vec4(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0), curvaturePerMm(), float(slot));
 #ifdef GBUFFER_TRANSFER
     oEnvironment = vEnvironment;
 #endif

@@ -13,6 +13,9 @@
 //      characters with LEAN maps (their lobe comes from
 //      include/LeanLights.glsl), alpha 0 and in red the environment's
 //      specular occlusion.
+//   With the technique "preintegrated" for a pixel's profile slot, each
+//   light's N.L is its pre-integrated falloff instead
+//   (include/PreintegratedSkin.glsl).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -24,6 +27,7 @@
 #include "Lights.glsl"
 #include "EnergyConservation.glsl"
 #include "Environment.glsl"
+#include "PreintegratedSkin.glsl"
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
@@ -36,6 +40,9 @@ layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
 #endif
 layout(binding = 9) uniform sampler2D uEnvironmentTransfer;  // the G-buffer's environment target (occlusion "transfer")
+// Bound when some visible slot's technique is "preintegrated" (uProfiles.transmittance.z = 1):
+layout(binding = 10) uniform sampler2D uScatter;  // the G-buffer's: z curvature (1/mm), w profile slot
+layout(binding = DERMIS_UNIT_FIRST_PASS_EXTRA) uniform sampler2D uPreintegrated;  // the slots' tables, stacked
 
 in vec2 vUv;
 layout(location = 0) out vec4 oIrradiance;
@@ -92,6 +99,16 @@ void main() {
         environmentVisibility = specularOcclusion(clamp(dot(N, V), 0.0, 1.0), environment.a, roughness);
         if (keepSpecular) specular += environmentSpecular(uEnergy, N, V, roughness, rhoS) * environmentVisibility;
     }
+    // The slot whose technique is "preintegrated", or 0.
+    int preintegratedSlot = 0;
+    float curvaturePerMm = 0.0;
+    if (uProfiles.transmittance.z > 0.5) {
+        int slot = int(texelFetch(uScatter, pixel, 0).w + 0.5);
+        if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].technique.x > 0.5) {
+            preintegratedSlot = slot;
+            curvaturePerMm = texelFetch(uScatter, pixel, 0).z;
+        }
+    }
     vec4 shadowed = vec4(0.0);
     int lightCount = int(uFrame.shading.z);
     for (int i = 0; i < lightCount; ++i) {
@@ -99,15 +116,19 @@ void main() {
         vec3 L;
         vec3 radiance = incidentRadiance(light, worldPositionM, L);
         float nDotL = dot(N, L);
-        if (nDotL <= 0.0) continue;
+        // Pre-integrated light wraps past the terminator (where D(N.L) > 0).
+        if (nDotL <= 0.0 && preintegratedSlot == 0) continue;
         int slot = int(light.directionShadow.w);
         float visibility = 1.0;
         if (slot >= 0) {
             visibility = shadowVisibility(uShadowMaps[slot], light, worldPositionM, N, gl_FragCoord.xy);
-            shadowed[slot] = visibility;
+            if (nDotL > 0.0) shadowed[slot] = visibility;
         }
-        float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, nDotL, roughness, rhoS) : 1.0;
-        irradiance += radiance * (nDotL * visibility * diffuseShare);
+        float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, max(nDotL, 0.0), roughness, rhoS) : 1.0;
+        vec3 falloff = vec3(nDotL);
+        if (preintegratedSlot > 0) falloff = preintegratedFalloff(uPreintegrated, preintegratedSlot, nDotL, curvaturePerMm);
+        irradiance += radiance * (falloff * (visibility * diffuseShare));
+        if (nDotL <= 0.0) continue;
         if (keepSpecular) specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
     }
 

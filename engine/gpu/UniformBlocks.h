@@ -15,7 +15,7 @@ using uint = unsigned int;
 
 static_assert(sizeof(FrameBlock) == 5 * 64 + 7 * 16, "FrameBlock must match std140");
 static_assert(sizeof(CharactersBlock) == (DERMIS_MAX_CHARACTERS + 1) * 16, "CharactersBlock must match std140");
-static_assert(sizeof(ProfileParams) == (DERMIS_MAX_PROFILE_GAUSSIANS + 1) * 16, "ProfileParams must match std140");
+static_assert(sizeof(ProfileParams) == (DERMIS_MAX_PROFILE_GAUSSIANS + 2) * 16, "ProfileParams must match std140");
 static_assert(sizeof(ProfilesBlock) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 16, "ProfilesBlock must match std140");
 static_assert(sizeof(GpuLight) == 64 + 7 * 16, "GpuLight must match std140");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");

@@ -16,7 +16,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             g.albedo = builder.create("albedo", {w, h, graph::TextureFormat::Rgba16F});
             g.normalMaterial = builder.create("normal+material", {w, h, graph::TextureFormat::Rgba16F});
             g.depthKey = builder.create("depth key", {w, h, graph::TextureFormat::R32UI});
-            g.scatter = builder.create("scatter", {w, h, graph::TextureFormat::Rg16F});
+            g.scatter = builder.create("scatter", {w, h, graph::TextureFormat::Rgba16F});
             if (frame.plan.lean) {
                 g.leanMoments = builder.create("lean moments", {w, h, graph::TextureFormat::Rgba16F});
                 g.leanCross = builder.create("lean cross moment", {w, h, graph::TextureFormat::R16F});

@@ -16,7 +16,7 @@ struct GBuffer {
     graph::TextureHandle albedo;          // RGBA16F linear; alpha = object id / 255
     graph::TextureHandle normalMaterial;  // RGBA16F: octahedral view normal, roughness m, rho_s
     graph::TextureHandle depthKey;        // R32UI: profile slot and view depth (UniformBlocks.glsl)
-    graph::TextureHandle scatter;         // RG16F: the scattering share s, the volume thickness in mm (docs/materials.md)
+    graph::TextureHandle scatter;         // RGBA16F: the scattering share s, the volume thickness in mm (docs/materials.md), the curvature in 1/mm
     graph::TextureHandle leanMoments;     // RGBA16F (B'.x, B'.y, M'.xx, M'.yy); invalid in variant c
     graph::TextureHandle leanCross;       // R16F M'.xy; invalid in variant c
     graph::TextureHandle environment;     // RGBA16F: the transfer's L.T and visible share; invalid unless occlusion "transfer"

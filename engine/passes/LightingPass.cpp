@@ -9,6 +9,7 @@ struct LightingData {
     std::vector<graph::TextureHandle> shadowMaps;
     graph::TextureHandle ambientOcclusion;
     graph::TextureHandle leanCross;
+    graph::TextureHandle scatter;  // read for the "preintegrated" technique: its slot and the curvature
     Lighting out;
 };
 }  // namespace
@@ -37,6 +38,9 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 if (gbuffer.hasLean()) d.leanCross = builder.read(gbuffer.leanCross);
                 if (gbuffer.environment.isValid()) d.gbuffer.environment = builder.read(gbuffer.environment);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
+                if (frame.plan.sss.anyScattersInLighting()) {
+                    d.scatter = builder.read(gbuffer.scatter);
+                }
                 d.out.irradiance = builder.create("irradiance", {w, h, graph::TextureFormat::Rgba16F});
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
                 if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
@@ -51,6 +55,10 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 bindShadowMaps(frame, resources, d.shadowMaps);
                 if (lean) glBindTextureUnit(8, resources.texture(d.leanCross));
                 if (d.gbuffer.environment.isValid()) glBindTextureUnit(9, resources.texture(d.gbuffer.environment));
+                if (d.scatter.isValid()) {
+                    glBindTextureUnit(10, resources.texture(d.scatter));
+                    glBindTextureUnit(DERMIS_UNIT_FIRST_PASS_EXTRA, frame.gl->preintegratedTables);
+                }
                 frame.gl->drawFullscreenTriangle();
             })
         .out;

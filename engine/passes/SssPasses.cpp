@@ -182,6 +182,8 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
             if (packed) d.chain = builder.create("sss chain", start.chainDesc);
             builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
             builder.skipIf(!anyVisible, "no SSS pixel on screen");
+            // Their accumulation starts (and stays) at the irradiance itself.
+            builder.skipIf(frame.plan.sss.onlyLightingScatters(), "every SSS slot on screen scatters in the lighting pass");
         },
         [frame](const graph::PassResources& resources, const InitData& d) {
             const Programs& programs = *frame.gl->programs;
@@ -199,13 +201,13 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 }
 
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                             const SssStart& start, SssChain chain, SssTechnique technique) {
+                             const SssStart& start, SssChain chain) {
     const graph::TextureHandle chainStart = start.chain;
     // Past the moments' last step the chain is the colour alone, as without LEAN.
     const graph::TextureDesc plainDesc{start.chainDesc.width, start.chainDesc.height, graph::TextureFormat::Rgba16F};
 
     for (const SssSlotPlan& slot : frame.plan.sss.slots) {
-        if (slot.choice.technique != technique) continue;
+        if (slot.choice.technique != SssTechnique::Gaussians) continue;
         const SssMomentCut cut = sssMomentCut(slot.steps, frame.plan.scene->settings.sss.leanMomentWidthMm);
         graph::TextureHandle current = chainStart;
         for (size_t i = 0; i < slot.steps.size(); ++i) {
@@ -236,16 +238,6 @@ SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& fram
             if (blur.packed) chain.extras = vertical.extrasAccumulatedOut;
         }
     }
-    return chain;
-}
-
-SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    const SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
-    SssChain chain = start.accumulated;
-    chain = addSssGaussianChain(graph, frame, gbuffer, start, chain, SssTechnique::Gaussians);
-    chain = addSeparableSss(graph, frame, gbuffer, start, chain);
-    chain = addDiskSss(graph, frame, gbuffer, start, chain);
     return chain;
 }
 

@@ -29,8 +29,8 @@ struct SssChain {
 };
 
 // Screen-space SSS: `sss init`, then each technique's passes for the slots
-// whose choice (render/SssPlan.h, SssChoice) is that technique: the d'Eon
-// chain, Separable SSS, the disk. The returned targets hold the scattered
+// whose choice (render/SssPlan.h, SssChoice) is that technique, as the
+// technique registry lists them (passes/SssTechniquePasses.cpp). The returned targets hold the scattered
 // irradiance (and extras) on the SSS pixels and the inputs' values
 // everywhere else; with SSS disabled or no SSS pixel on screen every pass is
 // culled and readers get the inputs themselves.
@@ -57,8 +57,7 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 // the accumulations by blending (after sss init's identity weight, as the
 // d'Eon chain does) or overwrites every pixel of its slot.
 //
-// The d'Eon chain (technique "gaussians", or `technique`'s slots until that
-// technique has its own passes): one blur pair per Gaussian, with extra
+// The d'Eon chain (technique "gaussians"): one blur pair per Gaussian, with extra
 // targets (none, or the kLeanSssTargets LEAN moments) blurred in the same
 // passes with the same taps: the chain packs irradiance and moments as halves
 // in one RGBA32UI texture ("sss chain", started by sss init) and the
@@ -66,13 +65,20 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 // the moments' with one scalar weight per Gaussian (include/SssBlur.glsl,
 // "EXTRA TARGETS AND ALPHA", "PACKING").
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                             const SssStart& start, SssChain chain, SssTechnique technique);
+                             const SssStart& start, SssChain chain);
 // Separable SSS (Jimenez et al. 2015), passes/SssSeparablePasses.cpp.
 SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                          const SssStart& start, SssChain chain);
 // The profile sampled on a disk in one pass, passes/SssDiskPass.cpp.
 SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                     const SssStart& start, SssChain chain);
+
+// A technique's passes: they read the chain start and add into `chain`, which they return.
+using AddSssTechniquePasses = SssChain (*)(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                                           const SssStart& start, SssChain chain);
+// The GL half of the technique registry (scene/SssTechniques.h): each
+// technique's passes, in kSssTechniques' order.
+AddSssTechniquePasses sssTechniquePasses(SssTechnique technique);
 
 constexpr int kAnySssPixel = -1;
 

@@ -3,6 +3,7 @@
 #include "gl/TexturePool.h"
 #include "brdf/BeckmannTable.h"
 #include "brdf/EnergyTable.h"
+#include "scene/SssTechniques.h"
 
 #include <algorithm>
 
@@ -133,15 +134,19 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
     glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
 
     gpu::ProfilesBlock profiles{};
+    // The lighting pass reads the tables (and binds them) only where a visible slot needs them.
+    const bool preintegrated = mPreintegrated.prepare(plan.sss) && plan.sss.anyScattersInLighting();
+    mServices.preintegratedTables = preintegrated ? mPreintegrated.texture() : 0;
     for (const SssSlotPlan& slot : plan.sss.slots) {
         gpu::ProfileParams& p = profiles.profiles[slot.slot];
         const auto& gaussians = slot.profile->gaussians();
         const size_t n = std::min<size_t>(gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS);
         for (size_t i = 0; i < n; ++i) p.gaussians[i] = glm::vec4(gaussians[i].weight, gaussians[i].varianceMm2);
         p.info = glm::vec4(float(n), slot.initWeight);
+        p.technique = glm::vec4(sssTechniqueInfo(slot.choice.technique).scattersInLighting ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     }
-    profiles.transmittance =
-        glm::vec4(scene.settings.transmittance.shrinkMm, scene.settings.transmittance.strength, 0.0f, 0.0f);
+    profiles.transmittance = glm::vec4(scene.settings.transmittance.shrinkMm, scene.settings.transmittance.strength,
+                                       preintegrated ? 1.0f : 0.0f, 0.0f);
     glNamedBufferSubData(mProfileUniforms.get(), 0, sizeof profiles, &profiles);
 }
 

@@ -14,6 +14,7 @@
 #include "render/FramePlan.h"
 #include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
+#include "render/PreintegratedTables.h"
 #include "render/Programs.h"
 #include "render/SceneGeometry.h"
 #include "render/GpuEnvironment.h"
@@ -62,6 +63,7 @@ private:
     gl::Texture mEnergy;
     gl::Texture mWhite;
     gl::Texture mBlack;
+    PreintegratedTables mPreintegrated;
     struct ShadowMap {
         gl::Texture texture;
         graph::TextureDesc desc;

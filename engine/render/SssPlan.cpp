@@ -5,6 +5,7 @@
 #include "render/ScreenFootprint.h"
 #include "render/SubmeshScattering.h"
 #include "gpu/UniformBlocks.h"
+#include "scene/SssTechniques.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +35,11 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
     const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
     plan.initWeight = glm::vec3(0.0f);
     plan.steps.clear();
+    if (sssTechniqueInfo(plan.choice.technique).scattersInLighting) {
+        // The lighting pass scattered already: the chain keeps the whole irradiance.
+        for (const glm::vec3& weight : weights) plan.initWeight += weight;
+        return;
+    }
     float blurredVarianceMm2 = 0.0f;  // of the chain so far: 0 while it is the irradiance itself
     for (int i = 0; i < used; ++i) {
         SssGaussianStep step;
@@ -86,6 +92,18 @@ Status setChoice(SssSlotPlan& slot, const SssChoice& choice) {
 
 bool SssPlan::anyVisible() const {
     return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) { return s.visible; });
+}
+
+bool SssPlan::anyScattersInLighting() const {
+    return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
+        return s.visible && sssTechniqueInfo(s.choice.technique).scattersInLighting;
+    });
+}
+
+bool SssPlan::onlyLightingScatters() const {
+    return anyVisible() && std::all_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
+               return !s.visible || sssTechniqueInfo(s.choice.technique).scattersInLighting;
+           });
 }
 
 float ViewParams::pixelsPerMetreAtUnitDepth() const { return 0.5f * float(heightPx) * clipFromView[1][1]; }

@@ -71,6 +71,10 @@ struct SssPlan {
     std::vector<CharacterSssChoice> characterChoices;  // per scene character
     std::vector<std::vector<int>> slotsOfCharacter;  // per scene character, per submesh; 0 = opaque (no SSS)
     bool anyVisible() const;
+    // Some visible slot's technique scatters in the lighting pass ("preintegrated").
+    bool anyScattersInLighting() const;
+    // Every visible slot's technique scatters in the lighting pass: no SSS pass has work.
+    bool onlyLightingScatters() const;
     bool hasSss(size_t character) const;  // some submesh of it has a slot
     int slotOf(size_t character, size_t submesh) const;  // 0 (opaque) for a submesh it does not know
 };

@@ -3,6 +3,7 @@
 #include "scene/JsonReader.h"
 #include "scene/Scene.h"
 #include "scene/SettingsFields.h"
+#include "scene/SssTechniques.h"
 
 #include <filesystem>
 #include <fstream>
@@ -28,16 +29,18 @@ void ruledInteger(JsonObject& object, const char* key, int& out, const IntegerRu
 void readChoice(JsonObject& row, SssChoice& choice) {
     const json* value = row.member("choice");
     if (!row.context().check(value != nullptr, row.pointer("choice"), "is required")) return;
-    JsonObject object(row.context(), *value, row.pointer("choice"),
-                      {"technique", "taps", "gaussians", "separable_samples", "disk_samples"});
+    std::vector<std::string> keys = {"technique"};
+    for (const SssTechniqueInfo& technique : sssTechniques()) {
+        for (const SssSampleSetting& setting : technique.settings) keys.push_back(setting.key);
+    }
+    JsonObject object(row.context(), *value, row.pointer("choice"), keys);
     object.context().check(object.has("technique"), object.pointer("technique"), "is required");
     int technique = -1;
     object.choice("technique", std::string(kSssTechniques.noun()).c_str(), kSssTechniques.names(), technique);
     if (technique >= 0) choice.technique = kSssTechniques.begin()[technique].value;
-    ruledInteger(object, "taps", choice.taps, blurTapsRule());
-    object.integer("gaussians", choice.gaussians, Range::closed(1, kMaxProfileGaussians));
-    ruledInteger(object, "separable_samples", choice.separableSamples, separableSamplesRule());
-    object.integer("disk_samples", choice.diskSamples, Range::closed(kMinDiskSamples, kMaxDiskSamples));
+    for (const SssTechniqueInfo& info : sssTechniques()) {
+        for (const SssSampleSetting& setting : info.settings) ruledInteger(object, setting.key, choice.*setting.choice, setting.rule());
+    }
 }
 
 void readNumber(JsonObject& object, const char* key, double& out, const Range& range) {
@@ -48,77 +51,6 @@ void readNumber(JsonObject& object, const char* key, double& out, const Range& r
 }
 
 }  // namespace
-
-SssChoice SssChoice::fromSettings(const SssSettings& settings) {
-    SssChoice choice;
-    choice.technique = settings.technique;
-    choice.taps = settings.taps;
-    choice.gaussians = settings.gaussians;
-    choice.separableSamples = settings.separableSamples;
-    choice.diskSamples = settings.diskSamples;
-    return choice;
-}
-
-SssChoice SssChoice::finest() {
-    SssChoice choice = fromSettings(SssSettings{});
-    choice.technique = SssTechnique::Gaussians;
-    choice.taps = kMaxBlurTaps;
-    choice.gaussians = kMaxProfileGaussians;
-    return choice;
-}
-
-SssChoice SssChoice::canonical() const {
-    const SssChoice defaults = fromSettings(SssSettings{});
-    SssChoice out = defaults;
-    out.technique = technique;
-    switch (technique) {
-        case SssTechnique::Gaussians:
-            out.taps = taps;
-            out.gaussians = gaussians;
-            break;
-        case SssTechnique::Separable:
-            out.separableSamples = separableSamples;
-            break;
-        case SssTechnique::Disk:
-            out.diskSamples = diskSamples;
-            break;
-    }
-    return out;
-}
-
-void SssChoice::applyTo(SssSettings& settings) const {
-    settings.technique = technique;
-    settings.taps = taps;
-    settings.gaussians = gaussians;
-    settings.separableSamples = separableSamples;
-    settings.diskSamples = diskSamples;
-}
-
-bool SssChoice::operator==(const SssChoice& other) const {
-    return technique == other.technique && taps == other.taps && gaussians == other.gaussians &&
-           separableSamples == other.separableSamples && diskSamples == other.diskSamples;
-}
-
-nlohmann::ordered_json sssChoiceJson(const SssChoice& choice) {
-    return nlohmann::ordered_json{{"technique", std::string(kSssTechniques.name(choice.technique))},
-                                  {"taps", choice.taps},
-                                  {"gaussians", choice.gaussians},
-                                  {"separable_samples", choice.separableSamples},
-                                  {"disk_samples", choice.diskSamples}};
-}
-
-std::string describeSssChoice(const SssChoice& choice) {
-    const std::string technique(kSssTechniques.name(choice.technique));
-    switch (choice.technique) {
-        case SssTechnique::Gaussians:
-            return technique + " taps=" + std::to_string(choice.taps) + " gaussians=" + std::to_string(choice.gaussians);
-        case SssTechnique::Separable:
-            return technique + " samples=" + std::to_string(choice.separableSamples);
-        case SssTechnique::Disk:
-            return technique + " samples=" + std::to_string(choice.diskSamples);
-    }
-    return technique;
-}
 
 size_t QualityTable::rowFor(float pixelsPerMm) const {
     for (size_t i = 0; i < rows.size(); ++i) {

@@ -27,21 +27,25 @@ inline constexpr EnumTable<SssMode, 2> kSssModes{
       {SssMode::TextureSpace, "ts", "texture-space SSS (d'Eon & Luebke 2007)"}}}};
 
 // The screen-space SSS technique (settings.sss.technique): how the
-// irradiance is spread by the profile. Each has its own passes
-// (engine/passes/SssPasses.h dispatches) and its own settings.
+// irradiance is spread by the profile. Each has its own descriptor
+// (scene/SssTechniques.h: its settings, its tuner candidates), its own passes
+// (passes/SssTechniquePasses.cpp) and its own shaders.
 enum class SssTechnique {
     Gaussians = DERMIS_SSS_TECHNIQUE_GAUSSIANS,
     Separable = DERMIS_SSS_TECHNIQUE_SEPARABLE,
     Disk = DERMIS_SSS_TECHNIQUE_DISK,
+    Preintegrated = DERMIS_SSS_TECHNIQUE_PREINTEGRATED,
 };
 
-inline constexpr EnumTable<SssTechnique, 3> kSssTechniques{
+inline constexpr EnumTable<SssTechnique, 4> kSssTechniques{
     "SSS technique",
     {{{SssTechnique::Gaussians, "gaussians",
        "d'Eon & Luebke 2007's sum of Gaussians, one separable pair each (sss.taps, sss.gaussians)"},
       {SssTechnique::Separable, "separable",
        "Jimenez et al. 2015's one pre-integrated separable pair (sss.separable_samples)"},
-      {SssTechnique::Disk, "disk", "the profile sampled on a disk in one pass (sss.disk_samples)"}}}};
+      {SssTechnique::Disk, "disk", "the profile sampled on a disk in one pass (sss.disk_samples)"},
+      {SssTechnique::Preintegrated, "preintegrated",
+       "Penner & Borshukov 2011's falloff over N.L and curvature from a table, in the lighting pass; no blur"}}}};
 
 // Vila Verde 2015 §5.1's three versions of the screen-space frame (render/SssVariant.h).
 enum class SssVariant { C, Lcb, Lbb };

@@ -19,6 +19,18 @@ const IntegerRule& separableSamplesRule() {
     return kRule;
 }
 
+const IntegerRule& diskSamplesRule() {
+    static const IntegerRule kRule{[](int samples) { return samples >= kMinDiskSamples && samples <= kMaxDiskSamples; },
+                                   Range::closed(kMinDiskSamples, kMaxDiskSamples).describe()};
+    return kRule;
+}
+
+const IntegerRule& profileGaussiansRule() {
+    static const IntegerRule kRule{[](int count) { return count >= 1 && count <= kMaxProfileGaussians; },
+                                   Range::closed(1, kMaxProfileGaussians).describe()};
+    return kRule;
+}
+
 const IntegerRule& tsSizeRule() {
     static const IntegerRule kRule{
         [](int size) { return size >= kMinTsSize && size <= kMaxTsSize && (size & (size - 1)) == 0; },

@@ -14,23 +14,14 @@
 // S is a settings struct, const when writing.
 
 #include "core/Limits.h"
+#include "scene/IntegerRule.h"
 #include "scene/JsonReader.h"
 #include "scene/Scene.h"
+#include "scene/SssTechniques.h"
 
 #include <string>
 
 namespace dermis {
-
-// An integer that must satisfy `valid`; `requirement` says how in messages
-// ("must be an odd number of taps in [3, 33]").
-struct IntegerRule {
-    bool (*valid)(int);
-    std::string requirement;
-};
-
-const IntegerRule& blurTapsRule();  // odd, in [kMinBlurTaps, kMaxBlurTaps]
-const IntegerRule& tsSizeRule();
-const IntegerRule& separableSamplesRule();  // odd, in [kMinSeparableSamples, kMaxSeparableSamples]    // a power of two in [kMinTsSize, kMaxTsSize]
 
 template <typename S, typename V>
 void visitShadowFields(S& s, V& v) {
@@ -46,12 +37,11 @@ void visitSssFields(S& s, V& v) {
     v.choice("variant", kSssVariants, s.variant);
     v.choice("blur", kSssBlurs, s.blur);
     v.choice("technique", kSssTechniques, s.technique);
-    v.rule("separable_samples", s.separableSamples, separableSamplesRule());
-    v.integer("disk_samples", s.diskSamples, Range::closed(kMinDiskSamples, kMaxDiskSamples));
-    v.rule("taps", s.taps, blurTapsRule());
+    for (const SssTechniqueInfo& technique : sssTechniques()) {
+        for (const SssSampleSetting& setting : technique.settings) v.rule(setting.key, s.*setting.setting, setting.rule());
+    }
     v.number("bilateral_depth_mm", s.bilateralDepthMm, Range::above(0.0));
     v.number("control_depth_scale_per_mm", s.controlDepthScalePerMm, Range::atLeast(0.0));
-    v.integer("gaussians", s.gaussians, Range::closed(1, kMaxProfileGaussians));
     v.number("width_scale", s.widthScale, Range::atLeast(0.0));
     v.number("min_width_px", s.minWidthPx, Range::atLeast(0.0));
     v.number("mix", s.mix, Range::closed(0.0, 1.0));

@@ -48,6 +48,7 @@
 #define DERMIS_SSS_TECHNIQUE_GAUSSIANS 0
 #define DERMIS_SSS_TECHNIQUE_SEPARABLE 1
 #define DERMIS_SSS_TECHNIQUE_DISK 2
+#define DERMIS_SSS_TECHNIQUE_PREINTEGRATED 3
 
 // Edge handling of the screen-space SSS blur (SssBlurBlock::edges.x); C++:
 // SssBlur. Bilateral: depth-weighted taps; control: Jimenez et al. 2009's lerp
@@ -182,5 +183,12 @@
 #define DERMIS_PREFILTERED_ROUGHNESS_OF_LEVEL(level) \
     ((level) < 1.0 ? (level) * DERMIS_PREFILTERED_FIRST_ROUGHNESS \
                    : DERMIS_PREFILTERED_MAX_ROUGHNESS * exp2((level) - (DERMIS_PREFILTERED_LEVELS - 1.0)))
+
+// Pre-integrated skin shading (Penner & Borshukov 2011; engine/sss/PreintegratedTable.h):
+// the table's size and its curvature axis, y = sqrt(curvature / max): a sphere of radius
+// 1 mm at y = 1, a flat surface at y = 0.
+#define DERMIS_PREINTEGRATED_COSINES 64
+#define DERMIS_PREINTEGRATED_CURVATURES 64
+#define DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM 1.0
 
 #endif

@@ -111,11 +111,12 @@ DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {
 struct ProfileParams {
     vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight (normalised per channel), a: variance (mm^2)
     vec4 info;  // x: Gaussian count, yzw: weight the SSS accumulation starts with (the identity plus skipped narrow Gaussians)
+    vec4 technique;  // x: 1 = "preintegrated" (the lighting pass reads layer `slot` of its table), yzw: 0
 };
 
 DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
     ProfileParams profiles[DERMIS_MAX_PROFILES + 1];  // [slot]; [0] is unused (no SSS)
-    vec4 transmittance;  // x: shrink (mm), y: strength
+    vec4 transmittance;  // x: shrink (mm), y: strength, z: 1 = some slot is "preintegrated", w: 0
 } DERMIS_BLOCK_END(uProfiles)
 
 // Per-pass blocks share DERMIS_BINDING_PASS; a shader defines the macro of

@@ -181,6 +181,19 @@ TEST(FrameDeclaration, NoSssOnScreenRunsNoSssPass) {
     EXPECT_TRUE(frames.executed("composite"));
 }
 
+// Pre-integrated skin shading scatters in the lighting pass: no SSS pass has
+// work, and the lighting pass reads the G-buffer's scatter target (its slot
+// and curvature), which it does not otherwise.
+TEST(FrameDeclaration, PreintegratedSkinRunsNoSssPass) {
+    DeclaredFrames frames("default.json", {"sss.technique=preintegrated"});
+    ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
+    EXPECT_EQ(frames.declaredWithPrefix("sss skin"), 0) << frames.listing();
+    EXPECT_EQ(frames.culledBecause("sss init"), "predicate: every SSS slot on screen scatters in the lighting pass");
+    EXPECT_TRUE(frames.executed("lighting"));
+    EXPECT_TRUE(frames.executed("composite"));
+}
+
 TEST(FrameDeclaration, OffScreenScreenSpaceCharacterRunsNoBlur) {
     DeclaredFrames frames("default.json", kLookAway);
     ASSERT_TRUE(frames.declare());

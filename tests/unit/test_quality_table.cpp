@@ -113,7 +113,7 @@ TEST(QualityTable, LoadErrorsNameTheFileTheKeyAndTheProblem) {
     text.replace(text.find("\"loss\""), 6, "\"lost\"");
     expectError(parseQualityTable(text, "key.json"), "key.json", {"/rows/0", "lost"});
     expectError(parseQualityTable(tableText(0.01, 2, "blobs"), "technique.json"), "technique.json",
-                {"/rows/0/choice/technique", "blobs", "gaussians, separable or disk"});
+                {"/rows/0/choice/technique", "blobs", "gaussians, separable, disk or preintegrated"});
     text = tableText(0.01, 2);
     text.replace(text.find("\"pixels_per_mm\": 2"), 18, "\"pixels_per_mm\": 1");  // row 1 as row 0
     expectError(parseQualityTable(text, "order.json"), "order.json", {"/rows/1/pixels_per_mm", "strictly increasing"});
@@ -276,7 +276,8 @@ TEST(QualityTune, CheapestWithinTheBudgetElseTheFinest) {
     EXPECT_EQ(bench::cheapestWithin(3.0f, apart, 0.01, 4.0).choice, middle);  // 2.4 > 2.3
     // The finest (loss 0) within the tie of the cheapest candidate: the finest.
     EXPECT_EQ(bench::cheapestWithin(3.0f, tied, 0.01, 2.25).choice, SssChoice::finest());
-    EXPECT_EQ(bench::tuneCandidates().size(), 15u + 4u + 4u);
+    // 5 x 3 Gaussian chains, 4 separable and 4 disk sample counts, the pre-integrated table.
+    EXPECT_EQ(bench::tuneCandidates().size(), 15u + 4u + 4u + 1u);
     auto percent = bench::parseBudget("1%");
     ASSERT_TRUE(percent.ok());
     EXPECT_DOUBLE_EQ(*percent, 0.01);

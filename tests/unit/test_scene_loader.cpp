@@ -810,9 +810,9 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     EXPECT_EQ(errorOf(R"({"settings": {"transmittance": {"shrink": 1}}})"),
               "/settings/transmittance/shrink: unknown key \"shrink\" (known: enabled, shrink_mm and strength)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"width": 1}}})"),
-              "/settings/sss/width: unknown key \"width\" (known: enabled, variant, blur, technique, separable_samples, disk_samples, taps, "
-              "bilateral_depth_mm, "
-              "control_depth_scale_per_mm, gaussians, width_scale, min_width_px, mix and lean_moment_width_mm)");
+              "/settings/sss/width: unknown key \"width\" (known: enabled, variant, blur, technique, taps, gaussians, separable_samples, "
+              "disk_samples, bilateral_depth_mm, "
+              "control_depth_scale_per_mm, width_scale, min_width_px, mix and lean_moment_width_mm)");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius": 1})")),
               "/characters/0/ssao/radius: unknown key \"radius\" (known: radius_m and samples)");
     // The flat shadow keys of the first format are gone.

@@ -169,9 +169,8 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
 
 TEST(SceneOverrides, UnknownKeysNameTheOverride) {
     EXPECT_ERROR(errorOf({"sss.tap=5"}), "--set sss.tap=5",
-                 "/settings/sss/tap: unknown key \"tap\" (known: enabled, variant, blur, technique, separable_samples, disk_samples, taps, "
-              "bilateral_depth_mm, "
-                 "control_depth_scale_per_mm, gaussians, width_scale, min_width_px, mix and lean_moment_width_mm)");
+                 "/settings/sss/tap: unknown key \"tap\" (known: enabled, variant, blur, technique, taps, gaussians, "
+                 "separable_samples, disk_samples, bilateral_depth_mm, control_depth_scale_per_mm, width_scale, min_width_px, mix and lean_moment_width_mm)");
     EXPECT_EQ(errorOf({"foo=1"}).what.rfind("/settings/foo: unknown key \"foo\"", 0), 0u);
     const Error nested = errorOf({"sss.extra.deep=1"});
     EXPECT_EQ(nested.where, "--set sss.extra.deep=1");

@@ -1,5 +1,7 @@
 #include "bench/QualityTune.h"
 
+#include "scene/SssTechniques.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,26 +12,8 @@ namespace dermis::bench {
 const std::vector<SssChoice>& tuneCandidates() {
     static const std::vector<SssChoice> kCandidates = [] {
         std::vector<SssChoice> out;
-        for (int gaussians = 2; gaussians <= 6; ++gaussians) {
-            for (int taps : {5, 9, 17}) {
-                SssChoice choice;
-                choice.technique = SssTechnique::Gaussians;
-                choice.gaussians = gaussians;
-                choice.taps = taps;
-                out.push_back(choice.canonical());
-            }
-        }
-        for (int samples : {7, 11, 17, 25}) {
-            SssChoice choice;
-            choice.technique = SssTechnique::Separable;
-            choice.separableSamples = samples;
-            out.push_back(choice.canonical());
-        }
-        for (int samples : {8, 16, 32, 64}) {
-            SssChoice choice;
-            choice.technique = SssTechnique::Disk;
-            choice.diskSamples = samples;
-            out.push_back(choice.canonical());
+        for (const SssTechniqueInfo& technique : sssTechniques()) {
+            for (const SssChoice& choice : technique.candidates) out.push_back(choice.canonical());
         }
         return out;
     }();

@@ -1,6 +1,7 @@
 #include "bench/SweepPlan.h"
 
 #include "scene/SceneLoader.h"
+#include "scene/SssTechniques.h"
 
 #include <algorithm>
 #include <map>
@@ -14,10 +15,10 @@ namespace {
 std::string canonicalLabel(const std::string& label, const Scene& scene) {
     if (scene.settings.mode != SssMode::ScreenSpace) return label;
     const SssTechnique technique = scene.settings.sss.technique;
-    const std::vector<std::pair<std::string, SssTechnique>> owners = {{"taps=", SssTechnique::Gaussians},
-                                                                      {"gaussians=", SssTechnique::Gaussians},
-                                                                      {"separable_samples=", SssTechnique::Separable},
-                                                                      {"disk_samples=", SssTechnique::Disk}};
+    std::vector<std::pair<std::string, SssTechnique>> owners;
+    for (const SssTechniqueInfo& info : sssTechniques()) {
+        for (const SssSampleSetting& setting : info.settings) owners.push_back({std::string(setting.key) + "=", info.technique});
+    }
     std::string out;
     size_t start = 0;
     while (start <= label.size()) {

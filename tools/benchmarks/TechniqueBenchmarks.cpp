@@ -15,6 +15,7 @@
 #include "core/ImageMetrics.h"
 #include "render/FrameTimings.h"
 #include "scene/QualityTable.h"
+#include "scene/SssTechniques.h"
 
 #include <benchmark/benchmark.h>
 
@@ -30,23 +31,20 @@ namespace {
 const int kSizes[][2] = {{640, 360}, {1280, 720}, {320, 180}};
 
 struct TechniqueCase {
-    std::string label;  // "separable 17"
+    std::string label;  // "separable samples=17" (describeSssChoice)
     SssSettings sss;
 };
 
+// The shipped settings, then every other technique's tuner candidates (scene/SssTechniques.h).
 std::vector<TechniqueCase> techniqueCases(const SssSettings& shipped) {
-    std::vector<TechniqueCase> cases{{"gaussians (default)", shipped}};
-    for (int samples : {7, 11, 17, 25}) {
-        SssSettings s = shipped;
-        s.technique = SssTechnique::Separable;
-        s.separableSamples = samples;
-        cases.push_back({"separable " + std::to_string(samples), s});
-    }
-    for (int samples : {8, 16, 32, 64}) {
-        SssSettings s = shipped;
-        s.technique = SssTechnique::Disk;
-        s.diskSamples = samples;
-        cases.push_back({"disk " + std::to_string(samples), s});
+    std::vector<TechniqueCase> cases{{std::string(kSssTechniques.name(shipped.technique)) + " (default)", shipped}};
+    for (const SssTechniqueInfo& technique : sssTechniques()) {
+        if (technique.technique == shipped.technique) continue;
+        for (const SssChoice& choice : technique.candidates) {
+            SssSettings s = shipped;
+            choice.canonical().applyTo(s);
+            cases.push_back({describeSssChoice(choice), s});
+        }
     }
     return cases;
 }

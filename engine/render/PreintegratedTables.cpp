@@ -1,0 +1,32 @@
+#include "render/PreintegratedTables.h"
+
+#include "scene/SssTechniques.h"
+#include "sss/PreintegratedTable.h"
+
+namespace dermis {
+
+bool PreintegratedTables::prepare(const SssPlan& plan) {
+    bool any = false;
+    for (const SssSlotPlan& slot : plan.slots) {
+        if (!sssTechniqueInfo(slot.choice.technique).scattersInLighting) continue;
+        any = true;
+        if (!mTexture.isValid()) {
+            mTexture = gl::createTexture(GL_TEXTURE_2D);
+            glTextureStorage2D(mTexture.get(), 1, GL_RGBA16F, kPreintegratedCosines,
+                               kPreintegratedCurvatures * (DERMIS_MAX_PROFILES + 1));
+            glTextureParameteri(mTexture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(mTexture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(mTexture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(mTexture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
+        Layer& layer = mLayers[size_t(slot.slot)];
+        if (layer.profile == slot.profile && layer.widthScale == slot.widthScale) continue;
+        const PreintegratedTable table = makePreintegratedTable(*slot.profile, slot.widthScale);
+        glTextureSubImage2D(mTexture.get(), 0, 0, slot.slot * table.curvatures, table.cosines, table.curvatures, GL_RGB,
+                            GL_FLOAT, table.texels.data());
+        layer = {slot.profile, slot.widthScale};
+    }
+    return any;
+}
+
+}  // namespace dermis
