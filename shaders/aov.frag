@@ -1,5 +1,5 @@
 // Writes one linear component of the frame, before tone mapping, for
-// `dermis render --aov`. The AOV id is uFrame.shading.w (render/Aov.h).
+// `dermis render --aov`. The AOV id is uFrame.shading.w (plan/Aov.h).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "EnergyConservation.glsl"

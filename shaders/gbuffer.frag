@@ -8,7 +8,7 @@
 //                  thickness in mm (DERMIS_GBUFFER_SCATTER_LOCATION, docs/materials.md)
 //                  the surface's curvature in 1/mm and the profile slot
 //                  (include/PreintegratedSkin.glsl reads both)
-// With GBUFFER_LEAN defined (variants lcb and lbb, render/SssVariant.h):
+// With GBUFFER_LEAN defined (variants lcb and lbb, plan/SssVariant.h):
 //   target 4       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
 //   target 5       R16F: LEAN M'.xy
 //   (include/Lean.glsl: the space, the projection and the packing). The

@@ -1,6 +1,6 @@
 // Starts the SSS accumulation: SSS pixels take their profile's identity
 // weight (Gaussian 0, plus any Gaussian too narrow to blur this frame, see
-// engine/render/SssPlan.h) times the irradiance; every other pixel keeps its
+// engine/plan/SssPlan.h) times the irradiance; every other pixel keeps its
 // irradiance unchanged. The irradiance's alpha (1, or the LEAN cross moment)
 // and, with SSS_EXTRA_TARGETS = 1, the extra target (the LEAN moments, unit
 // 2, output 1) start the same way with the mean of the identity weight

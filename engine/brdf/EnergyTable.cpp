@@ -3,6 +3,7 @@
 #include "include/SharedConstants.glsl"
 
 #include "brdf/BeckmannTable.h"
+#include "core/GaussLegendre.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,33 +27,12 @@ double fresnelSchlick(double vDotH) {
     return exponential + kSkinF0 * (1.0 - exponential);
 }
 
-// Gauss-Legendre nodes and weights mapped to [0, 1] (Newton's method on P_n).
-struct GaussLegendre {
-    std::vector<double> nodes;
-    std::vector<double> weights;
-};
-
-GaussLegendre makeGaussLegendre(int n) {
-    GaussLegendre rule;
-    rule.nodes.resize(static_cast<size_t>(n));
-    rule.weights.resize(static_cast<size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        double z = std::cos(kPi * (i + 0.75) / (n + 0.5));
-        double derivative = 1.0;
-        for (int iteration = 0; iteration < 100; ++iteration) {
-            double p0 = 1.0, p1 = z;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            derivative = n * (z * p1 - p0) / (z * z - 1.0);
-            const double step = p1 / derivative;
-            z -= step;
-            if (std::fabs(step) < 1e-15) break;
-        }
-        rule.nodes[static_cast<size_t>(i)] = 0.5 * (1.0 - z);
-        rule.weights[static_cast<size_t>(i)] = 1.0 / ((1.0 - z * z) * derivative * derivative);
+// Gauss-Legendre nodes and weights mapped to [0, 1].
+GaussLegendre makeUnitGaussLegendre(int n) {
+    GaussLegendre rule = makeGaussLegendre(n);
+    for (size_t i = 0; i < rule.nodes.size(); ++i) {
+        rule.nodes[i] = 0.5 * (1.0 - rule.nodes[i]);
+        rule.weights[i] *= 0.5;
     }
     return rule;
 }
@@ -159,11 +139,11 @@ double ksDirectionalAlbedo(float cosTheta, float m, const RhoDtQuadrature& quadr
     const int thetaNodes = std::clamp(quadrature.thetaNodes, 1, 256);
     const int phiNodes = std::clamp(quadrature.phiNodes, 1, 256);
     if (thetaNodes == kDefaultQuadrature.thetaNodes && phiNodes == kDefaultQuadrature.phiNodes) {
-        static const GaussLegendre kThetaRule = makeGaussLegendre(kDefaultQuadrature.thetaNodes);
-        static const GaussLegendre kPhiRule = makeGaussLegendre(kDefaultQuadrature.phiNodes);
+        static const GaussLegendre kThetaRule = makeUnitGaussLegendre(kDefaultQuadrature.thetaNodes);
+        static const GaussLegendre kPhiRule = makeUnitGaussLegendre(kDefaultQuadrature.phiNodes);
         return ksDirectionalAlbedoWith(cosTheta, m, quadrature, kThetaRule, kPhiRule);
     }
-    return ksDirectionalAlbedoWith(cosTheta, m, quadrature, makeGaussLegendre(thetaNodes), makeGaussLegendre(phiNodes));
+    return ksDirectionalAlbedoWith(cosTheta, m, quadrature, makeUnitGaussLegendre(thetaNodes), makeUnitGaussLegendre(phiNodes));
 }
 
 float rhoDt(float cosTheta, float m) {

@@ -35,7 +35,7 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
         graph::TextureHandle diffuse;
         LeanShading lean;
         if (plan.textureSpace) {
-            // Characters texture space cannot run (render/TsPlan.h) get the
+            // Characters texture space cannot run (plan/TsPlan.h) get the
             // screen-space chain, whose result the accumulation starts from.
             graph::TextureHandle base = lighting.irradiance;
             if (plan.ts.anyVisibleFallback()) base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets()).diffuse;

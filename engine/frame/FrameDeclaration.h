@@ -1,6 +1,6 @@
 #pragma once
 // Declares the frame's passes into a render graph from its plan
-// (render/FramePlan.h) and the backend textures the graph imports. It does no
+// (plan/FramePlan.h) and the backend textures the graph imports. It does no
 // GL work and cannot fail: every decision was made by the plan, and the
 // graph's compile() culls what the plan says is not needed. On the test
 // backend (graph/TestBackend.h) the inputs' textures are 0 and `services` is
@@ -15,7 +15,7 @@
 #include "graph/RenderGraph.h"
 #include "render/FrameContext.h"
 #include "render/FrameInputs.h"
-#include "render/FramePlan.h"
+#include "plan/FramePlan.h"
 
 #include <vector>
 

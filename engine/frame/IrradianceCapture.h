@@ -7,12 +7,12 @@
 // G-buffer and SSAO for the ambient term, each character's TSM and
 // irradiance pass, exactly as the ts frame declares them) and one read-back
 // pass per character. The caller plans the frame with the texture size it
-// wants and every SSS character visible (render/TsPlan.h).
+// wants and every SSS character visible (plan/TsPlan.h).
 
 #include "core/Image.h"
 #include "graph/RenderGraph.h"
 #include "render/FrameInputs.h"
-#include "render/FramePlan.h"
+#include "plan/FramePlan.h"
 
 #include <vector>
 

@@ -1,4 +1,5 @@
 #include "frame/Renderer.h"
+#include "render/SceneLoading.h"
 
 #include "core/Limits.h"
 
@@ -53,6 +54,7 @@ void Renderer::warnOfFallbacks(const FramePlan& plan) {
 }
 
 Status Renderer::renderFrame(const FrameRequest& request) {
+    if (const Status loaded = loadEnvironment(mScene, mGeometry); !loaded.ok()) return loaded.error();
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     mPlan = std::move(*plan);
@@ -93,6 +95,7 @@ Result<std::vector<Image>> Renderer::captureIrradianceTextures(int sizeTexels) {
     FrameRequest request = mLastRequest;
     request.aov = Aov::IrradianceTexture;
     request.everyCharacterVisible = true;
+    if (const Status loaded = loadEnvironment(mScene, mGeometry); !loaded.ok()) return loaded.error();
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     plan->aov = mLastRequest.aov;

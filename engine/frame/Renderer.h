@@ -1,6 +1,6 @@
 #pragma once
 // The renderer: owns the GPU copy of a scene and, every frame, plans it
-// (render/FramePlan.h, no GL), prepares its GL resources
+// (plan/FramePlan.h, no GL), prepares its GL resources
 // (render/FrameResources.h), declares the render graph
 // (frame/FrameDeclaration.h), lets it cull, and runs it. A GL context must
 // be current.
@@ -13,15 +13,15 @@
 #include "core/Result.h"
 #include "gl/GlGraphBackend.h"
 #include "gl/GpuProfiler.h"
-#include "render/Aov.h"
-#include "render/FramePlan.h"
+#include "plan/Aov.h"
+#include "plan/FramePlan.h"
 #include "render/FrameResources.h"
 #include "render/FrameTimings.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
-#include "render/SceneGeometry.h"
-#include "render/PoseCache.h"
-#include "render/ShadowCache.h"
+#include "plan/SceneGeometry.h"
+#include "plan/PoseCache.h"
+#include "plan/ShadowCache.h"
 #include "scene/Scene.h"
 
 #include <memory>

@@ -43,7 +43,7 @@ struct UvLayout {
     // The share of the surface (spatial area; triangles degenerate in space
     // left out) on triangles with no area in UV: a mesh without TEXCOORD_0
     // (every UV 0) has 1, a usable layout 0. An irradiance texture cannot
-    // hold light for such triangles (render/TsPlan.h falls back).
+    // hold light for such triangles (plan/TsPlan.h falls back).
     float uvlessSurfaceFraction = 0.0f;
     // The share of the texels of the unit UV square that the layout covers
     // which more than one triangle covers (texel centres of a

@@ -1,5 +1,5 @@
 #pragma once
-// Writes the requested AOV (render/Aov.h), linear, into `output` (an imported
+// Writes the requested AOV (plan/Aov.h), linear, into `output` (an imported
 // RGBA32F texture). Only the inputs that AOV needs are read, so the graph
 // culls every pass the AOV does not depend on.
 

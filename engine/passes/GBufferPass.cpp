@@ -1,6 +1,6 @@
 #include "passes/GBufferPass.h"
 
-#include "render/BackFaceCulling.h"
+#include "plan/BackFaceCulling.h"
 
 namespace dermis {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Pass 2: the G-buffer (layout in shaders/gbuffer.frag). The stencil holds
 // each pixel's SSS profile slot so later blurs can be confined to skin. In the
-// LEAN variants (render/SssVariant.h) it also holds the view-plane LEAN
+// LEAN variants (plan/SssVariant.h) it also holds the view-plane LEAN
 // moments (shaders/include/Lean.glsl); in variant c they do not exist.
 
 #include "graph/RenderGraph.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The LEAN specular (variants lcb and lbb, render/SssVariant.h; the method is
+// The LEAN specular (variants lcb and lbb, plan/SssVariant.h; the method is
 // shaders/include/Lean.glsl, the per-pixel sum shaders/include/LeanLights.glsl):
 // after the SSS chain, the specular of characters with LEAN maps from their
 // blurred view-plane moments, with the lighting pass's shadow visibility;

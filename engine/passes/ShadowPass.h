@@ -1,9 +1,9 @@
 #pragma once
 // The shadow maps: one pass per shadow-casting light (FramePlan::shadows).
 // Renders the characters the plan keeps for the light (ShadowSlotPlan::casters,
-// render/ShadowCasters.h) into its map as linear depth along the light's axis
+// plan/ShadowCasters.h) into its map as linear depth along the light's axis
 // (metres). Skipped by its predicate when the plan found the cached map
-// current (render/ShadowCache.h), or when no character is on screen to
+// current (plan/ShadowCache.h), or when no character is on screen to
 // receive the shadow.
 
 #include "graph/RenderGraph.h"

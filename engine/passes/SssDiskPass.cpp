@@ -6,7 +6,7 @@
 #include "passes/SssPasses.h"
 
 #include "passes/FullscreenPass.h"
-#include "render/SssVariant.h"
+#include "plan/SssVariant.h"
 #include "sss/DiskKernel.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "passes/SssPasses.h"
 
 #include "passes/FullscreenPass.h"
-#include "render/SssVariant.h"
+#include "plan/SssVariant.h"
 #include "sss/BlurKernel.h"
 
 #include <cassert>

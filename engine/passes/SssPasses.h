@@ -1,6 +1,6 @@
 #pragma once
 // Pass 5: the screen-space SSS chain (shaders/include/SssBlur.glsl is the
-// method's manual; render/SssPlan.h decides what runs).
+// method's manual; plan/SssPlan.h decides what runs).
 //
 //   sss init            accumulation = identity weight x irradiance (SSS pixels), irradiance elsewhere
 //   sss <profile> gN h  horizontal step of Gaussian N      \ per profile slot, per Gaussian;
@@ -17,7 +17,7 @@
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
 #include "render/FrameContext.h"
-#include "render/SssVariant.h"
+#include "plan/SssVariant.h"
 
 #include <vector>
 
@@ -29,7 +29,7 @@ struct SssChain {
 };
 
 // Screen-space SSS: `sss init`, then each technique's passes for the slots
-// whose choice (render/SssPlan.h, SssChoice) is that technique, as the
+// whose choice (plan/SssPlan.h, SssChoice) is that technique, as the
 // technique registry lists them (passes/SssTechniquePasses.cpp). The returned targets hold the scattered
 // irradiance (and extras) on the SSS pixels and the inputs' values
 // everywhere else; with SSS disabled or no SSS pixel on screen every pass is

@@ -1,6 +1,6 @@
 #pragma once
 // Texture-space SSS, the "ts" mode (d'Eon & Luebke 2007;
-// shaders/include/TextureSpace.glsl is the method's manual, render/TsPlan.h
+// shaders/include/TextureSpace.glsl is the method's manual, plan/TsPlan.h
 // decides what runs, FramePlan::ts holds the decisions). It takes the place
 // of the screen-space chain
 // (SssPasses.h) and returns what the composite reads in its stead:
@@ -26,9 +26,9 @@
 
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "render/FrameContext.h"
-#include "render/TsPlan.h"
+#include "plan/TsPlan.h"
 
 #include <vector>
 
@@ -45,14 +45,14 @@ constexpr int kTsmGaussians = 3;
 // Declares the passes of FramePlan::ts. `irradiance` is the lighting pass's
 // diffuse irradiance (before the screen-space transmittance); `base` what the
 // accumulation starts from: the same irradiance, or the screen-space chain's
-// result when a character falls back to it (render/TsPlan.h); `black` an
+// result when a character falls back to it (plan/TsPlan.h); `black` an
 // imported 1x1 black texture (the TSM of a character without one).
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
                                            graph::TextureHandle base, graph::TextureHandle black);
 
-// The UV-space AOVs (render/Aov.h), in either SSS mode: the stretch map, or
+// The UV-space AOVs (plan/Aov.h), in either SSS mode: the stretch map, or
 // the irradiance texture before dilation and blurs, of the first SSS character
 // on screen. Only the passes that texture needs are declared (stretch; tsm and
 // irradiance), so in screen-space mode nothing else of this mode runs. `none`

@@ -5,7 +5,7 @@
 #include "graph/RenderGraph.h"
 #include "passes/GBufferPass.h"
 #include "render/FrameContext.h"
-#include "render/TsPlan.h"
+#include "plan/TsPlan.h"
 
 #include <string>
 #include <vector>

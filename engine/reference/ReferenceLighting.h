@@ -9,7 +9,7 @@
 // - the ambient is uniform and unoccluded: the renderer darkens it by SSAO, the
 //   reference takes AO = 1;
 // - the lights the renderer shadows are exactly the ones that cast shadow rays
-//   here (engine/render/LightSetup.cpp: shadow on, the first
+//   here (engine/plan/LightSetup.cpp: shadow on, the first
 //   DERMIS_MAX_SHADOWED_LIGHTS of them, point lights included: a cube map takes
 //   one slot); only the first DERMIS_MAX_LIGHTS lights count;
 // - a light with a size (Light::angularDiameterDeg, Light::radiusM) is an area

@@ -1,6 +1,6 @@
 #include "reference/ReferenceRenderer.h"
 
-#include "import/CharacterPose.h"
+#include "pose/CharacterPose.h"
 
 #include "core/Hash.h"
 #include "core/Log.h"

@@ -7,7 +7,7 @@
 
 #include "gl/FramebufferCache.h"
 #include "gl/GlObjects.h"
-#include "render/FramePlan.h"
+#include "plan/FramePlan.h"
 #include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
 #include "render/Programs.h"
@@ -42,7 +42,7 @@ struct FrameServices {
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;
     // One draw covering these disjoint pixel rectangles (at most
-    // DERMIS_MAX_SCREEN_REGIONS; render/ScreenRegions.h), or the fullscreen
+    // DERMIS_MAX_SCREEN_REGIONS; plan/ScreenRegions.h), or the fullscreen
     // triangle when there are none. The program's vertex stage must be
     // shaders/fullscreen.vert.
     void drawRegions(const std::vector<glm::ivec4>& regions) const;

@@ -41,7 +41,7 @@ struct PassSummary {
     size_t samples = 0;
 };
 
-// One character as the last frame planned it (render/FramePlan.h), for the
+// One character as the last frame planned it (plan/FramePlan.h), for the
 // timings JSON: what it cost depends on these choices.
 struct CharacterReport {
     std::string name;
@@ -51,7 +51,7 @@ struct CharacterReport {
     float clipTimeS = 0.0f;
     int textureSpaceSize = 0;      // irradiance texture side; 0 when texture space does not draw it
     std::string textureSpaceFallback;
-    // Screen space: the SSS choice it renders with (render/SssPlan.h CharacterSssChoice); absent when it has no SSS.
+    // Screen space: the SSS choice it renders with (plan/SssPlan.h CharacterSssChoice); absent when it has no SSS.
     bool hasSss = false;
     SssChoice sssChoice;
     float pixelsPerMm = 0.0f;

@@ -1,5 +1,5 @@
 #pragma once
-// The GPU side of the environment light (render/EnvironmentPlan.h,
+// The GPU side of the environment light (plan/EnvironmentPlan.h,
 // docs/environment.md), owned by the frame resources and made in the prepare
 // step (a GL context must be current):
 //   - the EnvironmentBlock (binding DERMIS_BINDING_ENVIRONMENT) each frame;
@@ -19,7 +19,7 @@
 #include "gl/GlObjects.h"
 #include "gpu/UniformBlocks.h"
 #include "mesh/Mesh.h"
-#include "render/EnvironmentPlan.h"
+#include "plan/EnvironmentPlan.h"
 
 #include <memory>
 #include <vector>

@@ -1,9 +1,10 @@
 #include "render/GpuScene.h"
+#include "render/SceneLoading.h"
 
 #include "mesh/MeshTopology.h"
 
 #include "lean/LeanBake.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
 #include "gpu/UniformBlocks.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
 // Everything of a scene that lives on the GPU: one mesh and its maps per
 // character. Built once from a Scene; where the characters are this frame is
-// the frame plan's (render/FramePlan.h).
+// the frame plan's (plan/FramePlan.h).
 
 #include "core/Image.h"
 #include "core/Result.h"
@@ -95,7 +95,7 @@ class GpuScene {
 public:
     // Loads every character's model (procedural or glTF) and uploads it.
     static Result<GpuScene> create(const Scene& scene);
-    // Uploads models already loaded (render/SceneGeometry.h, loadSceneModels), one per character.
+    // Uploads models already loaded (render/SceneLoading.h, loadSceneModels), one per character.
     static Result<GpuScene> create(const Scene& scene, const std::vector<Model>& models);
 
     std::vector<GpuCharacter>& characters() { return mCharacters; }

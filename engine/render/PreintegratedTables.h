@@ -6,7 +6,7 @@
 // (profile, width scale) first needs it and kept while it stays.
 
 #include "gl/GlObjects.h"
-#include "render/SssPlan.h"
+#include "plan/SssPlan.h"
 
 #include <array>
 

@@ -1,7 +1,7 @@
 #include "render/Programs.h"
 
 #include "brdf/BeckmannTable.h"
-#include "render/SssVariant.h"
+#include "plan/SssVariant.h"
 
 #include <string>
 #include <utility>
@@ -48,7 +48,7 @@ Result<Programs> Programs::build() {
     add(programs.skinning, "", "", {}, "skinning.comp");
     add(programs.transferRotate, "", "", {}, "transfer_rotate.comp");
 
-    // Variants of shaders by a define: the LEAN variants (render/SssVariant.h)
+    // Variants of shaders by a define: the LEAN variants (plan/SssVariant.h)
     // with their LEAN outputs, the G-buffer with the environment transfer, and
     // the skybox (a full-screen triangle on the far plane, so the depth test
     // keeps it to the background).

@@ -3,7 +3,7 @@
 // vertex and index buffers plus a second vertex buffer of UV-layout values
 // (mesh/UvLayout.h: dP/du, dP/dv and the distance to a chart border), made
 // once per character from the layout analysed on the CPU mesh
-// (render/SceneGeometry.h). Attribute locations:
+// (plan/SceneGeometry.h). Attribute locations:
 //   0 position, 1 normal, 2 tangent, 3 uv   (the GpuMesh's, as the G-buffer's)
 //   4 dP/du, 5 dP/dv (object units per UV unit), 6 border distance (object units)
 //   7 colour (COLOR_0, the GpuMesh's colour buffer)

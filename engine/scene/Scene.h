@@ -164,7 +164,7 @@ struct Environment {
 // Screen-space SSS (docs/screen-space.md, step 6; Chappuis 2011 §2.2.4, Vila Verde 2015 §3.2.2 and §4.3.2).
 struct SssSettings {
     bool enabled = true;
-    SssVariant variant = SssVariant::Lbb;  // Vila Verde 2015 §5.1 (kSssVariants; render/SssVariant.h)
+    SssVariant variant = SssVariant::Lbb;  // Vila Verde 2015 §5.1 (kSssVariants; plan/SssVariant.h)
     SssBlur blur = SssBlur::Variant;        // edge handling (kSssBlurs)
     SssTechnique technique = SssTechnique::Gaussians;  // kSssTechniques
     int separableSamples = 17;           // separable: samples per direction, odd, kMinSeparableSamples..kMaxSeparableSamples
@@ -176,7 +176,7 @@ struct SssSettings {
     float widthScale = 1.0f;             // multiplies every profile's widths (1 = physical)
     float minWidthPx = 0.5f;             // skip a Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel
     float mix = 0.5f;                    // pre-/post-scatter albedo mix (Chappuis 2011 §2.2.4): albedo^mix before the blur
-    float leanMomentWidthMm = 0.6f;      // lcb/lbb: LEAN moments ride through the Gaussians up to this std dev (0 = all; render/SssVariant.h)
+    float leanMomentWidthMm = 0.6f;      // lcb/lbb: LEAN moments ride through the Gaussians up to this std dev (0 = all; plan/SssVariant.h)
 };
 
 // Back-normal transmittance through thin regions (Papanikolaou 2013 §4.3, Jimenez 2010).

@@ -47,7 +47,7 @@ inline constexpr EnumTable<SssTechnique, 4> kSssTechniques{
       {SssTechnique::Preintegrated, "preintegrated",
        "Penner & Borshukov 2011's falloff over N.L and curvature from a table, in the lighting pass; no blur"}}}};
 
-// Vila Verde 2015 §5.1's three versions of the screen-space frame (render/SssVariant.h).
+// Vila Verde 2015 §5.1's three versions of the screen-space frame (plan/SssVariant.h).
 enum class SssVariant { C, Lcb, Lbb };
 
 inline constexpr EnumTable<SssVariant, 3> kSssVariants{

@@ -1,7 +1,7 @@
 #pragma once
 // One screen-space SSS choice: the technique and the sample counts it reads
 // (scene/SssTechniques.h lists which), for one stencil slot
-// (render/SssPlan.h): the scene's settings.sss, or a quality table's row.
+// (plan/SssPlan.h): the scene's settings.sss, or a quality table's row.
 
 #include "scene/SceneEnums.h"
 
@@ -14,7 +14,7 @@ namespace dermis {
 struct SssSettings;
 
 // The screen-space technique and its sample counts for one stencil slot
-// (render/SssPlan.h): the scene's settings.sss, or a quality table's choice.
+// (plan/SssPlan.h): the scene's settings.sss, or a quality table's choice.
 struct SssChoice {
     SssTechnique technique = SssTechnique::Gaussians;
     int taps = 9;               // gaussians: taps per direction

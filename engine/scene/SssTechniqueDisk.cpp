@@ -9,12 +9,7 @@ SssTechniqueInfo diskTechnique() {
     SssTechniqueInfo info;
     info.technique = SssTechnique::Disk;
     info.settings = {{"disk_samples", "samples", &SssSettings::diskSamples, &SssChoice::diskSamples, diskSamplesRule}};
-    for (int samples : {8, 16, 32, 64}) {
-        SssChoice choice;
-        choice.technique = info.technique;
-        choice.diskSamples = samples;
-        info.candidates.push_back(choice);
-    }
+    info.candidates = sampleCountCandidates(info.technique, &SssChoice::diskSamples, {8, 16, 32, 64});
     return info;
 }
 

@@ -10,12 +10,7 @@ SssTechniqueInfo separableTechnique() {
     info.technique = SssTechnique::Separable;
     info.settings = {{"separable_samples", "samples", &SssSettings::separableSamples, &SssChoice::separableSamples,
                       separableSamplesRule}};
-    for (int samples : {7, 11, 17, 25}) {
-        SssChoice choice;
-        choice.technique = info.technique;
-        choice.separableSamples = samples;
-        info.candidates.push_back(choice);
-    }
+    info.candidates = sampleCountCandidates(info.technique, &SssChoice::separableSamples, {7, 11, 17, 25});
     return info;
 }
 

@@ -4,6 +4,17 @@
 
 namespace dermis {
 
+std::vector<SssChoice> sampleCountCandidates(SssTechnique technique, int SssChoice::*member, std::initializer_list<int> counts) {
+    std::vector<SssChoice> out;
+    for (int count : counts) {
+        SssChoice choice;
+        choice.technique = technique;
+        choice.*member = count;
+        out.push_back(choice);
+    }
+    return out;
+}
+
 const std::vector<SssTechniqueInfo>& sssTechniques() {
     static const std::vector<SssTechniqueInfo> kTechniques = [] {
         std::vector<SssTechniqueInfo> techniques = {

@@ -14,6 +14,7 @@
 #include "scene/IntegerRule.h"
 #include "scene/SssChoice.h"
 
+#include <initializer_list>
 #include <vector>
 
 namespace dermis {
@@ -39,6 +40,9 @@ struct SssTechniqueInfo {
     // irradiance: the SSS chain passes its slots' irradiance through unchanged.
     bool scattersInLighting = false;
 };
+
+// `technique` with each of `counts` in `member`, the rest at the defaults.
+std::vector<SssChoice> sampleCountCandidates(SssTechnique technique, int SssChoice::*member, std::initializer_list<int> counts);
 
 // Every technique, in kSssTechniques' order.
 const std::vector<SssTechniqueInfo>& sssTechniques();

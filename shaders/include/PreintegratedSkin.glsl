@@ -10,7 +10,7 @@
 //   its kernel is the profile's 1-D marginal). Light thus wraps past the
 //   terminator and reddens it where the surface is curved. No pass blurs the
 //   irradiance: `sss init` passes its slots' irradiance on unchanged
-//   (render/SssPlan.cpp, initial weight 1).
+//   (plan/SssPlan.cpp, initial weight 1).
 //
 // THE TABLE
 //   Per profile slot (its profile and width scale) a table of

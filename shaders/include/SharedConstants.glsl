@@ -3,7 +3,7 @@
 // code of any layer may include it as "include/SharedConstants.glsl"; GLSL
 // gets it from UniformBlocks.glsl or with `#include "SharedConstants.glsl"`.
 // C++ ties its enums to these ids with static_asserts
-// (gpu/UniformBlocks.h, render/Aov.cpp).
+// (gpu/UniformBlocks.h, plan/Aov.cpp).
 
 #ifndef DERMIS_SHARED_CONSTANTS_GLSL
 #define DERMIS_SHARED_CONSTANTS_GLSL
@@ -26,7 +26,7 @@
 // Samples per pixel of the disk-sampled Burley technique (Christensen & Burley 2015).
 #define DERMIS_MIN_DISK_SAMPLES 8
 #define DERMIS_MAX_DISK_SAMPLES 128
-#define DERMIS_MAX_SCREEN_REGIONS 64     // rectangles one fullscreen draw may cover (engine/render/ScreenRegions.h)
+#define DERMIS_MAX_SCREEN_REGIONS 64     // rectangles one fullscreen draw may cover (engine/plan/ScreenRegions.h)
 
 // Light types (GpuLight::positionType.w); C++: LightType.
 #define DERMIS_LIGHT_DIRECTIONAL 0

@@ -66,7 +66,7 @@
 //     exactly sigma_px^2 (a few fixed-point steps; the variance grows by
 //     about as much as sigma'^2 does).
 //
-// WHERE THE MOMENTS STOP (SSS_PACKED_OUT = 0; engine/render/SssVariant.h)
+// WHERE THE MOMENTS STOP (SSS_PACKED_OUT = 0; engine/plan/SssVariant.h)
 //   The moments need not ride through every Gaussian: the wide ones blur the
 //   irradiance over millimetres, but change the specular little (the LEAN
 //   lobe's detail is sub-pixel, and the view-plane slopes of a face vary

@@ -12,7 +12,7 @@
 //   about 4x the cost of the control blur; here the taps' depth keys and
 //   weights are computed once). Their accumulation weight per Gaussian is one
 //   scalar (alpha and extra targets alike), the mean of the Gaussian's RGB
-//   weights (engine/render/SssVariant.h),
+//   weights (engine/plan/SssVariant.h),
 //   because:
 //   - the profile's weights are normalised per channel, so the means also
 //     sum to one with the identity weight: the accumulated moments are a

@@ -23,7 +23,7 @@
 //                    weighted by the Gaussian integrated over it, up to 16
 //                    texels; beyond, N taps spaced by sigma (ts_blur.frag
 //                    says why). Gaussian 0 is the irradiance itself unless
-//                    it spans texels (render/TsPlan.h). Alpha is blurred
+//                    it spans texels (plan/TsPlan.h). Alpha is blurred
 //                    along, so the thickness is smooth (§2.5).
 //     5. gather      in screen space, for the character's pixels (the
 //                    surface the G-buffer kept, by its stored view depth):
@@ -69,7 +69,7 @@ const float kTsMinThicknessMm = DERMIS_SELF_THICKNESS_MM;
 const float kTsMinAlpha = 1e-4;
 
 // Depth in the TSM: along the axis for directional lights, the distance to the
-// light for spot lights (render/TsPlan.h).
+// light for spot lights (plan/TsPlan.h).
 float tsmDepthM(vec3 worldPositionM) {
     vec3 d = worldPositionM - uTs.tsmOrigin.xyz;
     return uTs.tsmOrigin.w > 0.5 ? dot(d, uTs.tsmAxis.xyz) : length(d);

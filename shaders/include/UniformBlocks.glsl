@@ -87,7 +87,7 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     vec4 environmentSh[DERMIS_SH_COEFFICIENTS];  // rgb: uEnvironment.sh in this object's space, for its vertices' transfer
 } DERMIS_BLOCK_END(uObject)
 
-// The frame's environment light (render/EnvironmentPlan.h, include/Environment.glsl).
+// The frame's environment light (plan/EnvironmentPlan.h, include/Environment.glsl).
 DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
     vec4 sh[DERMIS_SH_COEFFICIENTS];  // rgb: radiance's SH coefficients (world space) x intensity; 0 past the scene's sh_bands
     mat4 mapFromWorld;                // a world direction to the map's (rotation; the skybox and the specular)
@@ -159,7 +159,7 @@ DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
 #endif
 
 // The rectangles a fullscreen pass covers in one draw (shaders/fullscreen.vert,
-// engine/render/ScreenRegions.h): disjoint, in pixels.
+// engine/plan/ScreenRegions.h): disjoint, in pixels.
 #if defined(__cplusplus) || defined(DERMIS_USE_SCREEN_REGIONS_BLOCK)
 DERMIS_BLOCK(ScreenRegionsBlock, DERMIS_BINDING_SCREEN_REGIONS) {
     ivec4 regions[DERMIS_MAX_SCREEN_REGIONS];  // x, y, width, height (pixels, y up)
@@ -177,7 +177,7 @@ DERMIS_BLOCK(SkinningBlock, DERMIS_BINDING_PASS) {
 // the manual is include/TextureSpace.glsl).
 #if defined(__cplusplus) || defined(DERMIS_USE_TS_BLOCK)
 DERMIS_BLOCK(TextureSpaceBlock, DERMIS_BINDING_PASS) {
-    mat4 tsmClipFromWorld;  // the character's translucent shadow map (render/TsPlan.h)
+    mat4 tsmClipFromWorld;  // the character's translucent shadow map (plan/TsPlan.h)
     vec4 tsmOrigin;         // xyz: TSM depth is measured from here (m); w: 1 = along tsmAxis, 0 = distance to it
     vec4 tsmAxis;           // xyz: unit axis of the TSM light; w: 1 = a TSM is bound, 0 = none
     vec4 tsm;               // x: c (1/mm) of the stored exp(-c d); y: strength; z: TSM side (texels); w: Gaussian the TSM terms start at

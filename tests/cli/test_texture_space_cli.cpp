@@ -117,7 +117,7 @@ TEST(TextureSpaceCli, CompareWritesImagesHeatmapAndMetrics) {
     EXPECT_NE(missing.err.find("--out DIR is required"), std::string::npos) << missing.err;
 }
 
-// render/TsPlan.h: a character without TEXCOORD_0 falls back to screen space
+// plan/TsPlan.h: a character without TEXCOORD_0 falls back to screen space
 // out loud: one warning naming the file, the character and the reason over
 // all frames, and the timings JSON gives the reason for each skipped pass.
 TEST(TextureSpaceCli, CharacterWithoutUvsFallsBackWithOneWarning) {

@@ -1,4 +1,4 @@
-// Back-face culling in the G-buffer (settings.cull_back_faces, render/BackFaceCulling.h)
+// Back-face culling in the G-buffer (settings.cull_back_faces, plan/BackFaceCulling.h)
 // changes the work, never the image: the same frames with it on and off.
 #include "RenderFixture.h"
 #include "TestSupport.h"

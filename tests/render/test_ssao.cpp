@@ -15,8 +15,9 @@
 #include "passes/GBufferPass.h"
 #include "passes/SsaoPass.h"
 #include "render/FrameContext.h"
-#include "render/FramePlan.h"
-#include "render/SceneGeometry.h"
+#include "plan/FramePlan.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
 #include "scene/SceneLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -9,9 +9,10 @@
 #include "core/ImageMetrics.h"
 #include "gl/GlGraphBackend.h"
 #include "passes/TextureSpacePasses.h"
-#include "render/FramePlan.h"
-#include "render/SceneGeometry.h"
-#include "render/ScreenFootprint.h"
+#include "plan/FramePlan.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
+#include "plan/ScreenFootprint.h"
 #include "render/TsMeshes.h"
 #include "brdf/EnergyTable.h"
 #include "procedural/ProceduralShapes.h"
@@ -819,7 +820,7 @@ std::string writeUvlessScene(const test::TempDir& dir) {
 
 }  // namespace
 
-// render/TsPlan.h: texture space cannot hold light for triangles without UV
+// plan/TsPlan.h: texture space cannot hold light for triangles without UV
 // area, so a character without TEXCOORD_0 falls back to the screen-space
 // chain in texture-space mode (issue: 26,413 of a UV-less sphere's 28,828
 // pixels came out under a quarter of the screen-space value), while the other

@@ -3,7 +3,7 @@
 // list the table generates, and the writer spells values as the table does.
 // The ids that reach shaders equal the GLSL constants (checked at compile time).
 
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "gpu/UniformBlocks.h"
 #include "scene/JsonReader.h"
 #include "scene/SceneEnums.h"

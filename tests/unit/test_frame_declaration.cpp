@@ -1,5 +1,5 @@
 // The real frame on the test backend, without GL: content scenes are loaded
-// and planned (render/FramePlan.h), the frame is declared
+// and planned (plan/FramePlan.h), the frame is declared
 // (frame/FrameDeclaration.h) with 0 for every imported texture, and the
 // graph is compiled but never executed. The tests read which passes run and
 // why the others are culled, in the words of the timings JSON
@@ -9,9 +9,10 @@
 
 #include "graph/RenderGraph.h"
 #include "frame/FrameDeclaration.h"
-#include "render/FramePlan.h"
+#include "plan/FramePlan.h"
 #include "render/FrameTimings.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
 #include "scene/SceneLoader.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,10 @@ public:
     bool declare(Aov aov = Aov::Final) {
         mReports.clear();
         if (!mScene) return false;
+        if (const Status loaded = loadEnvironment(*mScene, mGeometry); !loaded.ok()) {
+            ADD_FAILURE() << loaded.error().message();
+            return false;
+        }
         auto plan = planFrame(*mScene, mGeometry, {kWidth, kHeight, aov}, mShadowCache);
         EXPECT_TRUE(plan.ok()) << plan.error().message();
         if (!plan.ok()) return false;

@@ -7,9 +7,10 @@
 #include "TestSupport.h"
 
 #include "import/GltfLoader.h"
-#include "render/SceneGeometry.h"
-#include "render/SssPlan.h"
-#include "render/TsPlan.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
+#include "plan/SssPlan.h"
+#include "plan/TsPlan.h"
 #include "scene/SceneLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>

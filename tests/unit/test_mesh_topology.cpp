@@ -1,4 +1,4 @@
-// Back-face culling's two conditions (mesh/MeshTopology.h, render/BackFaceCulling.h):
+// Back-face culling's two conditions (mesh/MeshTopology.h, plan/BackFaceCulling.h):
 // which meshes are closed and wound outward, and when the view lets the
 // G-buffer cull them. No GL.
 #include "TestSupport.h"
@@ -6,7 +6,7 @@
 #include "mesh/MeshTopology.h"
 #include "procedural/Procedural.h"
 #include "procedural/ProceduralShapes.h"
-#include "render/BackFaceCulling.h"
+#include "plan/BackFaceCulling.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

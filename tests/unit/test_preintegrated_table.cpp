@@ -2,6 +2,7 @@
 // against its closed forms (no scattering on a flat surface, the flat-terminator limit, the
 // integral kept by a convolution on the circle, the uniform kernel of a tiny sphere), the table
 // against the direct value, and the ring model against a quadrature over a true sphere.
+#include "core/GaussLegendre.h"
 #include "sss/PreintegratedTable.h"
 
 #include <gtest/gtest.h>
@@ -21,34 +22,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 double standardNormalPdf(double z) { return std::exp(-0.5 * z * z) / std::sqrt(2.0 * kPi); }
 double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
-
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton's method on P_n), written here so that the
-// checks do not share the implementation's rule.
-struct GaussLegendre {
-    std::vector<double> nodes, weights;
-};
-
-GaussLegendre gaussLegendre(int n) {
-    GaussLegendre rule;
-    for (int i = 0; i < n; ++i) {
-        double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), derivative = 1.0;
-        for (int iteration = 0; iteration < 100; ++iteration) {
-            double p0 = 1.0, p1 = z;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            derivative = n * (z * p1 - p0) / (z * z - 1.0);
-            const double step = p1 / derivative;
-            z -= step;
-            if (std::fabs(step) < 1e-15) break;
-        }
-        rule.nodes.push_back(z);
-        rule.weights.push_back(2.0 / ((1.0 - z * z) * derivative * derivative));
-    }
-    return rule;
-}
 
 // integral of f over [a, b] by the rule on each panel between consecutive sorted breaks.
 template <class F>
@@ -95,7 +68,7 @@ double azimuthIntegral(double a, double b) {  // integral_0^{2 pi} max(a + b cos
 }
 
 glm::dvec3 sphereScattering(const DiffusionProfile& profile, double radiusMm, double theta) {
-    static const GaussLegendre kRule = gaussLegendre(10);
+    static const GaussLegendre kRule = makeGaussLegendre(10);
     glm::dvec3 numerator(0.0), denominator(0.0);
     for (const ProfileGaussian& g : profile.gaussians()) {
         const double v = g.varianceMm2;
@@ -193,7 +166,7 @@ TEST(PreintegratedTable, FlatTerminatorClosedForm) {
 // weight of it; skin's is 7.8e-2). A wrong width keeps the integral: widths x1.05 pass here,
 // and the flat-terminator and sphere tests catch them.
 TEST(PreintegratedTable, RingIntegralIsKept) {
-    const GaussLegendre rule = gaussLegendre(8);
+    const GaussLegendre rule = makeGaussLegendre(8);
     double worstDirect = 0.0, worstTable = 0.0;
     for (const DiffusionProfile* profile : {&skinProfile(), &marbleProfile()}) {
         for (float curvature : {0.0f, 1e-4f, 1e-3f, 0.01f, 0.05f, 0.2f, 0.5f, 1.0f, 3.0f}) {

@@ -4,7 +4,7 @@
 #include "TestSupport.h"
 #include "bench/QualityTune.h"
 #include "render/FrameTimings.h"
-#include "render/SssPlan.h"
+#include "plan/SssPlan.h"
 #include "scene/QualityTable.h"
 #include "scene/SceneLoader.h"
 

@@ -11,7 +11,8 @@
 
 #include "import/ModelLoader.h"
 #include "reference/ReferenceRenderer.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
 #include "scene/SceneLoader.h"
 
 #include <gtest/gtest.h>

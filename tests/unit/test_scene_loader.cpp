@@ -655,7 +655,7 @@ TEST(SceneLoader, UnknownLightTypeListsTheAcceptedOnes) {
 }
 
 // Vila Verde 2015's comparison: the variant picks the specular path and, unless
-// `blur` names one, the blur (render/SssVariant.h).
+// `blur` names one, the blur (plan/SssVariant.h).
 TEST(SceneLoader, SssVariantDefaultsToLeanBilateralAndAcceptsTheThree) {
     const Result<Scene> empty = parseScene("{}", kScenePath);
     ASSERT_TRUE(empty.ok());

@@ -1,6 +1,6 @@
-// Disjoint covers of pixel rectangles (render/ScreenRegions.h), checked pixel
+// Disjoint covers of pixel rectangles (plan/ScreenRegions.h), checked pixel
 // by pixel against the union on a small grid.
-#include "render/ScreenRegions.h"
+#include "plan/ScreenRegions.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// Which characters a shadow map keeps (render/ShadowCasters.h) and how the
-// map reaches them (render/LightSetup.h), on hand-placed 0.2 m boxes: a
+// Which characters a shadow map keeps (plan/ShadowCasters.h) and how the
+// map reaches them (plan/LightSetup.h), on hand-placed 0.2 m boxes: a
 // receiver at the origin, and casters towards the light, beside it, beyond it.
-#include "render/LightSetup.h"
-#include "render/ShadowCasters.h"
+#include "plan/LightSetup.h"
+#include "plan/ShadowCasters.h"
 
 #include <gtest/gtest.h>
 

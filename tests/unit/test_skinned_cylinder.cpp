@@ -2,7 +2,7 @@
 // and the rig, against closed forms of its construction.
 #include "TestContent.h"
 #include "anim/Rig.h"
-#include "import/CharacterPose.h"
+#include "pose/CharacterPose.h"
 #include "import/GltfLoader.h"
 
 #include <gtest/gtest.h>
@@ -92,7 +92,7 @@ TEST_F(SkinnedCylinder, HalfWayThroughTheClipMatchesTheClosedForm) {
     EXPECT_NEAR(glm::distance(n, bent(glm::vec3(1, 0, 0), angle) - bent(glm::vec3(0), angle)), 0.0f, 1e-6f);
 }
 
-// What the CPU reference renders (import/CharacterPose.h): the character
+// What the CPU reference renders (pose/CharacterPose.h): the character
 // posed as the frame shows it. time_s 0.5 at speed 2 and frame time 0.25 s
 // is clip time 1 s, the full 90-degree bend.
 TEST_F(SkinnedCylinder, CpuCopyIsPosedAtTheFramesClipTime) {

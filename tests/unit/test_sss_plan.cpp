@@ -1,5 +1,5 @@
 // What the SSS chain decides to run, on the CPU alone.
-#include "render/SssPlan.h"
+#include "plan/SssPlan.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // What the texture-space mode decides to run, on the CPU alone.
-#include "render/ScreenFootprint.h"
-#include "render/TsPlan.h"
+#include "plan/ScreenFootprint.h"
+#include "plan/TsPlan.h"
 #include "scene/SceneLoader.h"
 
 #include <gtest/gtest.h>
@@ -202,7 +202,7 @@ TEST(TsPlan, UnknownProfileIsAnError) {
     EXPECT_NE(result.error().what.find("jade"), std::string::npos);
 }
 
-// render/TsPlan.h: more than kMaxUvlessSurfaceFraction of the surface without
+// plan/TsPlan.h: more than kMaxUvlessSurfaceFraction of the surface without
 // UV area falls back to screen space, with every step skipped and the reason.
 TEST(TsPlan, CharacterWithoutUvAreaFallsBackToScreenSpace) {
     const TsPlan bare = plan(defaultScene(), 640, 360, kHeadBounds, 1.0f);

@@ -13,7 +13,7 @@
 #include "AnimatedCrowdBenchmarks.h"
 #include "BenchContext.h"
 
-#include "render/Aov.h"
+#include "plan/Aov.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,10 +1,11 @@
 // The screen-space SSS techniques side by side (docs/screen-space.md,
 // "Techniques compared"): the default head at 640x360, 1280x720 and 320x180 with the
-// shipped d'Eon chain, Separable SSS and the disk at several sample counts.
+// shipped d'Eon chain, then every other technique's tuner candidates (scene/SssTechniques.h).
 // The renderers take turns within each iteration, so that a slow spell of the
 // shared machine hits them all alike; each figure is the median over the
 // iterations of the SSS passes' GPU ms (sss init and every technique pass;
-// llvmpipe: CPU time). Each case's loss is the relative RMSE of its diffuse
+// llvmpipe: CPU time) and of the lighting pass, where the pre-integrated
+// technique does its work. Each case's loss is the relative RMSE of its diffuse
 // AOV over SSS pixels against the finest setting (the d'Eon chain with every
 // Gaussian at 33 taps, no Gaussian skipped): what the cheaper technique gives
 // up. The error against the CPU reference comes from `dermis bench`
@@ -74,6 +75,7 @@ struct TimedCase {
     std::unique_ptr<Scene> scene;
     std::unique_ptr<Renderer> renderer;
     std::vector<double> sssMs;
+    std::vector<double> lightingMs;  // the lighting pass, where "preintegrated" does its work
 };
 
 void sssTechniques(benchmark::State& state) {
@@ -121,13 +123,17 @@ void sssTechniques(benchmark::State& state) {
     for (auto _ : state) {
         double total = 0.0;
         for (TimedCase& c : cases) {
-            const double ms = renderAndTime(*c.renderer, width, height, "sss ");
-            c.sssMs.push_back(ms);
-            total += ms;
+            const std::vector<double> ms = renderAndTimeAt(*c.renderer, width, height, 0.0f, {"sss ", "lighting"});
+            c.sssMs.push_back(ms[0]);
+            c.lightingMs.push_back(ms[1]);
+            total += ms[0] + ms[1];
         }
         state.SetIterationTime(total * 1e-3);
     }
-    for (TimedCase& c : cases) recorded()[c.key] = median(c.sssMs);
+    for (TimedCase& c : cases) {
+        recorded()[c.key] = median(c.sssMs);
+        recorded()[c.key + "/lighting"] = median(c.lightingMs);
+    }
     state.SetLabel(size);
 }
 
@@ -141,16 +147,18 @@ void printTechniqueSummary() {
         const std::string prefix = "technique/" + size + "/";
         const auto base = r.find(prefix + cases[0].label);
         if (base == r.end() || base->second <= 0.0) continue;
-        std::printf("\nScreen-space SSS techniques, default head, %s (median GPU ms of the SSS passes, renderers\n"
-                    "interleaved; ratio against the shipped d'Eon chain; loss = relative RMSE of the diffuse over\n"
-                    "SSS pixels against the finest d'Eon chain):\n",
+        std::printf("\nScreen-space SSS techniques, default head, %s (median GPU ms of the SSS passes and of the\n"
+                    "lighting pass, renderers interleaved; ratio of their sum against the shipped d'Eon chain's;\n"
+                    "loss = relative RMSE of the diffuse over SSS pixels against the finest d'Eon chain):\n",
                     size.c_str());
-        std::printf("| technique | SSS ms | ratio | loss %% |\n| --- | ---: | ---: | ---: |\n");
+        std::printf("| technique | SSS ms | lighting ms | ratio | loss %% |\n| --- | ---: | ---: | ---: | ---: |\n");
+        const double baseMs = base->second + r.at(prefix + cases[0].label + "/lighting");
         for (const TechniqueCase& c : cases) {
             const auto ms = r.find(prefix + c.label);
             if (ms == r.end()) continue;
-            std::printf("| %s | %.2f | %.3f | %.2f |\n", c.label.c_str(), ms->second, ms->second / base->second,
-                        100.0 * r.at(prefix + c.label + "/loss"));
+            const double lightingMs = r.at(prefix + c.label + "/lighting");
+            std::printf("| %s | %.2f | %.2f | %.3f | %.2f |\n", c.label.c_str(), ms->second, lightingMs,
+                        (ms->second + lightingMs) / baseMs, 100.0 * r.at(prefix + c.label + "/loss"));
         }
     }
 }

@@ -11,7 +11,7 @@
 #include "BenchContext.h"
 #include "TsBenchmarks.h"
 
-#include "render/ScreenFootprint.h"
+#include "plan/ScreenFootprint.h"
 
 #include <benchmark/benchmark.h>
 

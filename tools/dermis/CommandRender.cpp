@@ -7,7 +7,7 @@
 #include "core/Limits.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "frame/Renderer.h"
 #include "scene/SceneEnums.h"
 

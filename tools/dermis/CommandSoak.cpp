@@ -12,9 +12,10 @@
 #include "core/Log.h"
 #include "core/TextFile.h"
 #include "frame/Renderer.h"
+#include "render/SceneLoading.h"
 #include "gl/GlContext.h"
 #include "gl/TexturePool.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
 #include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"
 

@@ -4,7 +4,7 @@
 #include "measure/Session.h"
 
 #include "core/Log.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "frame/Renderer.h"
 #include "scene/SceneLoader.h"
 #include "viewer/Viewer.h"

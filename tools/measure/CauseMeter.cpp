@@ -3,7 +3,7 @@
 #include "measure/MeasuredRender.h"
 
 #include "core/ImageResample.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "scene/SceneLoader.h"
 
 #include <cmath>

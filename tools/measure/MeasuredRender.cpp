@@ -1,7 +1,7 @@
 #include "measure/MeasuredRender.h"
 
 #include "core/Log.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "frame/Renderer.h"
 
 #include <chrono>

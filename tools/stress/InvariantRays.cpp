@@ -3,7 +3,8 @@
 #include "include/SharedConstants.glsl"
 #include "brdf/EnergyTable.h"
 #include "reference/PixelSampling.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
+#include "render/SceneLoading.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>

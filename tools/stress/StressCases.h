@@ -11,7 +11,7 @@
 // seed alone.
 
 #include "core/Result.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "scene/Scene.h"
 
 #include <cstdint>

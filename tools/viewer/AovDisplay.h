@@ -1,8 +1,8 @@
 #pragma once
-// Which AOVs there are (read from render/Aov.h, so a new one shows up in the
+// Which AOVs there are (read from plan/Aov.h, so a new one shows up in the
 // selector by itself) and how each is mapped to the screen by default.
 
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "viewer/SplitView.h"
 
 #include <glm/glm.hpp>

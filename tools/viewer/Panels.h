@@ -5,7 +5,7 @@
 // format (content/scenes/README.md).
 
 #include "render/FrameTimings.h"
-#include "render/SceneGeometry.h"
+#include "plan/SceneGeometry.h"
 #include "scene/Scene.h"
 #include "viewer/SceneJson.h"
 #include "viewer/ViewerState.h"

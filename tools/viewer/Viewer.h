@@ -6,7 +6,7 @@
 // screenshot of the whole window, and returns (for tests and docs).
 
 #include "core/Result.h"
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "scene/Scene.h"
 #include "viewer/SplitView.h"
 

@@ -3,7 +3,7 @@
 // the AOV and its display range, the effect switches, and requests (save,
 // reload, copy) that the frame loop carries out at the right moment.
 
-#include "render/Aov.h"
+#include "plan/Aov.h"
 #include "viewer/AovDisplay.h"
 #include "viewer/EffectSwitches.h"
 #include "viewer/SplitView.h"

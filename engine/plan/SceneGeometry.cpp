@@ -1,0 +1,48 @@
+#include "plan/SceneGeometry.h"
+
+
+#include <cmath>
+
+namespace dermis {
+
+SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
+    for (const Model& model : models) {
+        std::vector<SubmeshMaterial> names;
+        for (const Submesh& submesh : model.drawRanges()) {
+            const auto index = static_cast<size_t>(submesh.material);
+            names.push_back({model.materials[index].name, index, model.materials[index].profile});
+        }
+        mCharacters.push_back(
+            {model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig), std::move(names)});
+    }
+}
+
+const UvLayout& SceneGeometry::uvLayout(size_t character) {
+    Character& c = mCharacters[character];
+    if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.mesh));
+    return *c.uvLayout;
+}
+
+Result<std::shared_ptr<const EnvironmentLight>> SceneGeometry::environment(const Environment& environment,
+                                                                          size_t sceneLights) const {
+    if (!environment.enabled()) return std::shared_ptr<const EnvironmentLight>();
+    if (!mEnvironment || mEnvironment->source != environment.source ||
+        !(mEnvironment->extraction == lightExtractionSettings(environment, sceneLights))) {
+        return makeError(environment.source, "the environment was not loaded before planning (render/SceneLoading.h)");
+    }
+    return mEnvironment;
+}
+
+Bounds transformBounds(const Bounds& b, const glm::mat4& m) {
+    Bounds out{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                          (corner & 4) ? b.max.z : b.min.z);
+        const glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        out.min = glm::min(out.min, w);
+        out.max = glm::max(out.max, w);
+    }
+    return out;
+}
+
+}  // namespace dermis
