@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The screen-space SSS techniques side by side (docs/screen-space.md,
-"Techniques compared"): the final frame of each, and where its diffuse AOV
+"Techniques compared", docs/results/techniques.md): the final frame of each, and where its diffuse AOV
 differs from a reference, as a heatmap on one scale.
 
     /usr/bin/python3 docs/techniques_figure.py [--scene content/scenes/default.json]

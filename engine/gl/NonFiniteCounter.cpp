@@ -14,6 +14,8 @@ namespace {
 using mat4 = glm::mat4;
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
+using vec2 = glm::vec2;
+using ivec2 = glm::ivec2;
 #include "include/UniformBlocks.glsl"
 
 using graph::TextureFormat;

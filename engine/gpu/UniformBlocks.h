@@ -3,11 +3,15 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
+
 namespace dermis::gpu {
 
 using mat4 = glm::mat4;
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
+using vec2 = glm::vec2;
+using ivec2 = glm::ivec2;
 using uint = unsigned int;
 
 #include "include/UniformBlocks.glsl"
@@ -22,7 +26,13 @@ static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "Ligh
 static_assert(sizeof(ObjectBlock) == 2 * 64 + (5 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
 static_assert(sizeof(EnvironmentBlock) == 64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
               "EnvironmentBlock must match std140");
+static_assert(sizeof(SssEdgeParams) == 16, "SssEdgeParams is one std140 group");
 static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");
+static_assert(offsetof(SssBlurBlock, sigmaMm) == DERMIS_MAX_BLUR_TAPS * 16 + 8 &&
+                  offsetof(SssBlurBlock, edges) == (DERMIS_MAX_BLUR_TAPS + 1) * 16 &&
+                  offsetof(SeparableSssBlock, edges) == (DERMIS_MAX_SEPARABLE_SAMPLES + 1) * 16 &&
+                  offsetof(DiskSssBlock, largestRadiusMm) == (2 * DERMIS_MAX_DISK_SAMPLES + 1) * 16 + 4,
+              "named fields sit at their std140 offsets");
 static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");
 static_assert(sizeof(DiskSssBlock) == (2 * DERMIS_MAX_DISK_SAMPLES + 2) * 16, "DiskSssBlock must match std140");
 static_assert(sizeof(SsaoBlock) == 2 * 16, "SsaoBlock must match std140");

@@ -32,8 +32,9 @@ gpu::DiskSssBlock diskBlock(const SssSettings& settings, const DiskKernel& kerne
         block.weights[k] = glm::vec4(sample.weight, 0.0f);
         largestRadiusMm = std::fmax(largestRadiusMm, sample.radiusMm);
     }
-    block.params = glm::vec4(float(kernel.count), float(slot), largestRadiusMm, 0.0f);
-    block.edges = glm::vec4(float(sssBlurEdges(settings)), settings.bilateralDepthMm, settings.controlDepthScalePerMm, 0.0f);
+    block.sampleCount = kernel.count;
+    block.largestRadiusMm = largestRadiusMm;
+    block.edges = sssEdgeParams(settings, slot);
     return block;
 }
 

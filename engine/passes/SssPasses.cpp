@@ -28,10 +28,11 @@ gpu::SssBlurBlock blurBlock(const FrameContext& frame, const BlurKernel& kernel,
     // The shader matches the discrete kernel's variance to this width itself,
     // per pixel (SssBlur.glsl, "SAMPLING AND WEIGHTS").
     const float sigmaMm = std::sqrt(step.stepVarianceMm2);
-    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, sigmaMm, float(taps));
-    block.edges = glm::vec4(float(sssBlurEdges(settings)), settings.bilateralDepthMm,
-                            settings.controlDepthScalePerMm, float(slot));
-    block.source = glm::vec4(step.readsIrradiance ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    block.direction = horizontal ? glm::vec2(1.0f, 0.0f) : glm::vec2(0.0f, 1.0f);
+    block.sigmaMm = sigmaMm;
+    block.taps = taps;
+    block.edges = sssEdgeParams(settings, slot);
+    block.readsIrradiance = step.readsIrradiance ? 1 : 0;
     return block;
 }
 
@@ -110,6 +111,15 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
 }
 
 }  // namespace
+
+gpu::SssEdgeParams sssEdgeParams(const SssSettings& settings, int slot) {
+    gpu::SssEdgeParams edges{};
+    edges.mode = static_cast<int>(sssBlurEdges(settings));
+    edges.bilateralDepthMm = settings.bilateralDepthMm;
+    edges.controlScalePerMm = settings.controlDepthScalePerMm;
+    edges.slot = slot;
+    return edges;
+}
 
 glm::ivec4 sssScissor(const SssPlan& plan) {
     glm::ivec4 rect(0);

@@ -82,6 +82,9 @@ AddSssTechniquePasses sssTechniquePasses(SssTechnique technique);
 
 constexpr int kAnySssPixel = -1;
 
+// Every technique's edge handling for one slot (include/SssEdges.glsl).
+gpu::SssEdgeParams sssEdgeParams(const SssSettings& settings, int slot);
+
 // The union of the visible slots' scissors (whole frame if none).
 glm::ivec4 sssScissor(const SssPlan& plan);
 

@@ -31,9 +31,10 @@ gpu::SeparableSssBlock separableBlock(const FrameContext& frame, const SssSlotPl
         const SeparableTap& tap = kernel.taps[size_t(i)];
         block.taps[i] = glm::vec4(tap.weight, tap.offsetMm * slot.widthScale);
     }
-    block.step = glm::vec4(horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f, float(kernel.count), horizontal ? 0.0f : 1.0f);
-    block.edges = glm::vec4(float(sssBlurEdges(settings)), settings.bilateralDepthMm, settings.controlDepthScalePerMm,
-                            float(slot.slot));
+    block.direction = horizontal ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
+    block.tapCount = kernel.count;
+    block.isVertical = horizontal ? 0 : 1;
+    block.edges = sssEdgeParams(settings, slot.slot);
     return block;
 }
 
@@ -41,7 +42,7 @@ const SeparableData& addSeparablePass(graph::RenderGraph& graph, const FrameCont
                                       const SssSlotPlan& slot, const gpu::SeparableSssBlock& block,
                                       const std::string& skipReason, const SssStart& start, graph::TextureHandle in,
                                       const SssChain& chain) {
-    const bool horizontal = block.step.w == 0.0f;
+    const bool horizontal = block.isVertical == 0;
     const std::string passName = "sss " + slot.profile->name() + " separable" + (horizontal ? " h" : " v");
     return graph.addPass<SeparableData>(
         passName,

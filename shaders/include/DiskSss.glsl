@@ -91,9 +91,9 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     SssValues centre;
     uint centreKey;
     float viewDepthM;
-    if (!sssCentre(colour, depthKey, pixel, int(uDiskSss.params.y), centre, centreKey, viewDepthM)) return centre;
+    if (!sssCentre(colour, depthKey, pixel, uDiskSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
     float pxPerMm = 1e-3 * uFrame.features.y / viewDepthM;
-    if (uDiskSss.params.z * pxPerMm < kDiskSssSkipPx) return centre;
+    if (uDiskSss.largestRadiusMm * pxPerMm < kDiskSssSkipPx) return centre;
 
 #if DISK_SSS_ROTATE
     float angle = 6.28318530718 * hashToUnit(uvec2(pixel));
@@ -101,8 +101,7 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     float angle = 0.0;
 #endif
     mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-    int samples = min(int(uDiskSss.params.x), DERMIS_MAX_DISK_SAMPLES);
-    int edges = int(uDiskSss.edges.x + 0.5);
+    int samples = min(uDiskSss.sampleCount, DERMIS_MAX_DISK_SAMPLES);
 
     vec3 colourSum = vec3(0.0);
     vec3 colourWeightSum = vec3(0.0);
@@ -114,8 +113,7 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
         vec3 weight = uDiskSss.weights[j].rgb;
         float scalarWeight = sampleMm.w;
         ivec2 tapPixel = clamp(pixel + ivec2(floor(rotation * sampleMm.xy * pxPerMm + 0.5)), ivec2(0), size - 1);
-        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges, uDiskSss.edges.y,
-                                     uDiskSss.edges.z);
+        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uDiskSss.edges);
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
         scalarWeight *= edge.weight;

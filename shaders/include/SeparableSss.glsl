@@ -104,12 +104,11 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
     SssValues centre;
     uint centreKey;
     float viewDepthM;
-    if (!sssCentre(chain, depthKey, pixel, int(uSeparableSss.edges.w), centre, centreKey, viewDepthM)) return centre;
+    if (!sssCentre(chain, depthKey, pixel, uSeparableSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
     float pixelsPerMm = 1e-3 * uFrame.features.y / viewDepthM;
-    ivec2 direction = ivec2(uSeparableSss.step.xy);
-    int count = min(int(uSeparableSss.step.z), DERMIS_MAX_SEPARABLE_SAMPLES);
-    int edges = int(uSeparableSss.edges.x + 0.5);
+    ivec2 direction = uSeparableSss.direction;
+    int count = min(uSeparableSss.tapCount, DERMIS_MAX_SEPARABLE_SAMPLES);
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -154,8 +153,7 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
                 bool use = true;
                 if (pendingOffset != 0) {
                     ivec2 tapPixel = clamp(pixel + direction * pendingOffset, ivec2(0), size - 1);
-                    SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges,
-                                                 uSeparableSss.edges.y, uSeparableSss.edges.z);
+                    SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uSeparableSss.edges);
                     use = edge.weight > 0.0;
                     weight *= edge.weight;
                     if (use && edge.toCentre < 1.0) {

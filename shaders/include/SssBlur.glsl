@@ -55,7 +55,7 @@
 //   weighs the Gaussian integrated over that cell, not its point value
 //   (Phi from erf, Abramowitz & Stegun 1964 7.1.26), so the weights sum to 1
 //   and the width is exact to a fraction of a pixel at every depth.
-//   - A step that reads the unblurred irradiance (uSssBlur.source.x = 1)
+//   - A step that reads the unblurred irradiance (uSssBlur.readsIrradiance = 1)
 //     treats its texels as boxes: with s = 1 the cell integrals are exactly
 //     the diffusion of that piecewise-constant image (the box adds its own
 //     1/12 px^2, as the true diffusion of the box image does).
@@ -124,7 +124,7 @@ float sssTapWeights(float sigmaPx, int halfTaps, bool readsBoxes, out float weig
     return spacingPx;
 }
 
-// The blurred values at `pixel` along uSssBlur.step.xy. Returns the centre
+// The blurred values at `pixel` along uSssBlur.direction. Returns the centre
 // when the pixel is not on this profile (stencil keeps that from happening;
 // this is the belt to its braces).
 SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
@@ -132,15 +132,14 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     SssValues centre;
     uint centreKey;
     float viewDepthM;
-    if (!sssCentre(colour, depthKey, pixel, int(uSssBlur.edges.w), centre, centreKey, viewDepthM)) return centre;
+    if (!sssCentre(colour, depthKey, pixel, uSssBlur.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
-    float sigmaPx = uSssBlur.step.z * 1e-3 * uFrame.features.y / viewDepthM;
-    vec2 direction = uSssBlur.step.xy;
-    int taps = int(uSssBlur.step.w);
+    float sigmaPx = uSssBlur.sigmaMm * 1e-3 * uFrame.features.y / viewDepthM;
+    vec2 direction = uSssBlur.direction;
+    int taps = uSssBlur.taps;
     int halfTaps = min(taps / 2, kSssMaxHalfTaps);
     float halfWeights[kSssMaxHalfTaps + 1];
-    float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.source.x > 0.5, halfWeights);
-    int edges = int(uSssBlur.edges.x + 0.5);
+    float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.readsIrradiance != 0, halfWeights);
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -148,8 +147,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     for (int j = -halfTaps; j <= halfTaps; ++j) {
         ivec2 tapPixel = clamp(pixel + ivec2(direction * (float(j) * spacingPx)), ivec2(0), size - 1);
         float weight = halfWeights[abs(j)];
-        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, edges, uSssBlur.edges.y,
-                                     uSssBlur.edges.z);
+        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uSssBlur.edges);
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
         if (edge.toCentre < 1.0) {

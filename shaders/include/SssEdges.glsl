@@ -31,7 +31,10 @@ struct SssEdgeTap {
     float toCentre;  // the tap's value is mix(tap, centre, toCentre)
 };
 
-SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, int edges, float bilateralDepthMm, float controlScalePerMm) {
+SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, SssEdgeParams params) {
+    int edges = params.mode;
+    float bilateralDepthMm = params.bilateralDepthMm;
+    float controlScalePerMm = params.controlScalePerMm;
     SssEdgeTap result = SssEdgeTap(1.0, 0.0);
     float distanceMm = keyDistanceMm(centreKey, tapKey);
     bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;

@@ -3,8 +3,11 @@
 // C++ includes this file through engine/gpu/UniformBlocks.h, which maps
 // the GLSL types onto glm and static_asserts every size; GLSL includes it
 // with `#include "UniformBlocks.glsl"`. Layout is std140, so:
-//   - only vec4, ivec4 and mat4 members (scalars are packed into vec4s by
-//     hand, and the comment says which component is what);
+//   - members are vec4, ivec4 and mat4, or named scalars and vec2s in
+//     groups that fill 16 bytes each (a vec2 and two scalars, or four
+//     scalars), so that C++ and std140 place every one at the same offset;
+//     the older blocks still pack scalars into vec4s, with a comment saying
+//     which component is what;
 //   - arrays only of vec4 or of structs made of them.
 // Matrix names read destination-from-source: clipFromWorld maps world-space
 // positions to clip space.
@@ -119,14 +122,28 @@ DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
     vec4 transmittance;  // x: shrink (mm), y: strength, z: 1 = some slot is "preintegrated", w: 0
 } DERMIS_BLOCK_END(uProfiles)
 
+// How a screen-space SSS step treats a tap across a depth step or another
+// profile slot (include/SssEdges.glsl); one 16-byte group.
+struct SssEdgeParams {
+    int mode;                 // DERMIS_BLUR_EDGES_*
+    float bilateralDepthMm;   // std dev of the bilateral weight in tap-to-centre depth difference
+    float controlScalePerMm;  // the control blur lerps to the centre by min(1, scale x |depth difference|)
+    int slot;                 // the profile slot the step blurs (the stencil's value)
+};
+
 // Per-pass blocks share DERMIS_BINDING_PASS; a shader defines the macro of
 // the one it uses before including this file.
 #if defined(__cplusplus) || defined(DERMIS_USE_SSS_BLUR_BLOCK)
 DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
     vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations (y: its CPU weight; the shader integrates its own)
-    vec4 step;   // xy: blur direction, (1,0) or (0,1); z: standard deviation of this step (mm); w: tap count
-    vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
-    vec4 source;  // x: 1 when the step reads the unblurred irradiance (texels are boxes), 0 a blurred chain; yzw: 0
+    vec2 direction;  // (1, 0) or (0, 1)
+    float sigmaMm;   // standard deviation of this step
+    int taps;
+    SssEdgeParams edges;
+    int readsIrradiance;  // 1: the step reads the unblurred irradiance (texels are boxes), 0: a blurred chain
+    int unused0;
+    int unused1;
+    int unused2;
 } DERMIS_BLOCK_END(uSssBlur)
 #endif
 
@@ -135,8 +152,10 @@ DERMIS_BLOCK(SssBlurBlock, DERMIS_BINDING_PASS) {
 #if defined(__cplusplus) || defined(DERMIS_USE_SEPARABLE_SSS_BLOCK)
 DERMIS_BLOCK(SeparableSssBlock, DERMIS_BINDING_PASS) {
     vec4 taps[DERMIS_MAX_SEPARABLE_SAMPLES];  // rgb: weight (per channel, each sums to 1), a: offset (mm, widthScale applied), ascending
-    vec4 step;   // xy: direction, (1,0) or (0,1); z: tap count; w: 1 = the vertical pass (the last: its output is the result)
-    vec4 edges;  // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: profile slot
+    ivec2 direction;  // (1, 0) or (0, 1)
+    int tapCount;
+    int isVertical;   // 1: the vertical pass, the last: its output is the result
+    SssEdgeParams edges;
 } DERMIS_BLOCK_END(uSeparableSss)
 #endif
 
@@ -145,8 +164,11 @@ DERMIS_BLOCK(SeparableSssBlock, DERMIS_BINDING_PASS) {
 DERMIS_BLOCK(DiskSssBlock, DERMIS_BINDING_PASS) {
     vec4 samples[DERMIS_MAX_DISK_SAMPLES];  // xy: offset on the golden-angle spiral (mm, before the pixel's rotation); z: radius (mm); w: moments' scalar weight
     vec4 weights[DERMIS_MAX_DISK_SAMPLES];  // rgb: weight (each channel sums to 1 over the samples); a: 0
-    vec4 params;  // x: sample count; y: profile slot; z: largest sample radius (mm); w: 0
-    vec4 edges;   // x: DERMIS_BLUR_EDGES_*; y: bilateral depth std dev (mm); z: control scale (1/mm); w: 0
+    SssEdgeParams edges;
+    int sampleCount;
+    float largestRadiusMm;
+    float unused0;
+    float unused1;
 } DERMIS_BLOCK_END(uDiskSss)
 #endif
 

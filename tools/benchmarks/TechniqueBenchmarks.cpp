@@ -1,5 +1,5 @@
 // The screen-space SSS techniques side by side (docs/screen-space.md,
-// "Techniques compared"): the default head at 640x360, 1280x720 and 320x180 with the
+// docs/results/techniques.md): the default head at 640x360, 1280x720 and 320x180 with the
 // shipped d'Eon chain, then every other technique's tuner candidates (scene/SssTechniques.h).
 // The renderers take turns within each iteration, so that a slow spell of the
 // shared machine hits them all alike; each figure is the median over the
