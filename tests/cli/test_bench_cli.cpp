@@ -97,6 +97,8 @@ TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
         EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + file)) << file;
     if (plots) {
         for (const char* png : {"pareto.png", "passes.png", "regions.png"}) EXPECT_GT(std::filesystem::file_size(out + "/" + png), 10000u) << png;
+        // The plot script's Markdown table comes with the plots (bench --help lists it).
+        EXPECT_TRUE(std::filesystem::is_regular_file(out + "/errors.md")) << "errors.md";
     }
 
     // The reference is reused, and the same frames give the same errors.
@@ -109,6 +111,7 @@ TEST(BenchCli, SweepsBothModesAgainstTheReferenceAndPlots) {
     EXPECT_NEAR(std::stod(reused[1].at("relative_rmse")), std::stod(rows[1].at("relative_rmse")), 1e-5);
     EXPECT_FALSE(std::filesystem::exists(again + "/reference.exr"));
     EXPECT_FALSE(std::filesystem::exists(again + "/pareto.png"));
+    EXPECT_FALSE(std::filesystem::exists(again + "/errors.md"));
 
     // compare --reference: each mode's error against the same reference.
     const ProcessResult compared = runProcess(kDermis + " compare " + kScene + " --out " + dir.file("cmp") +

@@ -121,7 +121,8 @@ Status stagePlots(const std::filesystem::path& outDir, const std::vector<std::pa
     }
     std::error_code error;
     for (const fs::directory_entry& entry : fs::directory_iterator(drawing, error)) {
-        if (entry.path().extension() != ".png") continue;
+        // What the plot script draws: the PNGs and errors.md (the inputs it read stay behind).
+        if (entry.path().extension() != ".png" && entry.path().filename() != "errors.md") continue;
         const std::string target = (outDir / entry.path().filename()).string();
         if (Status staged = outputs.stageFile(target, entry.path()); !staged.ok()) return staged;
     }
