@@ -40,7 +40,7 @@ layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
 #endif
 layout(binding = 9) uniform sampler2D uEnvironmentTransfer;  // the G-buffer's environment target (occlusion "transfer")
-// Bound when some visible slot's technique is "preintegrated" (uProfiles.transmittance.z = 1):
+// Bound when some visible slot's technique is "preintegrated" (uProfiles.anyScattersInLighting = 1):
 layout(binding = 10) uniform sampler2D uScatter;  // the G-buffer's: z curvature (1/mm), w profile slot
 layout(binding = DERMIS_UNIT_FIRST_PASS_EXTRA) uniform sampler2D uPreintegrated;  // the slots' tables, stacked
 
@@ -102,9 +102,9 @@ void main() {
     // The slot whose technique is "preintegrated", or 0.
     int preintegratedSlot = 0;
     float curvaturePerMm = 0.0;
-    if (uProfiles.transmittance.z > 0.5) {
+    if (uProfiles.anyScattersInLighting != 0) {
         int slot = int(texelFetch(uScatter, pixel, 0).w + 0.5);
-        if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].technique.x > 0.5) {
+        if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].scattersInLighting != 0) {
             preintegratedSlot = slot;
             curvaturePerMm = texelFetch(uScatter, pixel, 0).z;
         }

@@ -15,7 +15,7 @@
 // (DERMIS_MORPH_DELTA_FLOATS floats per slot per vertex, slot-major), the
 // palette (mat4 per entry), the morph weights (float per slot), the output
 // (a Vertex each: the vertex buffer every pass draws) and, when
-// uSkinning.counts.z is 1, the deformed dP/du and dP/dv for the
+// uSkinning.writeDerivatives is 1, the deformed dP/du and dP/dv for the
 // texture-space stretch map: M3 x the bind pose's, the same first-order
 // transform as the tangent's (weights held constant; morphs left out).
 
@@ -38,8 +38,8 @@ vec3 readDelta(uint at) { return vec3(morphDeltas[at], morphDeltas[at + 1u], mor
 vec3 normalizeOrKeep(vec3 v) { float l = length(v); return l > 0.0 ? v / l : v; }
 
 void main() {
-    const uint vertexCount = uint(uSkinning.counts.x);
-    const uint slots = uint(uSkinning.counts.y);
+    const uint vertexCount = uint(uSkinning.vertexCount);
+    const uint slots = uint(uSkinning.morphSlots);
     const uint v = gl_GlobalInvocationID.x;
     if (v >= vertexCount) return;
     const uint base = v * DERMIS_SKIN_SOURCE_FLOATS;
@@ -69,7 +69,7 @@ void main() {
         position.x, position.y, position.z, normal.x, normal.y, normal.z, tangent.x, tangent.y, tangent.z, tangent.w,
         sourceFloats[base + 10u], sourceFloats[base + 11u]);
     for (uint i = 0u; i < DERMIS_VERTEX_FLOATS; ++i) outputFloats[outBase + i] = vertexOut[i];
-    if (uSkinning.counts.z == 1) {
+    if (uSkinning.writeDerivatives == 1) {
         const vec3 dPdu = linear * readVec3(base + 12u);
         const vec3 dPdv = linear * readVec3(base + 15u);
         const uint at = v * DERMIS_SKIN_DERIVATIVE_FLOATS;

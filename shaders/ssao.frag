@@ -24,16 +24,16 @@
 //                             view space share units); per character
 //                             "ssao": {"radius_m"} overrides it
 //                             (CharactersBlock params.y; 0 there means
-//                             uSsao.kernel.x, the scene's value)
+//                             uSsao.radiusM, the scene's value)
 //   settings.ssao.samples     sample points per pixel, 8..128; per      16
 //                             character "ssao": {"samples"} overrides
-//                             (params.z; 0 means uSsao.kernel.y)
-//   uSsao.kernel.z            bias as a fraction of the radius: an      0.02
+//                             (params.z; 0 means uSsao.samples)
+//   uSsao.biasFraction        bias as a fraction of the radius: an      0.02
 //                             occluder must lie this far in front of the
 //                             sample point and above the tangent plane
-//   uSsao.kernel.w            range check: an occluder's weight fades   2
+//   uSsao.fadeEndRadii        range check: an occluder's weight fades   2
 //                             from 1 at distance `radius` from the pixel
-//                             to 0 at `kernel.w x radius`
+//                             to 0 at `fadeEndRadii x radius`
 //   Papanikolaou 2013 finds 32..64 samples the best accuracy per time; fewer are
 //   noisy before the blur, more than 128 cost much and change little.
 //
@@ -109,14 +109,14 @@ float ambientOcclusion(ivec2 pixel) {
     if (objectId <= 0 || objectId > DERMIS_MAX_CHARACTERS) return 1.0;
 
     vec4 params = uCharacters.characters[objectId].params;
-    float radiusM = params.y > 0.0 ? params.y : uSsao.kernel.x;
-    float sampleCount = params.z >= 1.0 ? params.z : uSsao.kernel.y;
+    float radiusM = params.y > 0.0 ? params.y : uSsao.radiusM;
+    float sampleCount = params.z >= 1.0 ? params.z : uSsao.samples;
     float strength = clamp(uFrame.features.z, 0.0, 1.0);  // NaN clamps to an end; both are finite
     if (!(radiusM > 0.0) || !(sampleCount >= 1.0) || !(strength > 0.0)) return 1.0;
     radiusM = min(radiusM, kMaxRadiusM);
     int samples = int(min(sampleCount, float(kMaxSamples)));
-    float biasM = max(uSsao.kernel.z, 0.0) * radiusM;
-    float fadeEndM = max(uSsao.kernel.w, 1.0 + 1e-3) * radiusM;
+    float biasM = max(uSsao.biasFraction, 0.0) * radiusM;
+    float fadeEndM = max(uSsao.fadeEndRadii, 1.0 + 1e-3) * radiusM;
 
     vec3 P = viewPositionAt(pixel, depth);
     vec3 N = decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy);

@@ -35,8 +35,8 @@ float blurredAo(ivec2 pixel) {
     uint centreKey = texelFetch(uDepthKey, pixel, 0).r;
     if (isBackgroundKey(centreKey)) return 1.0;
     float viewDepthM = max(viewDepthFromKey(centreKey), 1e-3);
-    float toleranceMm = max(uSsao.blur.y * viewDepthM, 1e-5) * 1000.0;
-    int halfWidth = clamp(int(uSsao.blur.x), 0, kMaxHalfWidthPx);
+    float toleranceMm = max(uSsao.blurDepthTolerance * viewDepthM, 1e-5) * 1000.0;
+    int halfWidth = clamp(uSsao.blurHalfWidthPx, 0, kMaxHalfWidthPx);
     ivec2 last = textureSize(uAo, 0) - 1;
 
     float sum = 0.0;

@@ -25,7 +25,7 @@ void main() {
     vec4 irradiance = texelFetch(uIrradiance, pixel, 0);
     uint key = texelFetch(uDepthKey, pixel, 0).r;
     int slot = slotFromKey(key);
-    vec3 weight = slot > 0 && slot <= DERMIS_MAX_PROFILES ? uProfiles.profiles[slot].info.yzw : vec3(1.0);
+    vec3 weight = slot > 0 && slot <= DERMIS_MAX_PROFILES ? uProfiles.profiles[slot].initWeight : vec3(1.0);
     float scalarWeight = (weight.r + weight.g + weight.b) / 3.0;
     oAccumulated = vec4(irradiance.rgb * weight, irradiance.a * scalarWeight);
 #if SSS_EXTRA_TARGETS > 0

@@ -35,7 +35,7 @@ mat3 polarRotation(mat3 x) {
 
 void main() {
     const uint v = gl_GlobalInvocationID.x;
-    if (v >= uint(uSkinning.counts.x)) return;
+    if (v >= uint(uSkinning.vertexCount)) return;
     float c[9];
     for (uint i = 0u; i < 9u; ++i) c[i] = restTransfer[v * 9u + i];
     const mat3 R = polarRotation(mat3(blendedSkinningMatrix(v)));

@@ -40,7 +40,7 @@ void main() {
     vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy),
                            vec3(0.0, 1.0, 0.0));
-    float shrinkMm = uProfiles.transmittance.x;
+    float shrinkMm = uProfiles.transmittanceShrinkMm;
 
     bool writeThickness = int(uFrame.shading.w) == DERMIS_AOV_THICKNESS;
     vec3 transmitted = vec3(0.0);
@@ -61,6 +61,6 @@ void main() {
         transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
     }
     float mixRatio = uFrame.shading.y;
-    oTransmitted = vec4(sanitizeColour(transmitted * scatter.r * uProfiles.transmittance.y * albedoPower(albedo, mixRatio)),
+    oTransmitted = vec4(sanitizeColour(transmitted * scatter.r * uProfiles.transmittanceStrength * albedoPower(albedo, mixRatio)),
                         0.0);
 }

@@ -15,6 +15,7 @@ using mat4 = glm::mat4;
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
 using vec2 = glm::vec2;
+using vec3 = glm::vec3;
 using ivec2 = glm::ivec2;
 #include "include/UniformBlocks.glsl"
 

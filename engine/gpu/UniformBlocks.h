@@ -11,6 +11,7 @@ using mat4 = glm::mat4;
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
 using vec2 = glm::vec2;
+using vec3 = glm::vec3;
 using ivec2 = glm::ivec2;
 using uint = unsigned int;
 
@@ -32,6 +33,11 @@ static_assert(offsetof(SssBlurBlock, sigmaMm) == DERMIS_MAX_BLUR_TAPS * 16 + 8 &
                   offsetof(SssBlurBlock, edges) == (DERMIS_MAX_BLUR_TAPS + 1) * 16 &&
                   offsetof(SeparableSssBlock, edges) == (DERMIS_MAX_SEPARABLE_SAMPLES + 1) * 16 &&
                   offsetof(DiskSssBlock, largestRadiusMm) == (2 * DERMIS_MAX_DISK_SAMPLES + 1) * 16 + 4,
+              "named fields sit at their std140 offsets");
+static_assert(offsetof(ProfileParams, gaussianCount) == DERMIS_MAX_PROFILE_GAUSSIANS * 16 + 12 &&
+                  offsetof(ProfilesBlock, anyScattersInLighting) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 8,
+              "named fields sit at their std140 offsets");
+static_assert(offsetof(SsaoBlock, blurHalfWidthPx) == 16 && offsetof(SkinningBlock, writeDerivatives) == 8,
               "named fields sit at their std140 offsets");
 static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");
 static_assert(sizeof(DiskSssBlock) == (2 * DERMIS_MAX_DISK_SAMPLES + 2) * 16, "DiskSssBlock must match std140");

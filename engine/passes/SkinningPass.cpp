@@ -19,7 +19,9 @@ void skin(const FrameContext& frame, size_t index) {
                              placement.pose.morphWeights.data());
     gpu::SkinningBlock block{};
     // The derivatives only for a character texture space draws (render/TsMeshes.h reads them).
-    block.counts = glm::ivec4(rig.vertexCount, rig.morphSlots, textureSpaceDraws(frame.plan, index) ? 1 : 0, 0);
+    block.vertexCount = rig.vertexCount;
+    block.morphSlots = rig.morphSlots;
+    block.writeDerivatives = textureSpaceDraws(frame.plan, index) ? 1 : 0;
     frame.gl->uploadPassBlock(&block, sizeof block);
     const std::pair<GLuint, GLuint> buffers[] = {
         {DERMIS_BINDING_SKIN_SOURCE, rig.source.get()},       {DERMIS_BINDING_SKIN_INFLUENCES, rig.influences.get()},

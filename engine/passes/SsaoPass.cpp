@@ -39,9 +39,12 @@ void uploadSsaoBlock(const FrameContext& frame) {
 
 gpu::SsaoBlock makeSsaoBlock(const SsaoSettings& settings) {
     gpu::SsaoBlock block{};
-    block.kernel = glm::vec4(settings.radiusM, float(settings.samples), kSsaoBiasFractionOfRadius,
-                             kSsaoRangeFadeEndRadii);
-    block.blur = glm::vec4(float(kSsaoBlurHalfWidthPx), kSsaoBlurDepthTolerance, 0.0f, 0.0f);
+    block.radiusM = settings.radiusM;
+    block.samples = float(settings.samples);
+    block.biasFraction = kSsaoBiasFractionOfRadius;
+    block.fadeEndRadii = kSsaoRangeFadeEndRadii;
+    block.blurHalfWidthPx = kSsaoBlurHalfWidthPx;
+    block.blurDepthTolerance = kSsaoBlurDepthTolerance;
     return block;
 }
 

@@ -142,11 +142,13 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
         const auto& gaussians = slot.profile->gaussians();
         const size_t n = std::min<size_t>(gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS);
         for (size_t i = 0; i < n; ++i) p.gaussians[i] = glm::vec4(gaussians[i].weight, gaussians[i].varianceMm2);
-        p.info = glm::vec4(float(n), slot.initWeight);
-        p.technique = glm::vec4(sssTechniqueInfo(slot.choice.technique).scattersInLighting ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+        p.gaussianCount = int(n);
+        p.initWeight = slot.initWeight;
+        p.scattersInLighting = sssTechniqueInfo(slot.choice.technique).scattersInLighting ? 1 : 0;
     }
-    profiles.transmittance = glm::vec4(scene.settings.transmittance.shrinkMm, scene.settings.transmittance.strength,
-                                       preintegrated ? 1.0f : 0.0f, 0.0f);
+    profiles.transmittanceShrinkMm = scene.settings.transmittance.shrinkMm;
+    profiles.transmittanceStrength = scene.settings.transmittance.strength;
+    profiles.anyScattersInLighting = preintegrated ? 1 : 0;
     glNamedBufferSubData(mProfileUniforms.get(), 0, sizeof profiles, &profiles);
 }
 

@@ -47,7 +47,7 @@ float thicknessMm(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3
 
 vec3 profileTransmittance(ProfileParams profile, float sMm) {
     vec3 t = vec3(0.0);
-    int count = int(profile.info.x);
+    int count = profile.gaussianCount;
     for (int i = 0; i < count; ++i) {
         float varianceMm2 = max(profile.gaussians[i].a, 1e-6);
         t += profile.gaussians[i].rgb * exp(-sMm * sMm / varianceMm2);

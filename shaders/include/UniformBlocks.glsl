@@ -6,8 +6,8 @@
 //   - members are vec4, ivec4 and mat4, or named scalars and vec2s in
 //     groups that fill 16 bytes each (a vec2 and two scalars, or four
 //     scalars), so that C++ and std140 place every one at the same offset;
-//     the older blocks still pack scalars into vec4s, with a comment saying
-//     which component is what;
+//     the frame, light, object, environment and texture-space blocks still
+//     pack scalars into vec4s, with a comment saying which component is what;
 //   - arrays only of vec4 or of structs made of them.
 // Matrix names read destination-from-source: clipFromWorld maps world-space
 // positions to clip space.
@@ -113,13 +113,20 @@ DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {
 // A diffusion profile (engine/sss/DiffusionProfile.h) as the GPU sees it.
 struct ProfileParams {
     vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight (normalised per channel), a: variance (mm^2)
-    vec4 info;  // x: Gaussian count, yzw: weight the SSS accumulation starts with (the identity plus skipped narrow Gaussians)
-    vec4 technique;  // x: 1 = "preintegrated" (the lighting pass reads layer `slot` of its table), yzw: 0
+    vec3 initWeight;       // the SSS accumulation starts with it: the identity plus skipped narrow Gaussians
+    int gaussianCount;
+    int scattersInLighting;  // 1: technique "preintegrated", the lighting pass reads the slot's table
+    int unused0;
+    int unused1;
+    int unused2;
 };
 
 DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
     ProfileParams profiles[DERMIS_MAX_PROFILES + 1];  // [slot]; [0] is unused (no SSS)
-    vec4 transmittance;  // x: shrink (mm), y: strength, z: 1 = some slot is "preintegrated", w: 0
+    float transmittanceShrinkMm;
+    float transmittanceStrength;
+    int anyScattersInLighting;  // 1: some visible slot is "preintegrated" (the lighting pass binds the tables)
+    int unused;
 } DERMIS_BLOCK_END(uProfiles)
 
 // How a screen-space SSS step treats a tap across a depth step or another
@@ -175,8 +182,14 @@ DERMIS_BLOCK(DiskSssBlock, DERMIS_BINDING_PASS) {
 // SSAO and its blur (passes/SsaoPass.cpp; the manual is shaders/ssao.frag).
 #if defined(__cplusplus) || defined(DERMIS_USE_SSAO_BLOCK)
 DERMIS_BLOCK(SsaoBlock, DERMIS_BINDING_PASS) {
-    vec4 kernel;  // x: radius (m) and y: sample count where a character's params.y/z are 0; z: bias (fraction of the radius); w: range-check fade end (radii)
-    vec4 blur;    // x: half width (pixels, 0..4); y: depth tolerance (fraction of view depth)
+    float radiusM;         // where a character's params.y is 0
+    float samples;         // where a character's params.z is 0
+    float biasFraction;    // of the radius
+    float fadeEndRadii;    // the range check fades an occluder's weight out by here
+    int blurHalfWidthPx;   // 0..4
+    float blurDepthTolerance;  // a fraction of the view depth
+    float unused0;
+    float unused1;
 } DERMIS_BLOCK_END(uSsao)
 #endif
 
@@ -191,7 +204,10 @@ DERMIS_BLOCK(ScreenRegionsBlock, DERMIS_BINDING_SCREEN_REGIONS) {
 // GPU skinning of one character (passes/SkinningPass.cpp, shaders/skinning.comp).
 #if defined(__cplusplus) || defined(DERMIS_USE_SKINNING_BLOCK)
 DERMIS_BLOCK(SkinningBlock, DERMIS_BINDING_PASS) {
-    ivec4 counts;  // x: vertices, y: morph slots, z: 1 = write the derivatives too, w: 0
+    int vertexCount;
+    int morphSlots;
+    int writeDerivatives;  // 1: also the deformed dP/du and dP/dv (texture-space draws)
+    int unused0;
 } DERMIS_BLOCK_END(uSkinning)
 #endif
 

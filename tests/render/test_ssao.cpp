@@ -416,10 +416,10 @@ TEST(SsaoBlock, CarriesTheSceneSettings) {
     settings.radiusM = 0.04f;
     settings.samples = 48;
     const gpu::SsaoBlock block = makeSsaoBlock(settings);
-    EXPECT_EQ(block.kernel.x, 0.04f);
-    EXPECT_EQ(block.kernel.y, 48.0f);
-    EXPECT_EQ(block.kernel.z, kSsaoBiasFractionOfRadius);
-    EXPECT_EQ(block.kernel.w, kSsaoRangeFadeEndRadii);
-    EXPECT_EQ(block.blur.x, float(kSsaoBlurHalfWidthPx));
-    EXPECT_EQ(block.blur.y, kSsaoBlurDepthTolerance);
+    EXPECT_EQ(block.radiusM, 0.04f);
+    EXPECT_EQ(block.samples, 48.0f);
+    EXPECT_EQ(block.biasFraction, kSsaoBiasFractionOfRadius);
+    EXPECT_EQ(block.fadeEndRadii, kSsaoRangeFadeEndRadii);
+    EXPECT_EQ(block.blurHalfWidthPx, kSsaoBlurHalfWidthPx);
+    EXPECT_EQ(block.blurDepthTolerance, kSsaoBlurDepthTolerance);
 }
