@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The error of a scene split by ingredient (docs/bench.md, "Error by ingredient").
+"""The error of a scene split by ingredient (docs/bench.md and docs/results/bench.md, "Error by ingredient").
 
 usage: tools/error_ingredients.py SCENE --out DIR [--size WxH] [--density N]
                                   [--irradiance-size N] [--dermis PATH]

@@ -1,4 +1,4 @@
-// The LeePerrySmith head scan against the CPU reference (docs/bench.md, "The
+// The LeePerrySmith head scan against the CPU reference (docs/results/bench.md, "The
 // scan at 640x360"): the error causes found on it stay fixed. Needs the scan
 // in ../shared/content; skips without it.
 #include "TestSupport.h"
