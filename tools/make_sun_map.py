@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes a lat-long HDR environment map with a small, very bright sun over a
-dim sky: the hard case for the CPU reference (docs/reference.md, "Measured
-speed"). Radiance RGBE (.hdr), uncompressed scanlines, no dependencies.
+dim sky: the hard case for the CPU reference (docs/results/reference.md,
+"Speed"). Radiance RGBE (.hdr), uncompressed scanlines, no dependencies.
 
 usage: tools/make_sun_map.py OUT.hdr [--width 1024] [--sun-radiance 1e4]
        [--sun-radius-deg 0.5] [--sun-direction X,Y,Z]

@@ -1,7 +1,7 @@
 #pragma once
 // Intel Embree 3 (Wald et al. 2014) behind the same interface as the in-house
 // Bvh: closest hits for primary rays, any hits for shadow rays, over
-// world-space triangles. docs/reference.md ("Measured speed") gives its speed
+// world-space triangles. docs/results/reference.md ("Speed") gives its speed
 // against Bvh on the reference's rays; Bvh stays as its independent check.
 // Hits follow Bvh's conventions: tMin < t < tMax (Embree's interval is closed;
 // the ends differ on a set of measure zero), the triangle's index in the order

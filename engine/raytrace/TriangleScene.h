@@ -1,7 +1,7 @@
 #pragma once
 // World-space triangles that rays are traced against: the interface the CPU
 // reference's lighting sees, so that the in-house Bvh and Embree's (EmbreeBvh)
-// serve it alike (docs/reference.md, "Measured speed", compares them).
+// serve it alike (docs/results/reference.md, "Speed", compares them).
 
 #include <glm/glm.hpp>
 

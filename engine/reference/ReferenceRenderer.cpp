@@ -97,7 +97,7 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
         renderer.mExactValues.push_back(
             std::make_unique<ExactLightingValues>(*renderer.mSurfaces[c], *renderer.mIntegralLighting, scene.settings.sss.mix));
         // Only under an environment are a sample's values dear enough to keep: without one, looking a
-        // sample up cost more than shading it again (docs/reference.md, "Speed").
+        // sample up cost more than shading it again (docs/results/reference.md, "Speed").
         renderer.mExactMemos.push_back(options.sampleMemo && scene.environment.enabled()
                                            ? std::make_unique<SampleMemo>(*renderer.mExactValues.back())
                                            : nullptr);

@@ -12,7 +12,7 @@
 //          starting threads per call would show
 // Each iteration runs all four, the two loops alternating first, so that a slow
 // spell of the shared machine hits both; both must mark the same rays occluded.
-// docs/reference.md "Speed" quotes the table printed after the run.
+// docs/results/reference.md "Speed" quotes the table printed after the run.
 #include "ParallelLoopBenchmarks.h"
 #include "RayBenchmarks.h"
 

@@ -43,7 +43,7 @@ reference::ReferenceOptions referenceOptions(const ReferenceSettings& settings) 
 // integral's samples, so its noise per pass is far larger at the same count:
 // the default head under tools/make_sun_map.py's sun at 320x180 stopped at 8
 // passes and 2.85% with 16 rays; with 1024 it reached 0.16% in 2 passes and
-// 6.7 s (docs/reference.md, "Speed").
+// 6.7 s (docs/results/reference.md, "Speed").
 constexpr int kSssOffEnvironmentSamples = 1024;
 
 Image renderProgressive(reference::ReferenceRenderer& renderer, const ReferenceSettings& settings) {
