@@ -64,6 +64,7 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 // accumulations are float targets written through multiple render targets,
 // the moments' with one scalar weight per Gaussian (include/SssBlur.glsl,
 // "EXTRA TARGETS AND ALPHA", "PACKING").
+// passes/SssGaussianPasses.cpp.
 SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                              const SssStart& start, SssChain chain);
 // Separable SSS (Jimenez et al. 2015), passes/SssSeparablePasses.cpp.

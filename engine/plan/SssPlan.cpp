@@ -71,13 +71,26 @@ struct RankedChoice {
     const char* source = "settings";
 };
 
-RankedChoice chooseSss(const Scene& scene, float pixelsPerMm) {
+RankedChoice chooseFromSettingsOrTable(const Scene& scene, float pixelsPerMm) {
     const QualitySettings& quality = scene.settings.quality;
     if (quality.errorBudget <= 0.0f || quality.loaded.empty()) {
         return {SssChoice::fromSettings(scene.settings.sss), 0, "settings"};
     }
     const size_t row = quality.loaded.rowFor(pixelsPerMm);
     return {quality.loaded.choiceAt(row), row, row < quality.loaded.rows.size() ? "table" : "finest"};
+}
+
+// In texture-space mode the lighting pass's irradiance feeds the texture-space
+// passes, which must not see a technique's scattering there: a character
+// texture space cannot run falls back to the d'Eon chain instead.
+RankedChoice chooseSss(const Scene& scene, float pixelsPerMm) {
+    RankedChoice ranked = chooseFromSettingsOrTable(scene, pixelsPerMm);
+    if (scene.settings.mode == SssMode::TextureSpace && sssTechniqueInfo(ranked.choice.technique).scattersInLighting) {
+        SssChoice chain = ranked.choice;
+        chain.technique = SssTechnique::Gaussians;
+        ranked.choice = chain.canonical();
+    }
+    return ranked;
 }
 
 Status setChoice(SssSlotPlan& slot, const SssChoice& choice) {

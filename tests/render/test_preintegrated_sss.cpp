@@ -140,3 +140,24 @@ TEST_F(PreintegratedSss, OtherTechniquesKeepPlainLambert) {
     // The interpolated normal of a 64 x 32 sphere against the exact one: a few 1e-3.
     EXPECT_LT(worst, 0.01);
 }
+
+// In texture-space mode the screen-space technique must not change the image:
+// the lighting pass's irradiance feeds the texture-space passes, so a
+// pre-integrated slot there runs as the d'Eon chain (plan/SssPlan.cpp).
+// Broken on purpose (the texture-space rule removed): the diffuse AOVs differ
+// by up to 0.0506 (fails).
+TEST_F(PreintegratedSss, TextureSpaceModeIgnoresTheScreenSpaceTechnique) {
+    Image frames[2];
+    const char* techniques[2] = {"gaussians", "preintegrated"};
+    for (int i = 0; i < 2; ++i) {
+        load("default.json", {"mode=ts", std::string("sss.technique=") + techniques[i]});
+        frames[i] = render(Aov::Diffuse, 160, 90);
+        ASSERT_EQ(test::countNonFinite(frames[i]), 0u);
+    }
+    float worst = 0.0f;
+    for (size_t t = 0; t < frames[0].texels.size(); ++t) {
+        for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs(frames[0].texels[t][c] - frames[1].texels[t][c]));
+    }
+    std::printf("[ measured ] texture-space mode, gaussians against preintegrated: worst difference %.3g\n", worst);
+    EXPECT_EQ(worst, 0.0f);
+}
