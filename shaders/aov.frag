@@ -1,5 +1,5 @@
 // Writes one linear component of the frame, before tone mapping, for
-// `dermis render --aov`. The AOV id is uFrame.shading.w (plan/Aov.h).
+// `dermis render --aov`. The AOV id is uFrame.aov (plan/Aov.h).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "EnergyConservation.glsl"
@@ -39,7 +39,7 @@ bool uvLayoutTexel(ivec2 pixel, out vec4 texel) {
 }
 
 void shade() {
-    int aov = int(uFrame.shading.w);
+    int aov = uFrame.aov;
     if (aov == DERMIS_AOV_STRETCH || aov == DERMIS_AOV_IRRADIANCE_TEXTURE) {
         vec4 texel;
         bool inside = uvLayoutTexel(ivec2(gl_FragCoord.xy), texel);

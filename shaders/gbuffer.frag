@@ -17,7 +17,7 @@
 // when the environment's occlusion is "transfer" (include/EnvironmentTransfer.glsl):
 //   target N       RGBA16F: the environment irradiance L.T interpolated from
 //                  the vertices, a = the share of the sky they see
-// Material maps are sampled with the mip bias uFrame.features.w (0 but in tests).
+// Material maps are sampled with the mip bias uFrame.materialMipBias (0 but in tests).
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "Material.glsl"
@@ -82,7 +82,7 @@ float curvaturePerMm() {
 }
 
 void main() {
-    float mipBias = uFrame.features.w;
+    float mipBias = uFrame.materialMipBias;
     vec3 albedo = materialAlbedo(uAlbedoMap, vUv, vColour, mipBias);
     bool hasMaps = uObject.material.w > 0.5;
     float roughness = materialRoughness(vUv, mipBias);

@@ -74,7 +74,7 @@ void main() {
     vec4 normalMaterial = texelFetch(uNormalMaterial, pixel, 0);
     float roughness = normalMaterial.z;
     float rhoS = normalMaterial.w;
-    bool conserveEnergy = uFrame.features.x > 0.5;
+    bool conserveEnergy = uFrame.energyConservation != 0;
 
     vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);
     vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
@@ -110,7 +110,7 @@ void main() {
         }
     }
     vec4 shadowed = vec4(0.0);
-    int lightCount = int(uFrame.shading.z);
+    int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
         vec3 L;
@@ -132,7 +132,7 @@ void main() {
         if (keepSpecular) specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
     }
 
-    float mixRatio = uFrame.shading.y;
+    float mixRatio = uFrame.mixRatio;
 #ifdef LIGHTING_LEAN
     float alpha = texelFetch(uLeanCross, ivec2(gl_FragCoord.xy), 0).r;
 #else

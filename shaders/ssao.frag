@@ -10,7 +10,7 @@
 //     unit 0  uDepth           G-buffer D24S8 depth (sampled as depth)
 //     unit 1  uNormalMaterial  G-buffer RGBA16F, xy = octahedral VIEW-space normal
 //     unit 2  uAlbedo          G-buffer RGBA16F, a = object id / 255 (0 = background)
-//     FrameBlock       viewFromClip, clipFromView, viewport, features.z (strength)
+//     FrameBlock       viewFromClip, clipFromView, viewport, ssaoStrength
 //     CharactersBlock  characters[id].params: y = radius (m), z = sample count
 //     SsaoBlock        (DERMIS_BINDING_PASS) fallbacks and biases, see below
 //   Output: AO in [0, 1], 1 = unoccluded. It multiplies only the ambient /
@@ -18,7 +18,7 @@
 //
 // CONFIGURATION (scene file -> where it arrives -> default)
 //   settings.ssao.enabled     the pass is skipped by graph predicate    true
-//   settings.ssao.strength    uFrame.features.z, in [0, 1]:             1
+//   settings.ssao.strength    uFrame.ssaoStrength, in [0, 1]:             1
 //                             AO = 1 - strength * occlusion
 //   settings.ssao.radius_m    hemisphere radius in metres (world and    0.02
 //                             view space share units); per character
@@ -111,7 +111,7 @@ float ambientOcclusion(ivec2 pixel) {
     vec4 params = uCharacters.characters[objectId].params;
     float radiusM = params.y > 0.0 ? params.y : uSsao.radiusM;
     float sampleCount = params.z >= 1.0 ? params.z : uSsao.samples;
-    float strength = clamp(uFrame.features.z, 0.0, 1.0);  // NaN clamps to an end; both are finite
+    float strength = clamp(uFrame.ssaoStrength, 0.0, 1.0);  // NaN clamps to an end; both are finite
     if (!(radiusM > 0.0) || !(sampleCount >= 1.0) || !(strength > 0.0)) return 1.0;
     radiusM = min(radiusM, kMaxRadiusM);
     int samples = int(min(sampleCount, float(kMaxSamples)));

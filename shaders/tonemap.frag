@@ -19,6 +19,6 @@ vec3 encodeSrgb(vec3 linear) {
 }
 
 void main() {
-    vec3 colour = sanitizeColour(texture(uColour, vUv).rgb) * uFrame.shading.x;
+    vec3 colour = sanitizeColour(texture(uColour, vUv).rgb) * uFrame.exposure;
     oColour = vec4(encodeSrgb(acesFilm(colour)), 1.0);
 }

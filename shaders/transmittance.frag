@@ -42,9 +42,9 @@ void main() {
                            vec3(0.0, 1.0, 0.0));
     float shrinkMm = uProfiles.transmittanceShrinkMm;
 
-    bool writeThickness = int(uFrame.shading.w) == DERMIS_AOV_THICKNESS;
+    bool writeThickness = uFrame.aov == DERMIS_AOV_THICKNESS;
     vec3 transmitted = vec3(0.0);
-    int lightCount = int(uFrame.shading.z);
+    int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
         int shadowSlot = int(light.directionShadow.w);
@@ -60,7 +60,7 @@ void main() {
         if (scatter.g > 0.0) sMm = scatter.g;  // KHR_materials_volume: the file's thickness, where the light is behind
         transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
     }
-    float mixRatio = uFrame.shading.y;
+    float mixRatio = uFrame.mixRatio;
     oTransmitted = vec4(sanitizeColour(transmitted * scatter.r * uProfiles.transmittanceStrength * albedoPower(albedo, mixRatio)),
                         0.0);
 }

@@ -63,7 +63,7 @@ void main() {
     vec3 albedo = materialAlbedo(uAlbedoMap, vMapUv, vColour, 0.0);
     float roughness = materialRoughness(vMapUv, 0.0);
     float rhoS = materialRhoS(vMapUv, 0.0);
-    bool conserveEnergy = uFrame.features.x > 0.5;
+    bool conserveEnergy = uFrame.energyConservation != 0;
 
     float occlusion = ambientOcclusion(vWorldPositionM);
     vec3 irradiance = uFrame.ambient.rgb * occlusion;
@@ -73,7 +73,7 @@ void main() {
         if (mode == DERMIS_ENV_OCCLUSION_SSAO) environment *= occlusion;
         irradiance += environment * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
     }
-    int lightCount = int(uFrame.shading.z);
+    int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
         vec3 L;
@@ -89,5 +89,5 @@ void main() {
 
     float alpha = 1.0;
     if (uTs.tsmAxis.w > 0.5) alpha = encodeThickness(tsmThicknessMm(uTsm, vWorldPositionM, geometricN));
-    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, uFrame.shading.y)), alpha);
+    oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, uFrame.mixRatio)), alpha);
 }

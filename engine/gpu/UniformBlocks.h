@@ -37,6 +37,8 @@ static_assert(offsetof(SssBlurBlock, sigmaMm) == DERMIS_MAX_BLUR_TAPS * 16 + 8 &
 static_assert(offsetof(ProfileParams, gaussianCount) == DERMIS_MAX_PROFILE_GAUSSIANS * 16 + 12 &&
                   offsetof(ProfilesBlock, anyScattersInLighting) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 8,
               "named fields sit at their std140 offsets");
+static_assert(offsetof(FrameBlock, aov) == 5 * 64 + 5 * 16 + 12 && offsetof(FrameBlock, materialMipBias) == 5 * 64 + 6 * 16 + 12,
+              "named fields sit at their std140 offsets");
 static_assert(offsetof(SsaoBlock, blurHalfWidthPx) == 16 && offsetof(SkinningBlock, writeDerivatives) == 8,
               "named fields sit at their std140 offsets");
 static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");

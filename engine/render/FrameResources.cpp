@@ -103,9 +103,14 @@ void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
     frame.depthRangeM = glm::vec4(camera.nearM, camera.farM, 0.0f, 0.0f);
     frame.ambient = glm::vec4(settings.ambient, 0.0f);
     frame.background = glm::vec4(scene.background.colour, 1.0f);
-    frame.shading = glm::vec4(settings.exposure, settings.sss.mix, float(plan.lights.lightCount), float(int(plan.aov)));
-    frame.features = glm::vec4(settings.energyConservation ? 1.0f : 0.0f, plan.view.pixelsPerMetreAtUnitDepth(),
-                               settings.ssao.strength, plan.materialMipBias);
+    frame.exposure = settings.exposure;
+    frame.mixRatio = settings.sss.mix;
+    frame.lightCount = int(plan.lights.lightCount);
+    frame.aov = int(plan.aov);
+    frame.energyConservation = settings.energyConservation ? 1 : 0;
+    frame.pixelsPerMetreAtUnitDepth = plan.view.pixelsPerMetreAtUnitDepth();
+    frame.ssaoStrength = settings.ssao.strength;
+    frame.materialMipBias = plan.materialMipBias;
     glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
     glNamedBufferSubData(mLightUniforms.get(), 0, sizeof(gpu::LightsBlock), &plan.lights.block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_FRAME, mFrameUniforms.get());

@@ -39,7 +39,7 @@
 //     the same every frame and run (no temporal accumulation here, unlike
 //     HDRP, which jitters per frame and relies on TAA).
 //   - Width: as SssBlur.glsl's WIDTH: r mm covers r * 1e-3 * P / z pixels at
-//     the centre's view depth z (P = uFrame.features.y).
+//     the centre's view depth z (P = uFrame.pixelsPerMetreAtUnitDepth).
 //   - Fetches: each sample reads the texel its offset rounds to (texelFetch;
 //     a bilinear fetch at a silhouette would mix in a texel the edge test
 //     never saw), so the irradiance is taken as boxes, as the d'Eon chain's
@@ -92,7 +92,7 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     uint centreKey;
     float viewDepthM;
     if (!sssCentre(colour, depthKey, pixel, uDiskSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
-    float pxPerMm = 1e-3 * uFrame.features.y / viewDepthM;
+    float pxPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     if (uDiskSss.largestRadiusMm * pxPerMm < kDiskSssSkipPx) return centre;
 
 #if DISK_SSS_ROTATE

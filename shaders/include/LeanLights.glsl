@@ -53,7 +53,7 @@ vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, vec4 lightingSpecular,
     mat3 viewFromWorld = mat3(uFrame.viewFromWorld);
 
     vec3 specular = vec3(0.0);
-    int lightCount = int(uFrame.shading.z);
+    int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
         vec3 L;

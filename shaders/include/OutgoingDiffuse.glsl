@@ -20,8 +20,8 @@ vec3 scatteredIrradiance(ivec2 pixel, vec3 accumulated) {
 // SSS-accumulated irradiance and G-buffer normal+material (fetched by the
 // caller, which may need them too: on llvmpipe every fetch counts).
 vec3 outgoingDiffuseOf(vec3 albedo, vec3 accumulated, vec4 normalMaterial, float depth) {
-    vec3 diffuse = accumulated * albedoPower(albedo, 1.0 - uFrame.shading.y);
-    if (uFrame.features.x > 0.5) {
+    vec3 diffuse = accumulated * albedoPower(albedo, 1.0 - uFrame.mixRatio);
+    if (uFrame.energyConservation != 0) {
         vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);
         vec3 N = decodeNormal(normalMaterial.xy);  // view space, like V below
         vec3 V = safeNormalize(-viewPositionM, N);

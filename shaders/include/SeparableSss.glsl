@@ -35,7 +35,7 @@
 //
 // WIDTH (as SssBlur.glsl, WIDTH)
 //   A tap at x mm sits x * 1e-3 * P / z pixels from the centre, z the
-//   centre's view depth (m), P = uFrame.features.y (pixels per metre at 1 m).
+//   centre's view depth (m), P = uFrame.pixelsPerMetreAtUnitDepth (pixels per metre at 1 m).
 //
 // FRACTIONAL TAPS: WHOLE TEXELS, SPLIT AND MERGED
 //   A tap's position is rarely a whole pixel. It is never fetched bilinearly
@@ -106,7 +106,7 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
     float viewDepthM;
     if (!sssCentre(chain, depthKey, pixel, uSeparableSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
-    float pixelsPerMm = 1e-3 * uFrame.features.y / viewDepthM;
+    float pixelsPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     ivec2 direction = uSeparableSss.direction;
     int count = min(uSeparableSss.tapCount, DERMIS_MAX_SEPARABLE_SAMPLES);
 

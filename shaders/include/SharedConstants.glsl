@@ -69,7 +69,7 @@
 // texel empty). Thin parts (ears, 2-5 mm) lie well above it.
 #define DERMIS_SELF_THICKNESS_MM 0.25
 
-// Outputs of the aov pass (FrameBlock::shading.w); C++: Aov.
+// Outputs of the aov pass (FrameBlock::aov); C++: Aov.
 #define DERMIS_AOV_FINAL 0
 #define DERMIS_AOV_ALBEDO 1
 #define DERMIS_AOV_NORMAL 2

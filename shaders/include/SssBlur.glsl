@@ -40,7 +40,7 @@
 //
 // WIDTH (Chappuis 2011 §2.2.4; docs/screen-space.md, step 6)
 //   A step of std dev sigma_mm covers sigma_mm * 1e-3 * P / z pixels at view
-//   depth z metres, where P = uFrame.features.y is the number of pixels per
+//   depth z metres, where P = uFrame.pixelsPerMetreAtUnitDepth is the number of pixels per
 //   metre at 1 m (height / (2 tan(fov/2))). World space is in metres, so each
 //   character's metres_per_unit is already in z. The centre pixel's depth
 //   sets the width, as in Jimenez's SeparableSSS.
@@ -134,7 +134,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float viewDepthM;
     if (!sssCentre(colour, depthKey, pixel, uSssBlur.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
-    float sigmaPx = uSssBlur.sigmaMm * 1e-3 * uFrame.features.y / viewDepthM;
+    float sigmaPx = uSssBlur.sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     vec2 direction = uSssBlur.direction;
     int taps = uSssBlur.taps;
     int halfTaps = min(taps / 2, kSssMaxHalfTaps);

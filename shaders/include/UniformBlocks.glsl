@@ -57,8 +57,14 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     vec4 depthRangeM;       // x: near, y: far (metres)
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance
-    vec4 shading;           // x: exposure, y: pre-scatter mix ratio, z: light count, w: output AOV id
-    vec4 features;          // x: energy conservation on (1/0), y: pixels per metre at 1 m view depth (vertical), z: SSAO strength, w: mip bias of material maps
+    float exposure;
+    float mixRatio;          // pre-scatter albedo^mix (Chappuis 2011 §2.2.4)
+    int lightCount;
+    int aov;                 // the output, DERMIS_AOV_*
+    int energyConservation;  // 1: each light's diffuse share is 1 - rho_s rho_dt (Chappuis 2011 §2.6)
+    float pixelsPerMetreAtUnitDepth;  // vertically, at 1 m view depth
+    float ssaoStrength;
+    float materialMipBias;   // of the material maps (0 but in tests)
 } DERMIS_BLOCK_END(uFrame)
 
 struct GpuLight {

@@ -124,7 +124,8 @@ protected:
         frame.cameraPositionM = glm::vec4(mScene->camera.positionM, 1.0f);
         frame.viewport = glm::vec4(kWidth, kHeight, 1.0f / float(kWidth), 1.0f / float(kHeight));
         frame.depthRangeM = glm::vec4(mScene->camera.nearM, mScene->camera.farM, 0.0f, 0.0f);
-        frame.features = glm::vec4(1.0f, 0.0f, mScene->settings.ssao.strength, 0.0f);
+        frame.energyConservation = 1;
+        frame.ssaoStrength = mScene->settings.ssao.strength;
         glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
 
         // Per-character overrides go up as the scene has them (0 = the
