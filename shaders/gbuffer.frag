@@ -6,7 +6,8 @@
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
 //   target 3       RGBA16F: the scattering share s, the KHR_materials_volume
 //                  thickness in mm (DERMIS_GBUFFER_SCATTER_LOCATION, docs/materials.md)
-//                  the surface's curvature in 1/mm and the profile slot
+//                  the surface's curvature in 1/mm (0 unless some slot is
+//                  "preintegrated") and the profile slot
 //                  (include/PreintegratedSkin.glsl reads both)
 // With GBUFFER_LEAN defined (variants lcb and lbb, plan/SssVariant.h):
 //   target 4       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
@@ -123,7 +124,9 @@ void main() {
     vec4 scattering = uObject.scattering;
     float scatter = scattering.x * (scattering.y > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
     float thicknessMm = scattering.z * (scattering.w > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
-    oScatter = vec4(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0), curvaturePerMm(), float(slot));
+    // The curvature only for frames that read it (a uniform branch).
+    float curvature = uProfiles.anyScattersInLighting != 0 ? curvaturePerMm() : 0.0;
+    oScatter = vec4(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0), curvature, float(slot));
 #ifdef GBUFFER_TRANSFER
     oEnvironment = vEnvironment;
 #endif

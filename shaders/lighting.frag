@@ -103,10 +103,11 @@ void main() {
     int preintegratedSlot = 0;
     float curvaturePerMm = 0.0;
     if (uProfiles.anyScattersInLighting != 0) {
-        int slot = int(texelFetch(uScatter, pixel, 0).w + 0.5);
+        vec4 scatter = texelFetch(uScatter, pixel, 0);
+        int slot = int(scatter.w + 0.5);
         if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].scattersInLighting != 0) {
             preintegratedSlot = slot;
-            curvaturePerMm = texelFetch(uScatter, pixel, 0).z;
+            curvaturePerMm = scatter.z;
         }
     }
     vec4 shadowed = vec4(0.0);

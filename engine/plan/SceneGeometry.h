@@ -47,7 +47,7 @@ public:
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
     // The environment's map, extracted light and SH as loaded
-    // (render/SceneLoading.h); null before loading or without an environment.
+    // (render/SceneLoading.h); null before loading. It stays while the scene has none.
     const std::shared_ptr<const EnvironmentLight>& environmentLight() const { return mEnvironment; }
     void setEnvironmentLight(std::shared_ptr<const EnvironmentLight> light) { mEnvironment = std::move(light); }
     // The loaded light, if it is the one `environment` asks for with

@@ -31,10 +31,8 @@ Result<std::shared_ptr<const EnvironmentLight>> loadEnvironmentLight(const Envir
 
 Status loadEnvironment(const Scene& scene, SceneGeometry& geometry) {
     const Environment& environment = scene.environment;
-    if (!environment.enabled()) {
-        geometry.setEnvironmentLight(nullptr);
-        return success();
-    }
+    // Without an environment the loaded light stays, for when the scene turns it back on.
+    if (!environment.enabled()) return success();
     const LightExtractionSettings extraction = lightExtractionSettings(environment, scene.lights.size());
     const std::shared_ptr<const EnvironmentLight>& loaded = geometry.environmentLight();
     if (!loaded || loaded->source != environment.source) {

@@ -24,7 +24,7 @@ Result<std::shared_ptr<const EnvironmentLight>> loadEnvironmentLight(const Envir
 
 // Gives `geometry` the environment light the scene asks for now: loaded when
 // the source changes, split again (no reading) when only the extraction
-// changes, nothing when it is current; cleared without an environment.
+// changes, nothing when it is current or the scene has no environment.
 // Errors name the map.
 Status loadEnvironment(const Scene& scene, SceneGeometry& geometry);
 
