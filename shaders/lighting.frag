@@ -14,8 +14,8 @@
 //      include/LeanLights.glsl), alpha 0 and in red the environment's
 //      specular occlusion.
 //   With the technique "preintegrated" for a pixel's profile slot, each
-//   light's N.L is its pre-integrated falloff instead
-//   (include/PreintegratedSkin.glsl).
+//   light's N.L is its pre-integrated falloff and its shadow the one the
+//   profile scatters (include/PreintegratedSkin.glsl).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -102,12 +102,14 @@ void main() {
     // The slot whose technique is "preintegrated", or 0.
     int preintegratedSlot = 0;
     float curvaturePerMm = 0.0;
+    bool scatterShadows = false;
     if (uProfiles.anyScattersInLighting != 0) {
         vec4 scatter = texelFetch(uScatter, pixel, 0);
         int slot = int(scatter.w + 0.5);
         if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].scattersInLighting != 0) {
             preintegratedSlot = slot;
             curvaturePerMm = scatter.z;
+            scatterShadows = preintegratedShadowShows(uProfiles.profiles[slot].shadowSigmaMm, worldPositionM);
         }
     }
     vec4 shadowed = vec4(0.0);
@@ -121,14 +123,23 @@ void main() {
         if (nDotL <= 0.0 && preintegratedSlot == 0) continue;
         int slot = int(light.directionShadow.w);
         float visibility = 1.0;
+        vec3 diffuseVisibility = vec3(1.0);  // pre-integrated skin: the shadow the profile scatters
         if (slot >= 0) {
-            visibility = shadowVisibility(uShadowMaps[slot], light, worldPositionM, N, gl_FragCoord.xy);
+            if (scatterShadows) {
+                vec4 scattered = preintegratedShadow(uPreintegrated, preintegratedSlot, uProfiles.profiles[preintegratedSlot].shadowSigmaMm,
+                                                     uShadowMaps[slot], light, worldPositionM, N);
+                diffuseVisibility = scattered.rgb;
+                visibility = scattered.a;
+            } else {
+                visibility = shadowVisibility(uShadowMaps[slot], light, worldPositionM, N, gl_FragCoord.xy);
+                diffuseVisibility = vec3(visibility);
+            }
             if (nDotL > 0.0) shadowed[slot] = visibility;
         }
         float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, max(nDotL, 0.0), roughness, rhoS) : 1.0;
         vec3 falloff = vec3(nDotL);
         if (preintegratedSlot > 0) falloff = preintegratedFalloff(uPreintegrated, preintegratedSlot, nDotL, curvaturePerMm);
-        irradiance += radiance * (falloff * (visibility * diffuseShare));
+        irradiance += radiance * (falloff * diffuseVisibility * diffuseShare);
         if (nDotL <= 0.0) continue;
         if (keepSpecular) specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));
     }

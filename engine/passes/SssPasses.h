@@ -57,23 +57,6 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 // the accumulations by blending (after sss init's identity weight, as the
 // d'Eon chain does) or overwrites every pixel of its slot.
 //
-// The d'Eon chain (technique "gaussians"): one blur pair per Gaussian, with extra
-// targets (none, or the kLeanSssTargets LEAN moments) blurred in the same
-// passes with the same taps: the chain packs irradiance and moments as halves
-// in one RGBA32UI texture ("sss chain", started by sss init) and the
-// accumulations are float targets written through multiple render targets,
-// the moments' with one scalar weight per Gaussian (include/SssBlur.glsl,
-// "EXTRA TARGETS AND ALPHA", "PACKING").
-// passes/SssGaussianPasses.cpp.
-SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                             const SssStart& start, SssChain chain);
-// Separable SSS (Jimenez et al. 2015), passes/SssSeparablePasses.cpp.
-SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                         const SssStart& start, SssChain chain);
-// The profile sampled on a disk in one pass, passes/SssDiskPass.cpp.
-SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                    const SssStart& start, SssChain chain);
-
 // A technique's passes: they read the chain start and add into `chain`, which they return.
 using AddSssTechniquePasses = SssChain (*)(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const SssStart& start, SssChain chain);

@@ -6,6 +6,22 @@
 #include <utility>
 
 namespace dermis {
+
+// Each technique's passes, in its own file. The d'Eon chain (technique "gaussians"): one
+// blur pair per Gaussian, with extra targets (none, or the kLeanSssTargets LEAN moments)
+// blurred in the same passes with the same taps: the chain packs irradiance and moments as
+// halves in one RGBA32UI texture ("sss chain", started by sss init) and the accumulations
+// are float targets written through multiple render targets, the moments' with one scalar
+// weight per Gaussian (include/SssBlur.glsl, "EXTRA TARGETS AND ALPHA", "PACKING").
+SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                             const SssStart& start, SssChain chain);  // passes/SssGaussianPasses.cpp
+// Separable SSS (Jimenez et al. 2015).
+SssChain addSeparableSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                         const SssStart& start, SssChain chain);  // passes/SssSeparablePasses.cpp
+// The profile sampled on a disk in one pass.
+SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
+                    const SssStart& start, SssChain chain);  // passes/SssDiskPass.cpp
+
 namespace {
 
 // Pre-integrated skin shading scatters in the lighting pass (passes/LightingPass.cpp,

@@ -4,6 +4,7 @@
 #include "brdf/BeckmannTable.h"
 #include "brdf/EnergyTable.h"
 #include "scene/SssTechniques.h"
+#include "sss/PreintegratedShadow.h"
 
 #include <algorithm>
 
@@ -150,6 +151,7 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
         p.gaussianCount = int(n);
         p.initWeight = slot.initWeight;
         p.scattersInLighting = sssTechniqueInfo(slot.choice.technique).scattersInLighting ? 1 : 0;
+        p.shadowSigmaMm = float(preintegratedShadowSigmaMm(*slot.profile, slot.widthScale));
     }
     profiles.transmittanceShrinkMm = scene.settings.transmittance.shrinkMm;
     profiles.transmittanceStrength = scene.settings.transmittance.strength;

@@ -1,9 +1,11 @@
 #pragma once
 // The pre-integrated skin tables of a frame (sss/PreintegratedTable.h,
-// shaders/include/PreintegratedSkin.glsl): one 2-D texture of the slots'
-// tables stacked, slot s in rows s x kPreintegratedCurvatures up, for each
-// slot whose technique is "preintegrated", built on the CPU when a slot's
-// (profile, width scale) first needs it and kept while it stays.
+// sss/PreintegratedShadow.h, shaders/include/PreintegratedSkin.glsl): one 2-D
+// texture of the slots' tables stacked, slot s from row s x
+// DERMIS_PREINTEGRATED_SLOT_ROWS up (its falloff, then its shadow table), for
+// each slot whose technique is "preintegrated", built on the CPU when a slot's
+// (profile, width scale) first needs it and kept while it stays (the shadow
+// table depends on the profile only).
 
 #include "gl/GlObjects.h"
 #include "plan/SssPlan.h"

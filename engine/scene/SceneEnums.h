@@ -31,10 +31,10 @@ inline constexpr EnumTable<SssMode, 2> kSssModes{
 // (scene/SssTechniques.h: its settings, its tuner candidates), its own passes
 // (passes/SssTechniquePasses.cpp) and its own shaders.
 enum class SssTechnique {
-    Gaussians = DERMIS_SSS_TECHNIQUE_GAUSSIANS,
-    Separable = DERMIS_SSS_TECHNIQUE_SEPARABLE,
-    Disk = DERMIS_SSS_TECHNIQUE_DISK,
-    Preintegrated = DERMIS_SSS_TECHNIQUE_PREINTEGRATED,
+    Gaussians,
+    Separable,
+    Disk,
+    Preintegrated,
 };
 
 inline constexpr EnumTable<SssTechnique, 4> kSssTechniques{

@@ -4,6 +4,12 @@
 
 namespace dermis {
 
+// The descriptors, each in its own file.
+SssTechniqueInfo gaussiansTechnique();      // scene/SssTechniqueGaussians.cpp
+SssTechniqueInfo separableTechnique();      // scene/SssTechniqueSeparable.cpp
+SssTechniqueInfo diskTechnique();           // scene/SssTechniqueDisk.cpp
+SssTechniqueInfo preintegratedTechnique();  // scene/SssTechniquePreintegrated.cpp
+
 std::vector<SssChoice> sampleCountCandidates(SssTechnique technique, int SssChoice::*member, std::initializer_list<int> counts) {
     std::vector<SssChoice> out;
     for (int count : counts) {

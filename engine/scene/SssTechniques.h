@@ -48,10 +48,4 @@ std::vector<SssChoice> sampleCountCandidates(SssTechnique technique, int SssChoi
 const std::vector<SssTechniqueInfo>& sssTechniques();
 const SssTechniqueInfo& sssTechniqueInfo(SssTechnique technique);
 
-// The descriptors, each in its own file.
-SssTechniqueInfo gaussiansTechnique();      // scene/SssTechniqueGaussians.cpp
-SssTechniqueInfo separableTechnique();      // scene/SssTechniqueSeparable.cpp
-SssTechniqueInfo diskTechnique();           // scene/SssTechniqueDisk.cpp
-SssTechniqueInfo preintegratedTechnique();  // scene/SssTechniquePreintegrated.cpp
-
 }  // namespace dermis

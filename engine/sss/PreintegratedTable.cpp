@@ -1,5 +1,7 @@
 #include "sss/PreintegratedTable.h"
 
+#include "sss/BilinearTable.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -177,22 +179,7 @@ glm::vec3 PreintegratedTable::at(float cosTheta, float curvaturePerMm) const {
     const float kappa = std::fmin(std::fmax(curvaturePerMm, 0.0f), maxCurvaturePerMm);
     const float x = 0.5f * (c + 1.0f);
     const float y = std::sqrt(kappa / maxCurvaturePerMm);
-    // The sampler: texel coordinate u N - 1/2, its floor and fraction, both texels clamped.
-    const auto axis = [](float u, int size, int& i0, int& i1, float& fraction) {
-        const float position = u * float(size) - 0.5f;
-        const float base = std::floor(position);
-        fraction = position - base;
-        i0 = std::clamp(int(base), 0, size - 1);
-        i1 = std::clamp(int(base) + 1, 0, size - 1);
-    };
-    int x0, x1, y0, y1;
-    float fx, fy;
-    axis(x, cosines, x0, x1, fx);
-    axis(y, curvatures, y0, y1, fy);
-    const auto texel = [&](int i, int j) { return texels[size_t(j) * size_t(cosines) + size_t(i)]; };
-    const glm::vec3 bottom = glm::mix(texel(x0, y0), texel(x1, y0), fx);
-    const glm::vec3 top = glm::mix(texel(x0, y1), texel(x1, y1), fx);
-    return glm::mix(bottom, top, fy);
+    return sampleBilinear(texels, cosines, curvatures, x * float(cosines) - 0.5f, y * float(curvatures) - 0.5f);
 }
 
 }  // namespace dermis

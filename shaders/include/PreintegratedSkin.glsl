@@ -20,34 +20,97 @@
 //   root gives the gently curved cheek, where the falloff changes fastest with
 //   curvature, most rows). Texel centres hold the exact values. The slots'
 //   tables are stacked in one 2-D texture, slot s in rows s x CURVATURES up
-//   (render/PreintegratedTables.h); v is clamped to the slot's texel centres so
-//   that no row of its neighbours leaks in. (A 2-D array texture sampled in the
-//   lights' loop crashed llvmpipe's shader compiler, LLVM 15.)
+//   (render/PreintegratedTables.h), slot s from row s x DERMIS_PREINTEGRATED_SLOT_ROWS
+//   up: its falloff, then its shadow table; v is clamped to the texel centres of
+//   the table it reads so that no row of its neighbours leaks in. (A 2-D array
+//   texture sampled in the lights' loop crashed llvmpipe's shader compiler, LLVM 15.)
 //
 // CURVATURE
 //   Per pixel from the G-buffer's scatter target (z, 1/mm): gbuffer.frag's
 //   |dN| / |dP| of the interpolated vertex normal and view position, exact
 //   (1/r) on a sphere of radius r. Normal maps do not change it.
 //
+// SHADOWS
+//   A shadowed light's visibility is replaced by the light the profile
+//   scatters across its shadow edge (Penner & Borshukov 2011's pre-integrated
+//   shadows; sss/PreintegratedShadow.h has the model and its table): the
+//   shadow map's coverage of a disc of radius k sigma sqrt(1 + q^2) around the
+//   receiver, in its tangent plane (k = DERMIS_PREINTEGRATED_SHADOW_STDDEVS,
+//   sigma = ProfileParams.shadowSigmaMm, q = h / (2 sigma), h the light's
+//   penumbra half-width from PCSS's blocker search, at least one map texel,
+//   stretched onto the surface by 1 / cos(N, L)) and q look up the scattered
+//   shadow (rgb), which multiplies the falloff, and the light's own
+//   visibility (alpha), which the specular keeps. Where the surface rises
+//   above the tangent plane by less than a tap's distance, the tap counts
+//   as lit (include/Shadows.glsl, surfaceDiscPcf).
+//
 // WHAT IT LEAVES OUT
-//   Shadows multiply the falloff as in the other techniques: a shadow edge
-//   is not softened by the profile (Penner & Borshukov 2011's penumbra
-//   table is not built). The environment's diffuse light and the ambient
-//   are not scattered. Bumps smaller than a triangle scatter nothing.
+//   The environment's diffuse light and the ambient are not scattered. Bumps
+//   smaller than a triangle scatter nothing. A shadow edge that is not
+//   straight across the disc (a corner, a thin shadow, a concave receiver
+//   that rises above its tangent plane) is read as if it were.
 #ifndef DERMIS_PREINTEGRATED_SKIN_GLSL
 #define DERMIS_PREINTEGRATED_SKIN_GLSL
 
 #if DERMIS_PREINTEGRATED_COSINES < 2 || DERMIS_PREINTEGRATED_CURVATURES < 2
 #error "the pre-integrated table needs at least 2 x 2 texels"
 #endif
+#if DERMIS_PREINTEGRATED_SHADOW_ROWS < 1
+#error "the pre-integrated shadow table needs at least one row"
+#endif
+
+#include "Shadows.glsl"
+
+// The texture's v for a row (texel units) of a slot's tables.
+float preintegratedV(int slot, float row) {
+    return (row + float(slot * DERMIS_PREINTEGRATED_SLOT_ROWS)) / float(DERMIS_PREINTEGRATED_SLOT_ROWS * (DERMIS_MAX_PROFILES + 1));
+}
 
 // The slot's scattered share of one light: D(N.L, curvature) per channel.
 vec3 preintegratedFalloff(sampler2D tables, int slot, float nDotL, float curvaturePerMm) {
     const float rows = float(DERMIS_PREINTEGRATED_CURVATURES);
     float u = 0.5 * clamp(nDotL, -1.0, 1.0) + 0.5;
     float v = sqrt(clamp(curvaturePerMm / float(DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM), 0.0, 1.0));
-    float row = clamp(v * rows, 0.5, rows - 0.5) + float(slot) * rows;
-    return textureLod(tables, vec2(u, row / (rows * float(DERMIS_MAX_PROFILES + 1))), 0.0).rgb;
+    return textureLod(tables, vec2(u, preintegratedV(slot, clamp(v * rows, 0.5, rows - 0.5))), 0.0).rgb;
+}
+
+// Whether the scattered shadow can show at this pixel: the slot's sigma covers
+// DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX on screen. Further away the plain
+// shadow lookup is used: it costs less (it skips most taps where PCSS's
+// blocker search finds nothing), and the scattering is under a pixel.
+bool preintegratedShadowShows(float sigmaMm, vec3 worldPositionM) {
+    float viewDepthM = max(-(uFrame.viewFromWorld * vec4(worldPositionM, 1.0)).z, 1e-4);
+    return sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM >= float(DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX);
+}
+
+// One shadowed light seen by the slot's skin: rgb the light it scatters
+// across the shadow edge, alpha the light's own visibility (SHADOWS above).
+vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D shadowMap, GpuLight light,
+                         vec3 worldPositionM, vec3 N) {
+    vec2 uv;
+    ShadowFrame f;
+    if (!shadowReceiver(light, worldPositionM, N, uv, f)) return vec4(1.0);
+    float sigmaM = sigmaMm * 1e-3;
+    // One map texel: the sharpest edge the map resolves (a delta light's).
+    float halfWidthM = f.metresPerTexel;
+    if (light.area.x > 0.0 && int(light.shadowParams.w + 0.5) == DERMIS_SHADOW_FILTER_PCSS) {
+        halfWidthM = max(pcssPenumbraHalfWidthM(shadowMap, light, f, light.shadowDepth.x), halfWidthM);
+    }
+    // The skin scatters along its surface, so the disc lies in the receiver's
+    // tangent plane, not across the light as PCSS's does; a penumbra across
+    // the light lands on the surface stretched by 1 / cos(N, L) across an
+    // edge that runs perpendicular to the tilt (taken as the usual case: a
+    // terminator's own shadow, a nose's on the cheek).
+    vec3 L = light.positionType.w == float(DERMIS_LIGHT_DIRECTIONAL) ? -light.directionShadow.xyz
+                                                                     : safeNormalize(light.positionType.xyz - worldPositionM, N);
+    halfWidthM /= clamp(dot(N, L), 0.2, 1.0);
+    float q = halfWidthM / (2.0 * sigmaM);
+    float coverage = surfaceDiscPcf(shadowMap, light, f, float(DERMIS_PREINTEGRATED_SHADOW_STDDEVS) * sigmaM * sqrt(1.0 + q * q));
+    const float columns = float(DERMIS_PREINTEGRATED_COSINES);
+    const float rows = float(DERMIS_PREINTEGRATED_SHADOW_ROWS);
+    float u = (coverage * (columns - 1.0) + 0.5) / columns;
+    float row = clamp(q / (1.0 + q) * rows, 0.5, rows - 0.5) + float(DERMIS_PREINTEGRATED_CURVATURES);
+    return textureLod(tables, vec2(u, preintegratedV(slot, row)), 0.0);
 }
 
 #endif

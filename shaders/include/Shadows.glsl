@@ -152,8 +152,10 @@ float tapLit(sampler2D shadowMap, GpuLight light, ShadowFrame f, vec2 offsetTexe
 // PCSS (Fernando 2005) with sizes in texels at the receiver. Directional:
 // penumbra w = (d_receiver - d_blocker) tan(angular diameter), taken as
 // 2 (d_r - d_b) tan(angular radius); spot and point (a sphere of radius R):
-// w = 2 R (d_r - d_b) / d_b, at the receiver's depth.
-float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float nearM) {
+// w = 2 R (d_r - d_b) / d_b, at the receiver's depth. The blocker search
+// returns the penumbra's half-width at the receiver (m), or -1 where it finds
+// no blocker (the receiver sees the whole light).
+float pcssPenumbraHalfWidthM(sampler2D shadowMap, GpuLight light, ShadowFrame f, float nearM) {
     float size = light.area.x;
     float receiverDepthM = lightLinearDepth(light, f.positionM);
     bool orthographic = light.shadowDepth.z > 0.5;
@@ -180,14 +182,18 @@ float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float n
                 blockers += 1.0;
             }
         }
-        if (blockers == 0.0) return 1.0;
+        if (blockers == 0.0) return -1.0;
         float blockerDepthM = max(blockerSumM / blockers, 1e-4);
         halfWidthM = orthographic ? size * max(receiverDepthM - blockerDepthM, 0.0)
                                   : size * max(receiverDepthM - blockerDepthM, 0.0) / blockerDepthM;
         searchTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, searchTexels);
     }
-    // The smallest kernel is one texel: below that the map cannot resolve a penumbra.
-    float radiusTexels = clamp(halfWidthM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS));
+    return halfWidthM;
+}
+
+// The lit share of a disc of radius radiusTexels around the receiver:
+// DERMIS_PCSS_FILTER_SAMPLES fixed taps (no noise).
+float discPcf(sampler2D shadowMap, GpuLight light, ShadowFrame f, float radiusTexels) {
     float lit = 0.0;
     for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; ++i) {
         lit += tapLit(shadowMap, light, f, radiusTexels * vogelDisc(i, DERMIS_PCSS_FILTER_SAMPLES));
@@ -195,16 +201,54 @@ float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float n
     return lit / float(DERMIS_PCSS_FILTER_SAMPLES);
 }
 
-// Fraction of the light that reaches worldPositionM, in [0,1].
-float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, vec2 pixel) {
+// The lit share of a disc of radius radiusM in the receiver's tangent plane
+// (for light that travels along the surface, not across the light as a
+// penumbra does): each tap is tested at its own light-space depth. A tap
+// counts as shadowed only where the map's surface lies nearer the light than
+// the tap by more than the tap's distance from the receiver: a surface that
+// rises above the tangent plane at under 45 degrees (the receiver's own
+// concave neighbourhood: an eye socket, the side of a nose) is the receiver
+// itself, not a blocker; a blocker nearer than that (a contact shadow) is
+// missed.
+float surfaceDiscPcf(sampler2D shadowMap, GpuLight light, ShadowFrame f, float radiusM) {
+    vec3 tangent = normalize(cross(f.N, abs(f.N.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    vec3 bitangent = cross(f.N, tangent);
+    // Every fourth tap first (an even spiral over the whole disc): where they
+    // all agree, the disc is taken as wholly lit or wholly shadowed, and the
+    // other three quarters are skipped, as most pixels lie far from an edge.
+    float lit = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; ++i) {
+            if (((i & 3) == 0) != (pass == 0)) continue;
+            vec2 offset = radiusM * vogelDisc(i, DERMIS_PCSS_FILTER_SAMPLES);
+            vec3 q = f.positionM + offset.x * tangent + offset.y * bitangent;
+            lit += lightLinearDepth(light, q) - f.biasM - length(offset) <= storedDepthM(shadowMap, light, q) ? 1.0 : 0.0;
+        }
+        const float firstTaps = float((DERMIS_PCSS_FILTER_SAMPLES + 3) / 4);
+        if (pass == 0 && (lit == 0.0 || lit == firstTaps)) return lit / firstTaps;
+    }
+    return lit / float(DERMIS_PCSS_FILTER_SAMPLES);
+}
+
+float pcssVisibility(sampler2D shadowMap, GpuLight light, ShadowFrame f, float nearM) {
+    float halfWidthM = pcssPenumbraHalfWidthM(shadowMap, light, f, nearM);
+    if (halfWidthM < 0.0) return 1.0;
+    // The smallest kernel is one texel: below that the map cannot resolve a penumbra.
+    return discPcf(shadowMap, light, f, clamp(halfWidthM / f.metresPerTexel, 1.0, float(DERMIS_PCSS_MAX_RADIUS_TEXELS)));
+}
+
+// Where a receiver lies in a light's map: false where a 2-D map does not
+// cover it (it is lit). uv: its map coordinates (2-D maps); f: its
+// neighbourhood, with the texel footprint and the slope-scaled bias.
+bool shadowReceiver(GpuLight light, vec3 worldPositionM, vec3 N, out vec2 uv, out ShadowFrame f) {
     bool cube = isCubeShadow(light);
-    vec2 uv = vec2(0.0);
+    uv = vec2(0.0);
     if (!cube) {
         vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
-        if (clip.w <= kTiny) return 1.0;
+        if (clip.w <= kTiny) return false;
         vec3 ndc = clip.xyz / clip.w;
         uv = ndc.xy * 0.5 + 0.5;
-        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
     }
 
     float receiverDepthM = lightLinearDepth(light, worldPositionM);
@@ -214,9 +258,31 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
     float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
     // Texel footprint in metres at the receiver: constant for orthographic,
     // growing with distance for perspective maps and cube faces.
-    float texelM = light.shadowParams.z * (light.shadowDepth.z > 0.5 ? 1.0 : max(receiverDepthM, 0.0));
-    float biasM = light.shadowParams.x + light.shadowParams.y * texelM * min(tanTheta, 10.0);
-    float testDepthM = receiverDepthM - biasM;
+    f.metresPerTexel = light.shadowParams.z * (light.shadowDepth.z > 0.5 ? 1.0 : max(receiverDepthM, 0.0));
+    f.biasM = light.shadowParams.x + light.shadowParams.y * f.metresPerTexel * min(tanTheta, 10.0);
+    f.positionM = worldPositionM;
+    f.N = N;
+    // Taps in texels around the receiver: along the map's axes (its clip
+    // matrix's first two rows) for 2-D maps, across the direction to the light for cubes.
+    if (cube) {
+        vec3 d = normalize(worldPositionM - light.positionType.xyz);
+        f.axisU = normalize(cross(d, abs(d.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+        f.axisV = cross(d, f.axisU);
+    } else {
+        mat4 m = light.shadowClipFromWorld;
+        f.axisU = normalize(vec3(m[0][0], m[1][0], m[2][0]));
+        f.axisV = normalize(vec3(m[0][1], m[1][1], m[2][1]));
+    }
+    return true;
+}
+
+// Fraction of the light that reaches worldPositionM, in [0,1].
+float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, vec2 pixel) {
+    vec2 uv;
+    ShadowFrame f;
+    if (!shadowReceiver(light, worldPositionM, N, uv, f)) return 1.0;
+    bool cube = isCubeShadow(light);
+    float testDepthM = lightLinearDepth(light, worldPositionM) - f.biasM;
     int filterId = int(light.shadowParams.w + 0.5);
     bool delta = !(light.area.x > 0.0);
 
@@ -244,22 +310,6 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
         return lit / 16.0;
     }
 
-    // Taps in texels around the receiver: along the map's axes (its clip
-    // matrix's first two rows) for 2-D maps, across the direction to the light for cubes.
-    ShadowFrame f;
-    f.positionM = worldPositionM;
-    f.N = N;
-    f.metresPerTexel = texelM;
-    f.biasM = biasM;
-    if (cube) {
-        vec3 d = normalize(worldPositionM - light.positionType.xyz);
-        f.axisU = normalize(cross(d, abs(d.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
-        f.axisV = cross(d, f.axisU);
-    } else {
-        mat4 m = light.shadowClipFromWorld;
-        f.axisU = normalize(vec3(m[0][0], m[1][0], m[2][0]));
-        f.axisV = normalize(vec3(m[0][1], m[1][1], m[2][1]));
-    }
     if (filterId == DERMIS_SHADOW_FILTER_PCSS && !delta) return pcssVisibility(shadowMap, light, f, light.shadowDepth.x);
     float lit = 0.0;
     if (filterId == DERMIS_SHADOW_FILTER_POISSON) {

@@ -44,12 +44,6 @@
 // The widest PCSS search and filter radius, in shadow-map texels.
 #define DERMIS_PCSS_MAX_RADIUS_TEXELS 256
 
-// Screen-space SSS techniques (settings.sss.technique); C++: SssTechnique.
-#define DERMIS_SSS_TECHNIQUE_GAUSSIANS 0
-#define DERMIS_SSS_TECHNIQUE_SEPARABLE 1
-#define DERMIS_SSS_TECHNIQUE_DISK 2
-#define DERMIS_SSS_TECHNIQUE_PREINTEGRATED 3
-
 // Edge handling of the screen-space SSS blur (SssBlurBlock::edges.x); C++:
 // SssBlur. Bilateral: depth-weighted taps; control: Jimenez et al. 2009's lerp
 // to the centre; fetch-only: the same fetches unweighted (a benchmark floor).
@@ -190,5 +184,17 @@
 #define DERMIS_PREINTEGRATED_COSINES 64
 #define DERMIS_PREINTEGRATED_CURVATURES 64
 #define DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM 1.0
+// Its shadows (engine/sss/PreintegratedShadow.h): per slot, this many rows of
+// DERMIS_PREINTEGRATED_COSINES texels above the slot's falloff rows, x: the shadow
+// map's coverage of a disc around the receiver, y = q / (1 + q), q the light's
+// penumbra half-width over twice the slot's sigma (the widest standard deviation of
+// the Gaussians that carry 10% of a channel); the disc's radius is
+// DERMIS_PREINTEGRATED_SHADOW_STDDEVS sigma sqrt(1 + q^2).
+#define DERMIS_PREINTEGRATED_SHADOW_ROWS 16
+#define DERMIS_PREINTEGRATED_SHADOW_STDDEVS 2.0
+// Below this sigma on screen (pixels) the scattered shadow cannot show, and the
+// lighting pass takes the light's plain shadow lookup, which costs less.
+#define DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX 0.5
+#define DERMIS_PREINTEGRATED_SLOT_ROWS (DERMIS_PREINTEGRATED_CURVATURES + DERMIS_PREINTEGRATED_SHADOW_ROWS)
 
 #endif

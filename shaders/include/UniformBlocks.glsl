@@ -122,7 +122,7 @@ struct ProfileParams {
     vec3 initWeight;       // the SSS accumulation starts with it: the identity plus skipped narrow Gaussians
     int gaussianCount;
     int scattersInLighting;  // 1: technique "preintegrated", the lighting pass reads the slot's table
-    int unused0;
+    float shadowSigmaMm;     // the widest Gaussian's standard deviation x width scale (sss/PreintegratedShadow.h)
     int unused1;
     int unused2;
 };

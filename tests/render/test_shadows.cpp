@@ -19,14 +19,6 @@ using namespace dermis::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kWidth = 320;
-constexpr int kHeight = 180;
-constexpr double kFovDeg = 30.0;
-constexpr double kCameraHeightM = 0.15;
-// The blocker: a horizontal 0.2 m square at this height whose right edge runs
-// along z at x = kBlockerEdgeXM; the floor is a 0.3 m square at y = 0.
-constexpr double kBlockerHeightM = 0.05;
-constexpr double kBlockerEdgeXM = -0.05;
 
 struct EdgeLight {
     std::string json;       // the light's JSON object
@@ -42,7 +34,7 @@ EdgeLight directional(double diameterDeg) {
     l.json = R"({"type": "directional", "direction": [1, -1, 0], "intensity": 1, "angular_diameter_deg": )" +
              std::to_string(diameterDeg) + "}";
     l.angularDiameterDeg = diameterDeg;
-    l.cameraXM = kBlockerEdgeXM + kBlockerHeightM;
+    l.cameraXM = kEdgeBlockerXM + kEdgeBlockerHeightM;
     return l;
 }
 
@@ -53,7 +45,7 @@ EdgeLight lamp(const std::string& type, double radiusM) {
     l.json = R"({"type": ")" + type + R"(", "position_m": [-0.15, 0.25, 0], "direction": [0.5, -1, 0], "intensity": 0.05,
                  "spot_inner_deg": 35, "spot_outer_deg": 40, "radius_m": )" + std::to_string(radiusM) + "}";
     l.radiusM = radiusM;
-    l.cameraXM = kBlockerEdgeXM + (kBlockerEdgeXM - l.positionXY.x) * kBlockerHeightM / (l.positionXY.y - kBlockerHeightM);
+    l.cameraXM = kEdgeBlockerXM + (kEdgeBlockerXM - l.positionXY.x) * kEdgeBlockerHeightM / (l.positionXY.y - kEdgeBlockerHeightM);
     return l;
 }
 
@@ -77,15 +69,15 @@ std::string writeScene(const TempDir& dir, const EdgeLight& light) {
 
 // World x of column `column`'s centre on the floor.
 double floorX(const EdgeLight& light, int column) {
-    const double metresPerPixel = 2.0 * kCameraHeightM * std::tan(0.5 * kFovDeg * kPi / 180.0) / kHeight;
-    return light.cameraXM + (column + 0.5 - 0.5 * kWidth) * metresPerPixel;
+    const double metresPerPixel = 2.0 * kEdgeCameraHeightM * std::tan(0.5 * kEdgeFovDeg * kPi / 180.0) / kEdgeHeight;
+    return light.cameraXM + (column + 0.5 - 0.5 * kEdgeWidth) * metresPerPixel;
 }
 
 // The closed-form visibility at floor x: the light's disc of angular radius
 // alpha cut by the plane through the point and the blocker's edge, at angle
 // delta = theta_edge - theta_light in the x-y plane (support/PenumbraEdge.h).
 double closedForm(const EdgeLight& light, double x) {
-    const double thetaEdge = std::atan2(kBlockerHeightM, kBlockerEdgeXM - x);
+    const double thetaEdge = std::atan2(kEdgeBlockerHeightM, kEdgeBlockerXM - x);
     double thetaLight = 0.75 * kPi;  // towards (-1, 1)
     double sinRadius = std::sin(0.5 * light.angularDiameterDeg * kPi / 180.0);
     if (light.angularDiameterDeg < 0.0) {
@@ -106,13 +98,13 @@ protected:
     Profiles measure(const EdgeLight& light, const std::vector<std::string>& overrides = {}) {
         TempDir dir;
         load(writeScene(dir, light), overrides);
-        const Image image = render(Aov::Diffuse, kWidth, kHeight);
+        const Image image = render(Aov::Diffuse, kEdgeWidth, kEdgeHeight);
         Profiles p;
         if (image.empty()) return p;
-        std::vector<double> row(kWidth, 0.0);
+        std::vector<double> row(kEdgeWidth, 0.0);
         const int rows = 20;
-        for (int y = kHeight / 2 - rows / 2; y < kHeight / 2 + rows / 2; ++y) {
-            for (int x = 0; x < kWidth; ++x) row[x] += image.at(x, y).g / rows;
+        for (int y = kEdgeHeight / 2 - rows / 2; y < kEdgeHeight / 2 + rows / 2; ++y) {
+            for (int x = 0; x < kEdgeWidth; ++x) row[x] += image.at(x, y).g / rows;
         }
         // The unshadowed light: constant for the sun; N.L / d^2 = height / d^3
         // for spot and point lights (inside the spot's inner cone here).
@@ -123,12 +115,12 @@ protected:
         };
         // The lit level: the right tenth of the frame, over 1 cm from the edge.
         double lit = 0.0;
-        for (int x = kWidth * 9 / 10; x < kWidth; ++x) {
-            lit += row[x] / unshadowed(floorX(light, x)) / (kWidth - kWidth * 9 / 10);
+        for (int x = kEdgeWidth * 9 / 10; x < kEdgeWidth; ++x) {
+            lit += row[x] / unshadowed(floorX(light, x)) / (kEdgeWidth - kEdgeWidth * 9 / 10);
         }
         // Only the floor within 12 mm of the geometric edge: further left the
         // camera sees the blocker's lit top.
-        for (int x = 0; x < kWidth; ++x) {
+        for (int x = 0; x < kEdgeWidth; ++x) {
             if (std::fabs(floorX(light, x) - light.cameraXM) > 0.012) continue;
             p.xsM.push_back(floorX(light, x));
             p.measured.push_back(row[x] / (lit * unshadowed(p.xsM.back())));

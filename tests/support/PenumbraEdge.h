@@ -15,6 +15,18 @@
 
 namespace dermis::test {
 
+// The straight-edge scene the shadow tests render (render/test_shadows.cpp,
+// render/test_preintegrated_shadow.cpp): a 0.3 m floor square at y = 0 under a
+// horizontal 0.2 m square blocker at kEdgeBlockerHeightM whose right edge runs
+// along z at x = kEdgeBlockerXM, seen straight down from kEdgeCameraHeightM with
+// a vertical field of view of kEdgeFovDeg, at kEdgeWidth x kEdgeHeight pixels.
+constexpr int kEdgeWidth = 320;
+constexpr int kEdgeHeight = 180;
+constexpr double kEdgeFovDeg = 30.0;
+constexpr double kEdgeCameraHeightM = 0.15;
+constexpr double kEdgeBlockerHeightM = 0.05;
+constexpr double kEdgeBlockerXM = -0.05;
+
 inline double discSegmentVisibility(double t) {
     t = std::clamp(t, -1.0, 1.0);
     return 1.0 - (std::acos(t) - t * std::sqrt(1.0 - t * t)) / 3.14159265358979323846;
