@@ -121,7 +121,7 @@ void main() {
         float nDotL = dot(N, L);
         // Pre-integrated light wraps past the terminator (where D(N.L) > 0).
         if (nDotL <= 0.0 && preintegratedSlot == 0) continue;
-        int slot = int(light.directionShadow.w);
+        int slot = int(light.shadowSlot);
         float visibility = 1.0;
         vec3 diffuseVisibility = vec3(1.0);  // pre-integrated skin: the shadow the profile scatters
         if (slot >= 0) {

@@ -15,8 +15,8 @@ void main() {
     vWorldPositionM = worldPositionM;
     vLightDepthM = lightLinearDepth(light, worldPositionM);
     if (isCubeShadow(light)) {
-        gl_Position = cubeFaceClip(int(uObject.mapping.z + 0.5), worldPositionM - light.positionType.xyz,
-                                   light.shadowDepth.x, light.shadowDepth.y);
+        gl_Position = cubeFaceClip(int(uObject.mapping.z + 0.5), worldPositionM - light.positionM,
+                                   light.shadowNearM, light.shadowFarM);
     } else {
         gl_Position = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
     }

@@ -47,8 +47,8 @@ void main() {
     int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
-        int shadowSlot = int(light.directionShadow.w);
-        if (shadowSlot < 0 || light.shadowDepth.w < 0.5) continue;  // needs a map, and to be behind
+        int shadowSlot = int(light.shadowSlot);
+        if (shadowSlot < 0 || light.backLight < 0.5) continue;  // needs a map, and to be behind
         vec3 L;
         vec3 radiance = incidentRadiance(light, worldPositionM, L);
         float sMm = thicknessMm(uShadowMaps[shadowSlot], light, worldPositionM, N, shrinkMm);

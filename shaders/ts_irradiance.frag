@@ -80,7 +80,7 @@ void main() {
         vec3 radiance = incidentRadiance(light, vWorldPositionM, L);
         float nDotL = dot(N, L);
         if (nDotL <= 0.0) continue;
-        int slot = int(light.directionShadow.w);
+        int slot = int(light.shadowSlot);
         float visibility = 1.0;
         if (slot >= 0) visibility = shadowVisibility(uShadowMaps[slot], light, vWorldPositionM, N, gl_FragCoord.xy);
         float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, nDotL, roughness, rhoS) : 1.0;

@@ -22,7 +22,11 @@ static_assert(sizeof(FrameBlock) == 5 * 64 + 7 * 16, "FrameBlock must match std1
 static_assert(sizeof(CharactersBlock) == (DERMIS_MAX_CHARACTERS + 1) * 16, "CharactersBlock must match std140");
 static_assert(sizeof(ProfileParams) == (DERMIS_MAX_PROFILE_GAUSSIANS + 2) * 16, "ProfileParams must match std140");
 static_assert(sizeof(ProfilesBlock) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 16, "ProfilesBlock must match std140");
-static_assert(sizeof(GpuLight) == 64 + 7 * 16, "GpuLight must match std140");
+static_assert(sizeof(GpuLight) == 64 + 6 * 16, "GpuLight must match std140");
+static_assert(offsetof(GpuLight, type) == 64 + 12 && offsetof(GpuLight, shadowSlot) == 64 + 16 + 12 &&
+                  offsetof(GpuLight, backLight) == 64 + 2 * 16 + 12 && offsetof(GpuLight, spotCosInner) == 64 + 3 * 16 &&
+                  offsetof(GpuLight, shadowFilter) == 64 + 4 * 16 + 12 && offsetof(GpuLight, shadowOrthographic) == 64 + 5 * 16 + 8,
+              "named fields sit at their std140 offsets");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
 static_assert(sizeof(ObjectBlock) == 2 * 64 + (5 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
 static_assert(sizeof(EnvironmentBlock) == 64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,

@@ -33,7 +33,7 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
             [frame, desc, lightIndex = shadow.light, casters = shadow.casters.kept](const graph::PassResources& resources,
                                                                                    const ShadowData& d) {
                 // A point light's map is a 3x2 atlas of cube faces (plan/LightSetup.h): each caster is drawn once per face.
-                const bool cube = frame.plan.lights.block.lights[lightIndex].area.y > 0.5f;
+                const bool cube = frame.plan.lights.block.lights[lightIndex].cubeShadow > 0.5f;
                 const int faces = cube ? 6 : 1;
                 const int faceSize = cube ? static_cast<int>(desc.height) / 2 : 0;
                 gl::Attachments attachments;

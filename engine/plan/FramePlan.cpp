@@ -78,7 +78,7 @@ void markBackLights(const Scene& scene, FramePlan& plan) {
             behind = visibleSss && plan.characters[c].visible &&
                      isBackLight(light, plan.characters[c].worldBounds, scene.camera.positionM);
         }
-        plan.lights.block.lights[index].shadowDepth.w = behind ? 1.0f : 0.0f;
+        plan.lights.block.lights[index].backLight = behind ? 1.0f : 0.0f;
         plan.anyBackLight = plan.anyBackLight || behind;
     }
 }

@@ -52,19 +52,22 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers
             positionM = centre - direction * (radiusM * 2.0f + beyondM);
         }
 
-        g.radiance = glm::vec4(light.colour * light.intensity, 0.0f);
-        g.spot = glm::vec4(std::cos(glm::radians(light.spotInnerDeg)), std::cos(glm::radians(light.spotOuterDeg)), 0, 0);
-        g.directionShadow = glm::vec4(direction, -1.0f);
-        g.positionType = glm::vec4(positionM, float(type));
-        const float size = type == DERMIS_LIGHT_DIRECTIONAL ? std::tan(glm::radians(0.5f * light.angularDiameterDeg))
-                                                            : light.radiusM;
-        g.area = glm::vec4(size, 0.0f, 0.0f, 0.0f);
+        g.radiance = light.colour * light.intensity;
+        g.spotCosInner = std::cos(glm::radians(light.spotInnerDeg));
+        g.spotCosOuter = std::cos(glm::radians(light.spotOuterDeg));
+        g.direction = direction;
+        g.shadowSlot = -1.0f;
+        g.positionM = positionM;
+        g.type = float(type);
+        g.size = type == DERMIS_LIGHT_DIRECTIONAL ? std::tan(glm::radians(0.5f * light.angularDiameterDeg)) : light.radiusM;
 
         const bool canShadow =
             light.castsShadow && static_cast<int>(setup.shadowedLights.size()) < DERMIS_MAX_SHADOWED_LIGHTS;
         if (!canShadow) continue;
-        g.shadowParams = glm::vec4(shadows.biasConstantM, shadows.biasSlopeTexels, 0.0f, float(shadows.filter));
-        g.directionShadow.w = float(setup.shadowedLights.size());
+        g.shadowBiasM = shadows.biasConstantM;
+        g.shadowSlopeBiasTexels = shadows.biasSlopeTexels;
+        g.shadowFilter = float(shadows.filter);
+        g.shadowSlot = float(setup.shadowedLights.size());
         setup.shadowedLights.push_back(i);
         if (type == DERMIS_LIGHT_POINT) {
             // Cube faces: every caster lies beyond the nearer of the receivers' sphere and
@@ -72,9 +75,10 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers
             const float distanceM = glm::length(centre - positionM);
             const float nearestM = std::min(distanceM - radiusM, distanceToBox(reach, positionM));
             const float nearM = std::max(nearestM * 0.5f, 1e-3f);
-            g.shadowDepth = glm::vec4(nearM, std::max(distanceM + radiusM, nearM + 0.01f), 0.0f, 0.0f);
-            g.shadowParams.z = 2.0f / float(cubeShadowFaceSize(shadows.mapSize));  // per metre of distance
-            g.area.y = 1.0f;
+            g.shadowNearM = nearM;
+            g.shadowFarM = std::max(distanceM + radiusM, nearM + 0.01f);
+            g.shadowTexelM = 2.0f / float(cubeShadowFaceSize(shadows.mapSize));  // per metre of distance
+            g.cubeShadow = 1.0f;
             g.shadowClipFromWorld = glm::mat4(1.0f);  // unused: the faces' projections are the shaders'
             continue;
         }
@@ -96,8 +100,10 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers
             texelM = 2.0f * std::tan(halfAngleRad) / float(shadows.mapSize);  // per metre of depth
         }
         g.shadowClipFromWorld = clipFromLight * lightFromWorld;
-        g.shadowParams.z = texelM;
-        g.shadowDepth = glm::vec4(nearM, farM, type == DERMIS_LIGHT_DIRECTIONAL ? 1.0f : 0.0f, 0.0f);
+        g.shadowTexelM = texelM;
+        g.shadowNearM = nearM;
+        g.shadowFarM = farM;
+        g.shadowOrthographic = type == DERMIS_LIGHT_DIRECTIONAL ? 1.0f : 0.0f;
     }
     return setup;
 }

@@ -8,7 +8,7 @@
 // "position" sits behind the bounds; spot lights a perspective frustum of
 // their outer cone; point lights a cube map of the distance to the light, its
 // six 90-degree faces in one 3x2 atlas (cubeShadowFaceSize), taking one of the
-// DERMIS_MAX_SHADOWED_LIGHTS slots like any other map. GpuLight.area carries
+// DERMIS_MAX_SHADOWED_LIGHTS slots like any other map. GpuLight.size carries
 // the light's size for the PCSS filter (docs/shadows.md).
 
 #include "gpu/UniformBlocks.h"

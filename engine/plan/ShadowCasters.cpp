@@ -69,8 +69,8 @@ ShadowCasters chooseShadowCasters(const gpu::GpuLight& light, const std::vector<
     const size_t count = std::min(bounds.size(), visible.size());
     ShadowCasters out;
     out.culledBecause.assign(count, "");
-    const bool directional = int(light.positionType.w) == DERMIS_LIGHT_DIRECTIONAL;
-    const glm::vec3 direction(light.directionShadow);
+    const bool directional = int(light.type) == DERMIS_LIGHT_DIRECTIONAL;
+    const glm::vec3 direction = light.direction;
     // The map's axes, as the shader takes them: the first two rows of its clip matrix.
     const glm::mat4& m = light.shadowClipFromWorld;
     const glm::vec3 axisU = glm::normalize(glm::vec3(m[0][0], m[1][0], m[2][0]));
@@ -85,9 +85,9 @@ ShadowCasters chooseShadowCasters(const gpu::GpuLight& light, const std::vector<
         bool keep = visible[c];
         for (size_t r = 0; r < count && !keep; ++r) {
             if (!visible[r]) continue;
-            keep = directional ? shadesDirectional(boxes[c], boxes[r], light.area.x, light.shadowParams.z)
-                               : shadesFromPoint(bounds[c], bounds[r], glm::vec3(light.positionType), light.area.x,
-                                                 light.shadowParams.z);
+            keep = directional ? shadesDirectional(boxes[c], boxes[r], light.size, light.shadowTexelM)
+                               : shadesFromPoint(bounds[c], bounds[r], light.positionM, light.size,
+                                                 light.shadowTexelM);
         }
         if (!keep) {
             out.culledBecause[c] = !anyReceiver  ? "no character on screen to receive its shadow"

@@ -43,8 +43,8 @@ int chooseTsmLight(const Scene& scene, const LightSetup& lights, const Bounds& b
 void fitTsm(const gpu::GpuLight& light, const Bounds& bounds, TsCharacterPlan& plan) {
     const glm::vec3 centre = bounds.centre();
     const float radiusM = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
-    const glm::vec3 direction = glm::vec3(light.directionShadow);
-    if (int(light.positionType.w) == DERMIS_LIGHT_DIRECTIONAL) {
+    const glm::vec3 direction = light.direction;
+    if (int(light.type) == DERMIS_LIGHT_DIRECTIONAL) {
         const glm::vec3 eye = centre - direction * (2.0f * radiusM);
         plan.tsmClipFromWorld = glm::ortho(-radiusM, radiusM, -radiusM, radiusM, 0.5f * radiusM, 3.5f * radiusM) *
                                 glm::lookAt(eye, centre, anyUp(direction));
@@ -53,7 +53,7 @@ void fitTsm(const gpu::GpuLight& light, const Bounds& bounds, TsCharacterPlan& p
         plan.tsmAlongAxis = true;
         return;
     }
-    const glm::vec3 position = glm::vec3(light.positionType);
+    const glm::vec3 position = light.positionM;
     const float distanceM = glm::length(centre - position);
     plan.tsmOriginM = position;
     plan.tsmAlongAxis = false;
@@ -67,7 +67,7 @@ void fitTsm(const gpu::GpuLight& light, const Bounds& bounds, TsCharacterPlan& p
         return;
     }
     // The light is inside the bounds: its own cone.
-    const float halfAngle = std::acos(std::clamp(light.spot.y, 0.02f, 0.999f));
+    const float halfAngle = std::acos(std::clamp(light.spotCosOuter, 0.02f, 0.999f));
     plan.tsmAxis = direction;
     plan.tsmClipFromWorld = glm::perspective(2.0f * halfAngle, 1.0f, 1e-3f, distanceM + radiusM) *
                             glm::lookAt(position, position + direction, anyUp(direction));

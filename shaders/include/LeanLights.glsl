@@ -57,7 +57,7 @@ vec3 leanPixelSpecular(ivec2 pixel, vec2 uv, float depth, vec4 lightingSpecular,
     for (int i = 0; i < lightCount; ++i) {
         GpuLight light = uLights.lights[i];
         vec3 L;
-        int slot = int(light.directionShadow.w);
+        int slot = int(light.shadowSlot);
         float shadow = slot >= 0 ? lit[slot] : 1.0;
         if (shadow <= 0.0) continue;
         vec3 radiance = incidentRadiance(light, worldPositionM, L);

@@ -93,16 +93,16 @@ vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D sh
     float sigmaM = sigmaMm * 1e-3;
     // One map texel: the sharpest edge the map resolves (a delta light's).
     float halfWidthM = f.metresPerTexel;
-    if (light.area.x > 0.0 && int(light.shadowParams.w + 0.5) == DERMIS_SHADOW_FILTER_PCSS) {
-        halfWidthM = max(pcssPenumbraHalfWidthM(shadowMap, light, f, light.shadowDepth.x), halfWidthM);
+    if (light.size > 0.0 && int(light.shadowFilter + 0.5) == DERMIS_SHADOW_FILTER_PCSS) {
+        halfWidthM = max(pcssPenumbraHalfWidthM(shadowMap, light, f, light.shadowNearM), halfWidthM);
     }
     // The skin scatters along its surface, so the disc lies in the receiver's
     // tangent plane, not across the light as PCSS's does; a penumbra across
     // the light lands on the surface stretched by 1 / cos(N, L) across an
     // edge that runs perpendicular to the tilt (taken as the usual case: a
     // terminator's own shadow, a nose's on the cheek).
-    vec3 L = light.positionType.w == float(DERMIS_LIGHT_DIRECTIONAL) ? -light.directionShadow.xyz
-                                                                     : safeNormalize(light.positionType.xyz - worldPositionM, N);
+    vec3 L = light.type == float(DERMIS_LIGHT_DIRECTIONAL) ? -light.direction
+                                                                     : safeNormalize(light.positionM - worldPositionM, N);
     halfWidthM /= clamp(dot(N, L), 0.2, 1.0);
     float q = halfWidthM / (2.0 * sigmaM);
     float coverage = surfaceDiscPcf(shadowMap, light, f, float(DERMIS_PREINTEGRATED_SHADOW_STDDEVS) * sigmaM * sqrt(1.0 + q * q));

@@ -3,18 +3,18 @@
 // The shadow pass stores linear depth in metres (R32F): along the light's axis
 // for directional and spot lights (a 2-D map), the distance to the light for
 // point lights (a cube map of six faces laid out 3x2 in one 2-D atlas,
-// GpuLight.area.y = 1). The same maps serve shadows and the transmittance
+// GpuLight.cubeShadow = 1). The same maps serve shadows and the transmittance
 // thickness. A receiver is lit where its own light-space depth minus the bias
 // is no further than the stored occluder depth. The bias is slope-scaled:
 // constant + slope * texel footprint * tan(angle between N and L)
 // (Papanikolaou 2013 §3).
 //
-// Filters (GpuLight.shadowParams.w, DERMIS_SHADOW_FILTER_*):
+// Filters (GpuLight.shadowFilter, DERMIS_SHADOW_FILTER_*):
 //   PCF4X4: a 4x4 grid of taps, box-weighted (Chappuis 2011 §2.4);
 //   POISSON: 16 Poisson-disc taps rotated per pixel by interleaved gradient noise
 //      (Papanikolaou 2013 §3), trading banding for noise;
 //   PCSS: percentage-closer soft shadows (Fernando 2005) for lights with a size
-//      (GpuLight.area.x): a blocker search over the region the light's size
+//      (GpuLight.size): a blocker search over the region the light's size
 //      sets, the penumbra width the mean blocker depth implies, then PCF over a
 //      disc of that width with DERMIS_PCSS_FILTER_SAMPLES fixed taps (no noise).
 //      A delta light's exact shadow has a hard edge: PCSS gives it the sharpest
@@ -49,13 +49,13 @@ vec2 vogelDisc(int i, int count) {
     return r * vec2(cos(theta), sin(theta));
 }
 
-bool isCubeShadow(GpuLight light) { return light.area.y > 0.5; }
+bool isCubeShadow(GpuLight light) { return light.cubeShadow > 0.5; }
 
 // Light-space linear depth (metres) of a world position: along the light's
 // axis for 2-D maps, the distance to the light for cube maps.
 float lightLinearDepth(GpuLight light, vec3 worldPositionM) {
-    if (isCubeShadow(light)) return length(worldPositionM - light.positionType.xyz);
-    return dot(worldPositionM - light.positionType.xyz, light.directionShadow.xyz);
+    if (isCubeShadow(light)) return length(worldPositionM - light.positionM);
+    return dot(worldPositionM - light.positionM, light.direction);
 }
 
 // Cube faces 0..5 (+x, -x, +y, -y, +z, -z): the axis each looks along and the
@@ -72,7 +72,7 @@ int cubeFace(vec3 d) {
 }
 
 // Clip position of the offset d (world, from the light) on face `face`: a 90-degree
-// perspective between near and far (GpuLight.shadowDepth.xy).
+// perspective between near and far (GpuLight.shadowNearM, shadowFarM).
 vec4 cubeFaceClip(int face, vec3 d, float nearM, float farM) {
     float w = dot(d, kCubeAxis[face]);
     float z = (farM + nearM) / (farM - nearM) * w - 2.0 * farM * nearM / (farM - nearM);
@@ -91,7 +91,7 @@ vec2 cubeAtlasUv(sampler2D atlas, vec3 d) {
 // The stored occluder depth where the world position p projects; a large
 // depth (unoccluded) outside a 2-D map.
 float storedDepthM(sampler2D shadowMap, GpuLight light, vec3 p) {
-    if (isCubeShadow(light)) return texture(shadowMap, cubeAtlasUv(shadowMap, p - light.positionType.xyz)).r;
+    if (isCubeShadow(light)) return texture(shadowMap, cubeAtlasUv(shadowMap, p - light.positionM)).r;
     vec4 clip = light.shadowClipFromWorld * vec4(p, 1.0);
     if (clip.w <= kTiny) return 1e30;
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
@@ -128,16 +128,16 @@ struct ShadowFrame {
 // The receiver plane's light-space depth along the ray through q, minus the bias.
 float planeTestDepthM(GpuLight light, ShadowFrame f, vec3 q) {
     float receiverDepthM = lightLinearDepth(light, f.positionM);
-    if (light.shadowDepth.z > 0.5) {
+    if (light.shadowOrthographic > 0.5) {
         // Orthographic: the ray runs along the axis from q.
-        float along = dot(f.N, light.directionShadow.xyz);
+        float along = dot(f.N, light.direction);
         float deltaM = abs(along) > 0.05 ? dot(f.N, f.positionM - q) / along : 0.0;
         return receiverDepthM + deltaM - f.biasM;
     }
-    vec3 fromLight = q - light.positionType.xyz;
+    vec3 fromLight = q - light.positionM;
     float toPlane = dot(f.N, fromLight);
-    float scale = abs(toPlane) > 0.05 * length(fromLight) ? dot(f.N, f.positionM - light.positionType.xyz) / toPlane : 1.0;
-    return lightLinearDepth(light, light.positionType.xyz + fromLight * scale) - f.biasM;
+    float scale = abs(toPlane) > 0.05 * length(fromLight) ? dot(f.N, f.positionM - light.positionM) / toPlane : 1.0;
+    return lightLinearDepth(light, light.positionM + fromLight * scale) - f.biasM;
 }
 
 vec3 tapPosition(ShadowFrame f, vec2 offsetTexels) {
@@ -156,9 +156,9 @@ float tapLit(sampler2D shadowMap, GpuLight light, ShadowFrame f, vec2 offsetTexe
 // returns the penumbra's half-width at the receiver (m), or -1 where it finds
 // no blocker (the receiver sees the whole light).
 float pcssPenumbraHalfWidthM(sampler2D shadowMap, GpuLight light, ShadowFrame f, float nearM) {
-    float size = light.area.x;
+    float size = light.size;
     float receiverDepthM = lightLinearDepth(light, f.positionM);
-    bool orthographic = light.shadowDepth.z > 0.5;
+    bool orthographic = light.shadowOrthographic > 0.5;
     // Blocker search: a blocker at depth z hides part of the light from the
     // receiver if it lies within the light's cone from the receiver, whose
     // radius at z, measured at the receiver's depth, is largest at the near plane.
@@ -252,20 +252,20 @@ bool shadowReceiver(GpuLight light, vec3 worldPositionM, vec3 N, out vec2 uv, ou
     }
 
     float receiverDepthM = lightLinearDepth(light, worldPositionM);
-    vec3 L = -light.directionShadow.xyz;
-    if (light.positionType.w != float(DERMIS_LIGHT_DIRECTIONAL)) L = safeNormalize(light.positionType.xyz - worldPositionM, N);
+    vec3 L = -light.direction;
+    if (light.type != float(DERMIS_LIGHT_DIRECTIONAL)) L = safeNormalize(light.positionM - worldPositionM, N);
     float cosTheta = clamp(dot(N, L), 0.05, 1.0);
     float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
     // Texel footprint in metres at the receiver: constant for orthographic,
     // growing with distance for perspective maps and cube faces.
-    f.metresPerTexel = light.shadowParams.z * (light.shadowDepth.z > 0.5 ? 1.0 : max(receiverDepthM, 0.0));
-    f.biasM = light.shadowParams.x + light.shadowParams.y * f.metresPerTexel * min(tanTheta, 10.0);
+    f.metresPerTexel = light.shadowTexelM * (light.shadowOrthographic > 0.5 ? 1.0 : max(receiverDepthM, 0.0));
+    f.biasM = light.shadowBiasM + light.shadowSlopeBiasTexels * f.metresPerTexel * min(tanTheta, 10.0);
     f.positionM = worldPositionM;
     f.N = N;
     // Taps in texels around the receiver: along the map's axes (its clip
     // matrix's first two rows) for 2-D maps, across the direction to the light for cubes.
     if (cube) {
-        vec3 d = normalize(worldPositionM - light.positionType.xyz);
+        vec3 d = normalize(worldPositionM - light.positionM);
         f.axisU = normalize(cross(d, abs(d.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
         f.axisV = cross(d, f.axisU);
     } else {
@@ -283,8 +283,8 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
     if (!shadowReceiver(light, worldPositionM, N, uv, f)) return 1.0;
     bool cube = isCubeShadow(light);
     float testDepthM = lightLinearDepth(light, worldPositionM) - f.biasM;
-    int filterId = int(light.shadowParams.w + 0.5);
-    bool delta = !(light.area.x > 0.0);
+    int filterId = int(light.shadowFilter + 0.5);
+    bool delta = !(light.size > 0.0);
 
     if (!cube && filterId == DERMIS_SHADOW_FILTER_PCSS && delta) return bilinearPcf(shadowMap, uv, testDepthM);
     if (!cube && filterId == DERMIS_SHADOW_FILTER_PCF4X4) {
@@ -310,7 +310,7 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
         return lit / 16.0;
     }
 
-    if (filterId == DERMIS_SHADOW_FILTER_PCSS && !delta) return pcssVisibility(shadowMap, light, f, light.shadowDepth.x);
+    if (filterId == DERMIS_SHADOW_FILTER_PCSS && !delta) return pcssVisibility(shadowMap, light, f, light.shadowNearM);
     float lit = 0.0;
     if (filterId == DERMIS_SHADOW_FILTER_POISSON) {
         float angle = 6.2831853 * interleavedGradientNoise(pixel);

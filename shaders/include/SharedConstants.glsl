@@ -28,12 +28,12 @@
 #define DERMIS_MAX_DISK_SAMPLES 128
 #define DERMIS_MAX_SCREEN_REGIONS 64     // rectangles one fullscreen draw may cover (engine/plan/ScreenRegions.h)
 
-// Light types (GpuLight::positionType.w); C++: LightType.
+// Light types (GpuLight::type); C++: LightType.
 #define DERMIS_LIGHT_DIRECTIONAL 0
 #define DERMIS_LIGHT_SPOT 1
 #define DERMIS_LIGHT_POINT 2
 
-// Shadow filters (GpuLight::shadowParams.w); C++: ShadowFilter.
+// Shadow filters (GpuLight::shadowFilter); C++: ShadowFilter.
 #define DERMIS_SHADOW_FILTER_PCF4X4 0
 #define DERMIS_SHADOW_FILTER_POISSON 1
 #define DERMIS_SHADOW_FILTER_PCSS 2

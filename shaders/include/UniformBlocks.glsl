@@ -5,9 +5,10 @@
 // with `#include "UniformBlocks.glsl"`. Layout is std140, so:
 //   - members are vec4, ivec4 and mat4, or named scalars and vec2s in
 //     groups that fill 16 bytes each (a vec2 and two scalars, or four
-//     scalars), so that C++ and std140 place every one at the same offset;
-//     the frame, light, object, environment and texture-space blocks still
-//     pack scalars into vec4s, with a comment saying which component is what;
+//     scalars, or a vec3 and one scalar), so that C++ and std140 place every
+//     one at the same offset; the frame, object, environment and
+//     texture-space blocks still pack scalars into vec4s, with a comment
+//     saying which component is what;
 //   - arrays only of vec4 or of structs made of them.
 // Matrix names read destination-from-source: clipFromWorld maps world-space
 // positions to clip space.
@@ -67,16 +68,27 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     float materialMipBias;   // of the material maps (0 but in tests)
 } DERMIS_BLOCK_END(uFrame)
 
+// Every field is a float (ids too) so that plan/ShadowCache.cpp can key on the raw floats.
 struct GpuLight {
     mat4 shadowClipFromWorld;  // light's clip space, for shadow-map lookups
-    vec4 positionType;         // xyz: position (metres), w: DERMIS_LIGHT_* type
-    vec4 directionShadow;      // xyz: unit direction the light travels, w: shadow-map slot or -1
-    vec4 radiance;             // rgb: colour * intensity
-    vec4 spot;                 // x: cos(inner), y: cos(outer)
-    vec4 shadowParams;         // x: constant bias (m), y: slope bias (texels), z: texel size (m at 1 m / ortho), w: filter (DERMIS_SHADOW_FILTER_*)
-    vec4 shadowDepth;          // x: near (m), y: far (m), z: orthographic (1) or perspective (0), w: back light (1/0), for transmittance
-    vec4 area;                 // x: size, 0 for a delta light: directional tan(angular radius), spot/point sphere radius (m);
-                               // y: the shadow map is a point light's cube atlas (1/0)
+    vec3 positionM;
+    float type;                // DERMIS_LIGHT_*
+    vec3 direction;            // unit direction the light travels
+    float shadowSlot;          // shadow-map slot, or -1
+    vec3 radiance;             // colour * intensity
+    float backLight;           // 1: a back light, for the transmittance (plan/FramePlan.cpp)
+    float spotCosInner;
+    float spotCosOuter;
+    float size;                // 0 for a delta light; directional: tan(angular radius); spot, point: sphere radius (m)
+    float cubeShadow;          // 1: the shadow map is a point light's cube atlas
+    float shadowBiasM;         // constant
+    float shadowSlopeBiasTexels;
+    float shadowTexelM;        // texel size: m at 1 m (perspective) or m (orthographic)
+    float shadowFilter;        // DERMIS_SHADOW_FILTER_*
+    float shadowNearM;
+    float shadowFarM;
+    float shadowOrthographic;  // 1: orthographic (directional), 0: perspective
+    float unused0;
 };
 
 DERMIS_BLOCK(LightsBlock, DERMIS_BINDING_LIGHTS) {

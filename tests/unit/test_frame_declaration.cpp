@@ -374,9 +374,9 @@ TEST(FrameDeclaration, ShadowMapsAreFittedToTheVisibleCharactersAlone) {
     const gpu::GpuLight& sunAlone = alone.plan().lights.block.lights[0];
     const Bounds& caster = withCrowd.plan().characters[1].worldBounds;
     for (const glm::vec3 corner : {caster.min, caster.max}) {
-        EXPECT_GE(glm::dot(corner - glm::vec3(sun.positionType), glm::vec3(sun.directionShadow)), sun.shadowDepth.x);
+        EXPECT_GE(glm::dot(corner - sun.positionM, sun.direction), sun.shadowNearM);
     }
-    EXPECT_EQ(sun.shadowParams.z, sunAlone.shadowParams.z);  // the same texels: the box is the head's
+    EXPECT_EQ(sun.shadowTexelM, sunAlone.shadowTexelM);  // the same texels: the box is the head's
     // With nothing on screen, no map is drawn.
     DeclaredFrames away = crowd(1, kLookAway);
     ASSERT_TRUE(away.declare());

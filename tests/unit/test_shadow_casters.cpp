@@ -85,11 +85,11 @@ TEST(ShadowCasters, TheMapReachesTheKeptCastersAndStaysTheReceiversAcross) {
     const gpu::GpuLight alone = setupLights({sun()}, receiver, shadows).block.lights[0];
     const gpu::GpuLight reaching = setupLights({sun()}, receiver, shadows, {Bounds{receiver.min, caster.max}}).block.lights[0];
     const auto depthOf = [](const gpu::GpuLight& g, const glm::vec3& p) {
-        return glm::dot(p - glm::vec3(g.positionType), glm::vec3(g.directionShadow));
+        return glm::dot(p - g.positionM, g.direction);
     };
-    EXPECT_GE(depthOf(reaching, caster.max), reaching.shadowDepth.x);  // the caster's top is inside
-    EXPECT_LT(depthOf(alone, caster.max), alone.shadowDepth.x);        // it was before the near plane
-    EXPECT_FLOAT_EQ(reaching.shadowParams.z, alone.shadowParams.z);    // the same texels across
+    EXPECT_GE(depthOf(reaching, caster.max), reaching.shadowNearM);  // the caster's top is inside
+    EXPECT_LT(depthOf(alone, caster.max), alone.shadowNearM);        // it was before the near plane
+    EXPECT_FLOAT_EQ(reaching.shadowTexelM, alone.shadowTexelM);    // the same texels across
     // Casters inside the receivers' sphere change nothing.
     const gpu::GpuLight inside = setupLights({sun()}, receiver, shadows, {receiver}).block.lights[0];
     EXPECT_EQ(0, std::memcmp(&inside, &alone, sizeof inside));
