@@ -27,7 +27,7 @@ vec4 component(ivec2 pixel) {
 // centred, v upwards; each pixel shows the texel under its centre (no
 // filtering: chart borders stay sharp). False outside the square.
 bool uvLayoutTexel(ivec2 pixel, out vec4 texel) {
-    vec2 frameSize = uFrame.viewport.xy;
+    vec2 frameSize = uFrame.viewportPx;
     float side = min(frameSize.x, frameSize.y);
     vec2 uv = (vec2(pixel) + 0.5 - 0.5 * (frameSize - side)) / side;
     texel = vec4(0.0);
@@ -57,7 +57,7 @@ void shade() {
     vec3 value = vec3(0.0);
     if (aov == DERMIS_AOV_DEPTH) {
         // Linear view depth in metres; the far plane for the background.
-        value = vec3(background ? uFrame.depthRangeM.y : -viewPositionFromDepth(vUv, depth, uFrame.viewFromClip).z);
+        value = vec3(background ? uFrame.farM : -viewPositionFromDepth(vUv, depth, uFrame.viewFromClip).z);
     } else if (aov == DERMIS_AOV_AO) {
         value = vec3(background ? 1.0 : component(pixel).r);
     } else if (!background) {

@@ -25,6 +25,6 @@ void main() {
     const int index = gl_VertexID - 3;
     const ivec4 region = uScreenRegions.regions[index / 6];
     const vec2 pixel = vec2(region.xy) + kQuadCorners[index % 6] * vec2(region.zw);
-    vUv = pixel * uFrame.viewport.zw;
+    vUv = pixel * uFrame.pixelSizeUv;
     gl_Position = vec4(vUv * 2.0 - 1.0, 0.0, 1.0);
 }

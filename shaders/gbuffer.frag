@@ -85,7 +85,7 @@ float curvaturePerMm() {
 void main() {
     float mipBias = uFrame.materialMipBias;
     vec3 albedo = materialAlbedo(uAlbedoMap, vUv, vColour, mipBias);
-    bool hasMaps = uObject.material.w > 0.5;
+    bool hasMaps = uObject.hasNormalMap > 0.5;
     float roughness = materialRoughness(vUv, mipBias);
 
     vec3 N = safeNormalize(vViewNormal, vec3(0.0, 0.0, 1.0));
@@ -117,13 +117,12 @@ void main() {
     }
 #endif
 
-    oAlbedo = debugPlant(vec4(albedo, uObject.material.y / 255.0));
+    oAlbedo = debugPlant(vec4(albedo, uObject.objectId / 255.0));
     oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(vUv, mipBias));
-    int slot = int(uObject.surface.x + 0.5);
+    int slot = int(uObject.profileSlot + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
-    vec4 scattering = uObject.scattering;
-    float scatter = scattering.x * (scattering.y > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
-    float thicknessMm = scattering.z * (scattering.w > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
+    float scatter = uObject.scatteringShare * (uObject.hasScatterMap > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
+    float thicknessMm = uObject.thicknessMm * (uObject.hasThicknessMap > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
     // The curvature only for frames that read it (a uniform branch).
     float curvature = uProfiles.anyScattersInLighting != 0 ? curvaturePerMm() : 0.0;
     oScatter = vec4(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0), curvature, float(slot));

@@ -22,7 +22,7 @@ void main() {
     mat3 viewFromWorld3 = mat3(uFrame.viewFromWorld);
     vViewNormal = viewFromWorld3 * (mat3(uObject.normalWorldFromObject) * aNormal);
     vViewTangent = vec4(viewFromWorld3 * (mat3(uObject.worldFromObject) * aTangent.xyz), aTangent.w);
-    vUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
+    vUv = uObject.flipV > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
     vViewPositionM = (uFrame.viewFromWorld * worldPosition).xyz;
     vColour = aColour.rgb;
 #ifdef GBUFFER_TRANSFER

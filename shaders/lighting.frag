@@ -67,7 +67,7 @@ void main() {
 #ifdef LIGHTING_LEAN
     // Characters with LEAN maps take their specular from the LEAN lobe later.
     int objectId = clamp(int(albedoId.a * 255.0 + 0.5), 0, DERMIS_MAX_CHARACTERS);
-    bool keepSpecular = uCharacters.characters[objectId].params.w < 0.5;
+    bool keepSpecular = uCharacters.characters[objectId].hasLeanMaps < 0.5;
 #else
     const bool keepSpecular = true;
 #endif

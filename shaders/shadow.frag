@@ -10,6 +10,6 @@ in float vLightDepthM;
 layout(location = 0) out float oDepthM;
 
 void main() {
-    GpuLight light = uLights.lights[int(uObject.mapping.y)];
+    GpuLight light = uLights.lights[int(uObject.lightIndex)];
     oDepthM = debugPlant(isCubeShadow(light) ? lightLinearDepth(light, vWorldPositionM) : vLightDepthM);
 }

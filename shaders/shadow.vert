@@ -10,12 +10,12 @@ out vec3 vWorldPositionM;
 out float vLightDepthM;
 
 void main() {
-    GpuLight light = uLights.lights[int(uObject.mapping.y)];
+    GpuLight light = uLights.lights[int(uObject.lightIndex)];
     vec3 worldPositionM = (uObject.worldFromObject * vec4(aPosition, 1.0)).xyz;
     vWorldPositionM = worldPositionM;
     vLightDepthM = lightLinearDepth(light, worldPositionM);
     if (isCubeShadow(light)) {
-        gl_Position = cubeFaceClip(int(uObject.mapping.z + 0.5), worldPositionM - light.positionM,
+        gl_Position = cubeFaceClip(int(uObject.cubeFace + 0.5), worldPositionM - light.positionM,
                                    light.shadowNearM, light.shadowFarM);
     } else {
         gl_Position = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);

@@ -16,6 +16,6 @@ void main() {
     vec4 viewPoint = uFrame.viewFromClip * vec4(vUv * 2.0 - 1.0, 1.0, 1.0);
     vec3 worldDirection = safeNormalize(mat3(uFrame.worldFromView) * (viewPoint.xyz / viewPoint.w), vec3(0.0, 0.0, -1.0));
     vec3 mapDirection = mat3(uEnvironment.mapFromWorld) * worldDirection;
-    vec3 radiance = textureLod(uBackground, latLongUv(mapDirection), 0.0).rgb * uEnvironment.params.w;
+    vec3 radiance = textureLod(uBackground, latLongUv(mapDirection), 0.0).rgb * uEnvironment.intensity;
     oColour = vec4(sanitizeColour(radiance), 1.0);
 }

@@ -10,8 +10,8 @@
 //     unit 0  uDepth           G-buffer D24S8 depth (sampled as depth)
 //     unit 1  uNormalMaterial  G-buffer RGBA16F, xy = octahedral VIEW-space normal
 //     unit 2  uAlbedo          G-buffer RGBA16F, a = object id / 255 (0 = background)
-//     FrameBlock       viewFromClip, clipFromView, viewport, ssaoStrength
-//     CharactersBlock  characters[id].params: y = radius (m), z = sample count
+//     FrameBlock       viewFromClip, clipFromView, viewportPx, pixelSizeUv, ssaoStrength
+//     CharactersBlock  characters[id].ssaoRadiusM, ssaoSamples
 //     SsaoBlock        (DERMIS_BINDING_PASS) fallbacks and biases, see below
 //   Output: AO in [0, 1], 1 = unoccluded. It multiplies only the ambient /
 //   environment term of the lighting, never direct light.
@@ -90,7 +90,7 @@ float interleavedGradientNoise(vec2 pixel) {
 }
 
 vec3 viewPositionAt(ivec2 texel, float depth) {
-    vec2 uv = (vec2(texel) + 0.5) * uFrame.viewport.zw;
+    vec2 uv = (vec2(texel) + 0.5) * uFrame.pixelSizeUv;
     return viewPositionFromDepth(uv, depth, uFrame.viewFromClip);
 }
 
@@ -108,9 +108,9 @@ float ambientOcclusion(ivec2 pixel) {
     int objectId = int(texelFetch(uAlbedo, pixel, 0).a * 255.0 + 0.5);
     if (objectId <= 0 || objectId > DERMIS_MAX_CHARACTERS) return 1.0;
 
-    vec4 params = uCharacters.characters[objectId].params;
-    float radiusM = params.y > 0.0 ? params.y : uSsao.radiusM;
-    float sampleCount = params.z >= 1.0 ? params.z : uSsao.samples;
+    CharacterParams character = uCharacters.characters[objectId];
+    float radiusM = character.ssaoRadiusM > 0.0 ? character.ssaoRadiusM : uSsao.radiusM;
+    float sampleCount = character.ssaoSamples >= 1.0 ? character.ssaoSamples : uSsao.samples;
     float strength = clamp(uFrame.ssaoStrength, 0.0, 1.0);  // NaN clamps to an end; both are finite
     if (!(radiusM > 0.0) || !(sampleCount >= 1.0) || !(strength > 0.0)) return 1.0;
     radiusM = min(radiusM, kMaxRadiusM);
@@ -140,7 +140,7 @@ float ambientOcclusion(ivec2 pixel) {
         if (!(clip.w > kTiny)) continue;  // behind the camera
         vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
         if (!(all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0))))) continue;
-        ivec2 texel = ivec2(uv * uFrame.viewport.xy);
+        ivec2 texel = ivec2(uv * uFrame.viewportPx);
         float occluderDepth = texelFetch(uDepth, texel, 0).r;
         if (!(occluderDepth < 1.0)) continue;  // background never occludes
         vec3 Q = viewPositionAt(texel, occluderDepth);

@@ -51,11 +51,11 @@ const float kResolvedTexels = 1.0;
 
 void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
-    if (objectId != int(uObject.material.y + 0.5)) discard;
+    if (objectId != int(uObject.objectId + 0.5)) discard;
     float viewDepthM = -(uFrame.viewFromWorld * vec4(vWorldPositionM, 1.0)).z;
     uint key = texelFetch(uDepthKey, ivec2(gl_FragCoord.xy), 0).r;
     // Another surface of this character (another profile, or opaque) kept the pixel.
-    if (slotFromKey(key) != int(uObject.surface.x + 0.5)) discard;
+    if (slotFromKey(key) != int(uObject.profileSlot + 0.5)) discard;
     float keptDepthM = viewDepthFromKey(key);
     if (abs(viewDepthM - keptDepthM) > max(kSameSurfaceMm * 1e-3, kSameSurfacePerDepth * keptDepthM)) discard;
     // A triangle seen from behind (a sliver at a silhouette, a fold of the

@@ -42,7 +42,7 @@ float ambientOcclusion(vec3 worldPositionM) {
     if (clip.w <= kTiny) return 1.0;
     vec2 ndc = clip.xy / clip.w;
     if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return 1.0;
-    ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * uFrame.viewport.xy), ivec2(0), ivec2(uFrame.viewport.xy) - 1);
+    ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * uFrame.viewportPx), ivec2(0), ivec2(uFrame.viewportPx) - 1);
     uint key = texelFetch(uDepthKey, pixel, 0).r;
     if (isBackgroundKey(key)) return 1.0;
     float viewDepthM = -(uFrame.viewFromWorld * vec4(worldPositionM, 1.0)).z;
@@ -53,7 +53,7 @@ float ambientOcclusion(vec3 worldPositionM) {
 void main() {
     vec3 geometricN = safeNormalize(vWorldNormal, vec3(0.0, 1.0, 0.0));
     vec3 N = geometricN;
-    if (uObject.material.w > 0.5) {
+    if (uObject.hasNormalMap > 0.5) {
         vec3 T = vWorldTangent.xyz - N * dot(N, vWorldTangent.xyz);
         T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
         vec3 B = cross(N, T) * (vWorldTangent.w < 0.0 ? -1.0 : 1.0);

@@ -26,7 +26,7 @@ void main() {
     vWorldPositionM = (uObject.worldFromObject * vec4(aPosition, 1.0)).xyz;
     vWorldNormal = mat3(uObject.normalWorldFromObject) * aNormal;
     vWorldTangent = vec4(mat3(uObject.worldFromObject) * aTangent.xyz, aTangent.w);
-    vMapUv = uObject.mapping.x > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
+    vMapUv = uObject.flipV > 0.5 ? vec2(aUv.x, 1.0 - aUv.y) : aUv;
     vDPduM = mat3(uObject.worldFromObject) * aDPdu;
     vDPdvM = mat3(uObject.worldFromObject) * aDPdv;
     vColour = aColour.rgb;

@@ -29,6 +29,11 @@ static_assert(offsetof(GpuLight, type) == 64 + 12 && offsetof(GpuLight, shadowSl
               "named fields sit at their std140 offsets");
 static_assert(sizeof(LightsBlock) == DERMIS_MAX_LIGHTS * sizeof(GpuLight), "LightsBlock must match std140");
 static_assert(sizeof(ObjectBlock) == 2 * 64 + (5 + DERMIS_SH_COEFFICIENTS) * 16, "ObjectBlock must match std140");
+static_assert(offsetof(ObjectBlock, roughness) == 2 * 64 + 12 && offsetof(ObjectBlock, flipV) == 2 * 64 + 2 * 16 &&
+                  offsetof(ObjectBlock, profileSlot) == 2 * 64 + 2 * 16 + 12 &&
+                  offsetof(ObjectBlock, hasThicknessMap) == 2 * 64 + 4 * 16 + 8 &&
+                  offsetof(ObjectBlock, environmentSh) == 2 * 64 + 5 * 16,
+              "named fields sit at their std140 offsets");
 static_assert(sizeof(EnvironmentBlock) == 64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
               "EnvironmentBlock must match std140");
 static_assert(sizeof(SssEdgeParams) == 16, "SssEdgeParams is one std140 group");
@@ -40,6 +45,11 @@ static_assert(offsetof(SssBlurBlock, sigmaMm) == DERMIS_MAX_BLUR_TAPS * 16 + 8 &
               "named fields sit at their std140 offsets");
 static_assert(offsetof(ProfileParams, gaussianCount) == DERMIS_MAX_PROFILE_GAUSSIANS * 16 + 12 &&
                   offsetof(ProfilesBlock, anyScattersInLighting) == (DERMIS_MAX_PROFILES + 1) * sizeof(ProfileParams) + 8,
+              "named fields sit at their std140 offsets");
+static_assert(offsetof(FrameBlock, pixelSizeUv) == 5 * 64 + 16 + 8 && offsetof(FrameBlock, farM) == 5 * 64 + 2 * 16 + 4 &&
+                  offsetof(EnvironmentBlock, intensity) == DERMIS_SH_COEFFICIENTS * 16 + 64 + 12 &&
+                  offsetof(EnvironmentBlock, skybox) == DERMIS_SH_COEFFICIENTS * 16 + 64 + 16 + 4 &&
+                  offsetof(CharacterParams, hasLeanMaps) == 12,
               "named fields sit at their std140 offsets");
 static_assert(offsetof(FrameBlock, aov) == 5 * 64 + 5 * 16 + 12 && offsetof(FrameBlock, materialMipBias) == 5 * 64 + 6 * 16 + 12,
               "named fields sit at their std140 offsets");

@@ -56,8 +56,8 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                         const auto index = static_cast<size_t>(caster);
                         const GpuCharacter& character = characters[index];
                         gpu::ObjectBlock block = frame.objectBlock(index);
-                        block.mapping.y = float(lightIndex);
-                        block.mapping.z = float(face);
+                        block.lightIndex = float(lightIndex);
+                        block.cubeFace = float(face);
                         frame.gl->uploadObject(block);
                         glBindVertexArray(character.mesh.vertexArray.get());
                         glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);

@@ -54,7 +54,7 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
     gpu::ObjectBlock block{};
     block.worldFromObject = worldFromObject;
     block.normalWorldFromObject = glm::inverseTranspose(worldFromObject);
-    block.material.y = float(characterIndex + 1);
+    block.objectId = float(characterIndex + 1);
     if (characterIndex < plan.environment.objectSh.size()) {
         const Sh9& light = plan.environment.objectSh[characterIndex];
         for (int i = 0; i < kShCoefficients; ++i) block.environmentSh[i] = glm::vec4(light.coefficients[size_t(i)], 0.0f);
@@ -68,18 +68,23 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submesh
     const GpuMaterial& maps = character.materials[submesh.material];
     const Material& material = characterMaterial(plan.scene->characters[characterIndex], maps.name, maps.index);
     gpu::ObjectBlock block = objectBlock(characterIndex);
-    block.albedoRoughness = glm::vec4(material.albedo * glm::vec3(maps.baseColourFactor), material.roughness);
-    block.material = glm::vec4(material.rhoS, float(characterIndex + 1), maps.albedoMap.isValid() ? 1.0f : 0.0f,
-                               maps.normalMap.isValid() ? 1.0f : 0.0f);
-    block.mapping = glm::vec4(material.flipV ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    block.albedo = material.albedo * glm::vec3(maps.baseColourFactor);
+    block.roughness = material.roughness;
+    block.rhoS = material.rhoS;
+    block.hasAlbedoMap = maps.albedoMap.isValid() ? 1.0f : 0.0f;
+    block.hasNormalMap = maps.normalMap.isValid() ? 1.0f : 0.0f;
+    block.flipV = material.flipV ? 1.0f : 0.0f;
     const int roughnessSource = maps.roughnessMap.isValid()           ? DERMIS_ROUGHNESS_MAP
                                 : maps.metallicRoughnessMap.isValid() ? DERMIS_ROUGHNESS_GLTF
                                                                       : DERMIS_ROUGHNESS_SCALAR;
-    block.surface = glm::vec4(float(plan.sss.slotOf(characterIndex, submeshIndex)), float(roughnessSource),
-                              maps.roughnessFactor, maps.specularMap.isValid() ? 1.0f : 0.0f);
-    block.scattering = glm::vec4(maps.scatter >= 0.0f ? maps.scatter : material.scatter,
-                                 maps.scatterMap.isValid() ? 1.0f : 0.0f, maps.thicknessMm,
-                                 maps.thicknessMap.isValid() ? 1.0f : 0.0f);
+    block.profileSlot = float(plan.sss.slotOf(characterIndex, submeshIndex));
+    block.roughnessSource = float(roughnessSource);
+    block.roughnessFactor = maps.roughnessFactor;
+    block.hasSpecularMap = maps.specularMap.isValid() ? 1.0f : 0.0f;
+    block.scatteringShare = maps.scatter >= 0.0f ? maps.scatter : material.scatter;
+    block.hasScatterMap = maps.scatterMap.isValid() ? 1.0f : 0.0f;
+    block.thicknessMm = maps.thicknessMm;
+    block.hasThicknessMap = maps.thicknessMap.isValid() ? 1.0f : 0.0f;
     return block;
 }
 

@@ -100,8 +100,10 @@ void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
     frame.viewFromClip = glm::inverse(frame.clipFromView);
     frame.clipFromWorld = frame.clipFromView * frame.viewFromWorld;
     frame.cameraPositionM = glm::vec4(camera.positionM, 1.0f);
-    frame.viewport = glm::vec4(plan.width, plan.height, 1.0f / float(plan.width), 1.0f / float(plan.height));
-    frame.depthRangeM = glm::vec4(camera.nearM, camera.farM, 0.0f, 0.0f);
+    frame.viewportPx = glm::vec2(plan.width, plan.height);
+    frame.pixelSizeUv = 1.0f / frame.viewportPx;
+    frame.nearM = camera.nearM;
+    frame.farM = camera.farM;
     frame.ambient = glm::vec4(settings.ambient, 0.0f);
     frame.background = glm::vec4(scene.background.colour, 1.0f);
     frame.exposure = settings.exposure;
@@ -135,7 +137,10 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
         const float radiusM = character.ssao.radiusM > 0.0f ? character.ssao.radiusM : ssao.radiusM;
         const int samples = character.ssao.samples > 0 ? character.ssao.samples : ssao.samples;
         const bool lean = c < mGpuScene.characters().size() && mGpuScene.characters()[c].hasLeanMaps();
-        characters.characters[c + 1].params = glm::vec4(0.0f, radiusM, float(samples), lean ? 1.0f : 0.0f);
+        gpu::CharacterParams& params = characters.characters[c + 1];
+        params.ssaoRadiusM = radiusM;
+        params.ssaoSamples = float(samples);
+        params.hasLeanMaps = lean ? 1.0f : 0.0f;
     }
     glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof characters, &characters);
 

@@ -72,9 +72,12 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
             block.hotSh[i] = glm::vec4(plan.worldHotSh.coefficients[size_t(i)], 0.0f);
         }
         block.mapFromWorld = glm::mat4(glm::transpose(plan.worldFromMap));
-        block.params = glm::vec4(1.0f, float(int(environment.occlusion)), float(int(environment.specular)),
-                                 environment.intensity);
-        block.map = glm::vec4(float(mMapLevels - 1), plan.skybox ? 1.0f : 0.0f, 0.0f, 0.0f);
+        block.lit = 1.0f;
+        block.occlusion = float(int(environment.occlusion));
+        block.specularMode = float(int(environment.specular));
+        block.intensity = environment.intensity;
+        block.lastMipLevel = float(mMapLevels - 1);
+        block.skybox = plan.skybox ? 1.0f : 0.0f;
         for (size_t i = 0; i < mAverageAlbedo.size(); ++i) block.averageAlbedo[i / 4][int(i % 4)] = mAverageAlbedo[i];
     }
     glNamedBufferSubData(mUniforms.get(), 0, sizeof block, &block);

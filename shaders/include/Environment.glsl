@@ -15,10 +15,10 @@
 //     pass gives it; for pixels whose specular the LEAN lobe gives
 //     (include/LeanLights.glsl) it writes the occlusion instead, and the
 //     LEAN lobe's mean normal and width are used after the blur.
-// Both are added only where uEnvironment.params.x is 1.
+// Both are added only where uEnvironment.lit is 1.
 //
 // DERMIS_ENVIRONMENT (define before including; default 1)
-//   1  environmentLit() reads uEnvironment.params.x at run time;
+//   1  environmentLit() reads uEnvironment.lit at run time;
 //   0  environmentLit() is false: every environment term compiles out, for
 //      frames whose scene has no environment (render/Programs.h builds the
 //      programs that light with it both ways). A branch on a uniform is not
@@ -44,9 +44,9 @@ layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
 #error "Environment.glsl evaluates bands 0-2: nine coefficients"
 #endif
 
-bool environmentLit() { return DERMIS_ENVIRONMENT == 1 && uEnvironment.params.x > 0.5; }
-int environmentOcclusion() { return int(uEnvironment.params.y + 0.5); }
-int environmentSpecularMode() { return int(uEnvironment.params.z + 0.5); }
+bool environmentLit() { return DERMIS_ENVIRONMENT == 1 && uEnvironment.lit > 0.5; }
+int environmentOcclusion() { return int(uEnvironment.occlusion + 0.5); }
+int environmentSpecularMode() { return int(uEnvironment.specularMode + 0.5); }
 
 // Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
 // 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
@@ -100,7 +100,7 @@ vec3 environmentSpecular(sampler2D energyTable, vec3 N, vec3 V, float m, float r
     vec3 radiance = mode == DERMIS_ENV_SPECULAR_SH
                         ? environmentIrradiance(R) * (1.0 / 3.14159265)
                         : prefilteredRadiance(uEnvironmentMap, mat3(uEnvironment.mapFromWorld) * R, m) *
-                              uEnvironment.params.w;
+                              uEnvironment.intensity;
     return radiance * albedo;
 }
 

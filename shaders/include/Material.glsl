@@ -1,7 +1,7 @@
 // One draw's material (ObjectBlock, engine/render/FrameContext.cpp), as the
 // G-buffer and the texture-space irradiance pass sample it
 // (docs/materials.md):
-//   base colour  tint x baseColorFactor (albedoRoughness.rgb) x albedo map x COLOR_0
+//   base colour  tint x baseColorFactor (ObjectBlock.albedo) x albedo map x COLOR_0
 //   roughness m  the roughness map's R; else glTF's metallic-roughness G x
 //                roughnessFactor = r, mapped to Beckmann m = r^2 (glTF 2.0
 //                Appendix B: GGX alpha = r^2; Walter et al. 2007 write Beckmann
@@ -20,26 +20,26 @@ layout(binding = DERMIS_UNIT_SPECULAR) uniform sampler2D uSpecularMap;
 const float kMinMaterialRoughness = 0.01;
 
 vec3 materialAlbedo(sampler2D albedoMap, vec2 uv, vec3 vertexColour, float mipBias) {
-    vec3 albedo = uObject.albedoRoughness.rgb * vertexColour;
-    if (uObject.material.z > 0.5) albedo *= texture(albedoMap, uv, mipBias).rgb;
+    vec3 albedo = uObject.albedo * vertexColour;
+    if (uObject.hasAlbedoMap > 0.5) albedo *= texture(albedoMap, uv, mipBias).rgb;
     return clamp(albedo, 0.0, 1.0);
 }
 
 float materialRoughness(vec2 uv, float mipBias) {
-    int source = int(uObject.surface.y + 0.5);
-    float m = uObject.albedoRoughness.w;
+    int source = int(uObject.roughnessSource + 0.5);
+    float m = uObject.roughness;
     if (source == DERMIS_ROUGHNESS_MAP) {
         m = texture(uRoughnessMap, uv, mipBias).r;
     } else if (source == DERMIS_ROUGHNESS_GLTF) {
-        float r = texture(uRoughnessMap, uv, mipBias).g * uObject.surface.z;
+        float r = texture(uRoughnessMap, uv, mipBias).g * uObject.roughnessFactor;
         m = r * r;
     }
     return clamp(m, kMinMaterialRoughness, 1.0);
 }
 
 float materialRhoS(vec2 uv, float mipBias) {
-    float rhoS = uObject.material.x;
-    if (uObject.surface.w > 0.5) rhoS *= texture(uSpecularMap, uv, mipBias).r;
+    float rhoS = uObject.rhoS;
+    if (uObject.hasSpecularMap > 0.5) rhoS *= texture(uSpecularMap, uv, mipBias).r;
     return clamp(rhoS, 0.0, 1.0);
 }
 

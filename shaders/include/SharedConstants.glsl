@@ -102,7 +102,7 @@
 #define DERMIS_SKIN_DERIVATIVE_FLOATS 6
 #define DERMIS_SKINNING_GROUP_SIZE 64
 
-// Where a draw's roughness comes from (ObjectBlock.surface.y, include/Material.glsl).
+// Where a draw's roughness comes from (ObjectBlock.roughnessSource, include/Material.glsl).
 #define DERMIS_ROUGHNESS_SCALAR 0   // the material's roughness m
 #define DERMIS_ROUGHNESS_MAP 1      // the scene's roughness_map: R is m
 #define DERMIS_ROUGHNESS_GLTF 2     // glTF metallic-roughness G x roughnessFactor = r, m = r^2

@@ -6,9 +6,9 @@
 //   - members are vec4, ivec4 and mat4, or named scalars and vec2s in
 //     groups that fill 16 bytes each (a vec2 and two scalars, or four
 //     scalars, or a vec3 and one scalar), so that C++ and std140 place every
-//     one at the same offset; the frame, object, environment and
-//     texture-space blocks still pack scalars into vec4s, with a comment
-//     saying which component is what;
+//     one at the same offset (the texture-space block still packs scalars
+//     into vec4s, with a comment saying which component is what; the frame
+//     block's ambient and background are colours in vec4s);
 //   - arrays only of vec4 or of structs made of them.
 // Matrix names read destination-from-source: clipFromWorld maps world-space
 // positions to clip space.
@@ -54,8 +54,12 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     mat4 clipFromView;
     mat4 viewFromClip;
     vec4 cameraPositionM;   // xyz: camera position in world space (metres)
-    vec4 viewport;          // x: width, y: height (pixels), z: 1/width, w: 1/height
-    vec4 depthRangeM;       // x: near, y: far (metres)
+    vec2 viewportPx;        // width, height
+    vec2 pixelSizeUv;       // 1/width, 1/height
+    float nearM;
+    float farM;
+    float unused0;
+    float unused1;
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance
     float exposure;
@@ -98,13 +102,24 @@ DERMIS_BLOCK(LightsBlock, DERMIS_BINDING_LIGHTS) {
 DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
     mat4 worldFromObject;
     mat4 normalWorldFromObject;  // inverse transpose of worldFromObject
-    vec4 albedoRoughness;        // rgb: albedo tint x glTF baseColorFactor (linear), w: Beckmann roughness m (the scalar)
-    vec4 material;               // x: rho_s, y: object id (1..255), z: has albedo map, w: has normal map
-    vec4 mapping;                // x: flip v (1 = sample at 1 - v), y: light index, z: cube face 0..5 (shadow pass)
-    vec4 surface;                // x: profile slot of this draw (0 = opaque), y: roughness source (DERMIS_ROUGHNESS_*),
-                                 // z: glTF roughnessFactor, w: has a specular map (1/0) (include/Material.glsl)
-    vec4 scattering;             // x: the scattering share s, y: has a scatter map (1/0), z: KHR_materials_volume
-                                 // thickness in mm (0: the shadow maps'), w: has a thickness map (1/0) (docs/materials.md)
+    vec3 albedo;                 // albedo tint x glTF baseColorFactor (linear)
+    float roughness;             // Beckmann m (the scalar)
+    float rhoS;
+    float objectId;              // 1..255
+    float hasAlbedoMap;          // 1/0, as every has... below
+    float hasNormalMap;
+    float flipV;                 // 1: sample at 1 - v
+    float lightIndex;            // the shadow pass's light
+    float cubeFace;              // the shadow pass's cube face, 0..5
+    float profileSlot;           // of this draw (0 = opaque)
+    float roughnessSource;       // DERMIS_ROUGHNESS_* (include/Material.glsl)
+    float roughnessFactor;       // glTF's
+    float hasSpecularMap;
+    float scatteringShare;       // s (docs/materials.md)
+    float hasScatterMap;
+    float thicknessMm;           // KHR_materials_volume thickness (0: the shadow maps')
+    float hasThicknessMap;
+    float unused0;
     vec4 environmentSh[DERMIS_SH_COEFFICIENTS];  // rgb: uEnvironment.sh in this object's space, for its vertices' transfer
 } DERMIS_BLOCK_END(uObject)
 
@@ -112,8 +127,14 @@ DERMIS_BLOCK(ObjectBlock, DERMIS_BINDING_OBJECT) {
 DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
     vec4 sh[DERMIS_SH_COEFFICIENTS];  // rgb: radiance's SH coefficients (world space) x intensity; 0 past the scene's sh_bands
     mat4 mapFromWorld;                // a world direction to the map's (rotation; the skybox and the specular)
-    vec4 params;  // x: an environment lights the frame (1/0), y: DERMIS_ENV_OCCLUSION_*, z: DERMIS_ENV_SPECULAR_*, w: intensity
-    vec4 map;     // x: the map's last mip level, y: 1 = the map is drawn behind everything
+    float lit;           // 1: an environment lights the frame
+    float occlusion;     // DERMIS_ENV_OCCLUSION_*
+    float specularMode;  // DERMIS_ENV_SPECULAR_*
+    float intensity;
+    float lastMipLevel;  // of the map
+    float skybox;        // 1: the map is drawn behind everything
+    float unused0;
+    float unused1;
     vec4 averageAlbedo[DERMIS_AVERAGE_ALBEDO_SIZE / 4];  // rho_dt(mu, m) averaged 2 int mu dmu, at m = i / (SIZE - 1)
     vec4 hotSh[DERMIS_SH_COEFFICIENTS];  // rgb: sh's hot, windowed part (env/RingingFreeSh.h), which occlusion
                                          // "transfer" lights at the normal, times the vertices' visible share
@@ -121,7 +142,10 @@ DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).
 struct CharacterParams {
-    vec4 params;  // x: 0 (unused: the profile slot is per draw, ObjectBlock.surface.x), y: SSAO radius (m), z: SSAO samples, w: has LEAN maps (1/0): the LEAN variants take its specular from passes/LeanSpecularPass
+    float unused0;      // (the profile slot is per draw: ObjectBlock.profileSlot)
+    float ssaoRadiusM;  // 0: the scene's
+    float ssaoSamples;  // 0: the scene's
+    float hasLeanMaps;  // 1: the LEAN variants take its specular from passes/LeanSpecularPass
 };
 
 DERMIS_BLOCK(CharactersBlock, DERMIS_BINDING_CHARACTERS) {

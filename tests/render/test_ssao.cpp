@@ -122,8 +122,10 @@ protected:
         frame.viewFromClip = glm::inverse(frame.clipFromView);
         frame.clipFromWorld = frame.clipFromView * frame.viewFromWorld;
         frame.cameraPositionM = glm::vec4(mScene->camera.positionM, 1.0f);
-        frame.viewport = glm::vec4(kWidth, kHeight, 1.0f / float(kWidth), 1.0f / float(kHeight));
-        frame.depthRangeM = glm::vec4(mScene->camera.nearM, mScene->camera.farM, 0.0f, 0.0f);
+        frame.viewportPx = glm::vec2(kWidth, kHeight);
+        frame.pixelSizeUv = 1.0f / frame.viewportPx;
+        frame.nearM = mScene->camera.nearM;
+        frame.farM = mScene->camera.farM;
         frame.energyConservation = 1;
         frame.ssaoStrength = mScene->settings.ssao.strength;
         glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
@@ -133,7 +135,8 @@ protected:
         auto characters = std::make_unique<gpu::CharactersBlock>();
         for (size_t i = 0; i < mScene->characters.size(); ++i) {
             const CharacterSsao& ssao = mScene->characters[i].ssao;
-            characters->characters[i + 1].params = glm::vec4(0.0f, ssao.radiusM, float(ssao.samples), 0.0f);
+            characters->characters[i + 1].ssaoRadiusM = ssao.radiusM;
+            characters->characters[i + 1].ssaoSamples = float(ssao.samples);
         }
         glNamedBufferSubData(mCharacterUniforms.get(), 0, sizeof *characters, characters.get());
 
