@@ -53,26 +53,26 @@ vec4 exactBlur(ivec2 texel, ivec2 step, float sigmaTexels, int radius, vec4 cent
 void shade() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 centre = texelFetch(uInput, texel, 0);
-    vec2 direction = uTs.blur.xy;
+    vec2 direction = uTs.blurDirection;
     float stretchMm = dot(texelFetch(uStretch, texel, 0).rg, direction);
     if (centre.a <= 0.0 || !(stretchMm > 0.0)) {
         oBlurred = centre;
         return;
     }
-    float sigmaTexels = min(uTs.params.z / stretchMm * uTs.size.x, kMaxTexelsPerSigma);
+    float sigmaTexels = min(uTs.stepSigmaMm / stretchMm * uTs.sideTexels, kMaxTexelsPerSigma);
     // Less what the gather's bilinear reads add (params.w, passes/TsUvPasses.cpp).
-    sigmaTexels = sqrt(max(sigmaTexels * sigmaTexels - uTs.params.w, 0.0));
+    sigmaTexels = sqrt(max(sigmaTexels * sigmaTexels - uTs.omittedVarianceTexels2, 0.0));
     int radius = int(ceil(3.0 * sigmaTexels));
     if (radius <= kMaxExactRadiusTexels) {
         oBlurred = exactBlur(texel, ivec2(direction), max(sigmaTexels, 1e-3), max(radius, 1), centre);
         return;
     }
-    float texelUv = uTs.size.y;
-    float sigmaUv = min(uTs.blur.z / stretchMm, kMaxTexelsPerSigma * texelUv);
+    float texelUv = uTs.texelUv;
+    float sigmaUv = min(uTs.blurSigmaMm / stretchMm, kMaxTexelsPerSigma * texelUv);
     vec2 uv = (vec2(texel) + 0.5) * texelUv;
     vec4 sum = vec4(0.0);
     float weightSum = 0.0;
-    int taps = int(uTs.blur.w);
+    int taps = int(uTs.blurTaps);
     for (int k = 0; k < taps; ++k) {
         vec4 value = texture(uInput, uv + direction * (uTs.kernel[k].x * sigmaUv));
         float weight = value.a > 0.0 ? uTs.kernel[k].y : 0.0;

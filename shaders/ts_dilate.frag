@@ -1,7 +1,7 @@
 // Texture-space step 3: chart gutters are dilated (include/TextureSpace.glsl).
 // A covered texel (alpha > 0) is copied; an empty one takes the nearest
 // covered texel found along the 8 principal directions within
-// uTs.params.x texels, or stays empty. Blur taps that cross a chart's edge
+// uTs.dilationTexels texels, or stays empty. Blur taps that cross a chart's edge
 // then read light from the edge, not black.
 #define DERMIS_USE_TS_BLOCK
 #include "Common.glsl"
@@ -22,7 +22,7 @@ void shade() {
         return;
     }
     ivec2 size = textureSize(uIrradiance, 0);
-    int radius = int(uTs.params.x);
+    int radius = int(uTs.dilationTexels);
     for (int r = 1; r <= radius; ++r) {
         for (int d = 0; d < 8; ++d) {
             ivec2 p = texel + kDirections[d] * r;

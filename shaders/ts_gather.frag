@@ -64,12 +64,12 @@ void main() {
     // pass's irradiance instead, which the accumulation started from.
     if (!gl_FrontFacing) discard;
 
-    int count = int(uTs.size.w);
+    int count = int(uTs.gaussianCount);
     float borderMm = vBorderDistanceM * 1000.0;
-    float seamBlend = uTs.size.z;
+    float seamBlend = uTs.seamBlendStdDevs;
     vec3 local = texture(uBlurred[0], vUv).rgb;
     vec3 pixelIrradiance = texelFetch(uPixelIrradiance, ivec2(gl_FragCoord.xy), 0).rgb;
-    float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.size.y;
+    float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.texelUv;
     vec3 sum = vec3(0.0);
     vec3 weightSum = vec3(0.0);
     vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
@@ -85,13 +85,13 @@ void main() {
     }
     vec3 diffuse = sum / max(weightSum, vec3(kTiny));
 
-    if (uTs.tsmAxis.w > 0.5) {
+    if (uTs.hasTsm > 0.5) {
         vec4 tap = tsmTap(uTsm, vWorldPositionM);
         if (tap.w > 0.0) {
             // UV distance to the light-facing point A, in mm at this point C.
             float mmPerUv = 0.5 * (length(vDPduM) + length(vDPdvM)) * 1000.0;
             float distanceMm = length(vUv - tap.yz) * mmPerUv;
-            int first = max(int(uTs.tsm.w), 1);
+            int first = max(int(uTs.tsmFirstGaussian), 1);
             for (int i = 1; i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
                 if (i >= count) break;
                 if (i < first) continue;
@@ -100,7 +100,7 @@ void main() {
                 float fade = exp(-dMm * dMm / (2.0 * varianceMm2));
                 float apart = clamp(distanceMm / (6.0 * sqrt(varianceMm2)), 0.0, 1.0);
                 vec3 farSide = texture(uBlurred[i], tap.yz).rgb;
-                diffuse += uTs.tsm.y * uTs.gaussians[i].rgb / max(weightSum, vec3(kTiny)) * (fade * apart) * farSide;
+                diffuse += uTs.tsmStrength * uTs.gaussians[i].rgb / max(weightSum, vec3(kTiny)) * (fade * apart) * farSide;
             }
         }
     }

@@ -88,6 +88,6 @@ void main() {
     }
 
     float alpha = 1.0;
-    if (uTs.tsmAxis.w > 0.5) alpha = encodeThickness(tsmThicknessMm(uTsm, vWorldPositionM, geometricN));
+    if (uTs.hasTsm > 0.5) alpha = encodeThickness(tsmThicknessMm(uTsm, vWorldPositionM, geometricN));
     oIrradiance = vec4(sanitizeColour(irradiance * albedoPower(albedo, uFrame.mixRatio)), alpha);
 }

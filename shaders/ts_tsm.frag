@@ -13,5 +13,5 @@ in vec3 vWorldNormal;
 layout(location = 0) out vec4 oTsm;
 
 void main() {
-    oTsm = debugPlant(vec4(vDepthM, vUv, packTsmNormal(safeNormalize(vWorldNormal, -uTs.tsmAxis.xyz))));
+    oTsm = debugPlant(vec4(vDepthM, vUv, packTsmNormal(safeNormalize(vWorldNormal, -uTs.tsmAxis))));
 }

@@ -58,6 +58,10 @@ static_assert(offsetof(SsaoBlock, blurHalfWidthPx) == 16 && offsetof(SkinningBlo
 static_assert(sizeof(SeparableSssBlock) == (DERMIS_MAX_SEPARABLE_SAMPLES + 2) * 16, "SeparableSssBlock must match std140");
 static_assert(sizeof(DiskSssBlock) == (2 * DERMIS_MAX_DISK_SAMPLES + 2) * 16, "DiskSssBlock must match std140");
 static_assert(sizeof(SsaoBlock) == 2 * 16, "SsaoBlock must match std140");
+static_assert(offsetof(TextureSpaceBlock, hasTsm) == 64 + 16 + 12 && offsetof(TextureSpaceBlock, gaussianCount) == 64 + 3 * 16 + 12 &&
+                  offsetof(TextureSpaceBlock, blurTaps) == 64 + 4 * 16 + 12 &&
+                  offsetof(TextureSpaceBlock, omittedVarianceTexels2) == 64 + 5 * 16 + 12,
+              "named fields sit at their std140 offsets");
 static_assert(sizeof(TextureSpaceBlock) == 64 + (6 + DERMIS_MAX_BLUR_TAPS + DERMIS_MAX_PROFILE_GAUSSIANS) * 16,
               "TextureSpaceBlock must match std140");
 static_assert(sizeof(SkinningBlock) == 16, "SkinningBlock must match std140");

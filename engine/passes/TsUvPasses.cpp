@@ -57,18 +57,26 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
     const TextureSpaceSettings& ts = frame.plan.scene->settings.ts;
     gpu::TextureSpaceBlock block{};
     block.tsmClipFromWorld = plan.tsmClipFromWorld;
-    block.tsmOrigin = glm::vec4(plan.tsmOriginM, plan.tsmAlongAxis ? 1.0f : 0.0f);
-    block.tsmAxis = glm::vec4(plan.tsmAxis, plan.tsmLight >= 0 ? 1.0f : 0.0f);
+    block.tsmOriginM = plan.tsmOriginM;
+    block.tsmAlongAxis = plan.tsmAlongAxis ? 1.0f : 0.0f;
+    block.tsmAxis = plan.tsmAxis;
+    block.hasTsm = plan.tsmLight >= 0 ? 1.0f : 0.0f;
     const float strength = ts.tsmStrength * frame.plan.scene->settings.transmittance.strength;
     // Chappuis 2011 listing 2.11 adds the TSM terms for the three widest of six
     // Gaussians: the narrow ones fade within a fraction of a millimetre and
     // only add speckle where the thickness vanishes at the light's silhouette.
     const float firstTsmGaussian = float(std::max<int>(1, static_cast<int>(plan.gaussians.size()) - kTsmGaussians));
-    block.tsm = glm::vec4(kTsThicknessPerMm, strength, float(plan.tsmSize), firstTsmGaussian);
-    block.size = glm::vec4(float(plan.size), 1.0f / float(std::max(plan.size, 1)), ts.seamBlend,
-                           float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS)));
+    block.tsmPerMm = kTsThicknessPerMm;
+    block.tsmStrength = strength;
+    block.tsmSideTexels = float(plan.tsmSize);
+    block.tsmFirstGaussian = firstTsmGaussian;
+    block.sideTexels = float(plan.size);
+    block.texelUv = 1.0f / float(std::max(plan.size, 1));
+    block.seamBlendStdDevs = ts.seamBlend;
+    block.gaussianCount = float(std::min<size_t>(plan.gaussians.size(), DERMIS_MAX_PROFILE_GAUSSIANS));
     const glm::mat4& worldFromObject = frame.plan.characters[static_cast<size_t>(plan.character)].worldFromObject;
-    block.params = glm::vec4(float(dilationRadiusTexels(plan.size)), glm::length(glm::vec3(worldFromObject[0])), 0.0f, 0.0f);
+    block.dilationTexels = float(dilationRadiusTexels(plan.size));
+    block.metresPerObjectUnit = glm::length(glm::vec3(worldFromObject[0]));
     for (size_t i = 0; i < plan.gaussians.size() && i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
         block.gaussians[i] = plan.gaussians[i];
     }
@@ -225,13 +233,15 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
             uploadTsBlocks(frame, plan, b);
             runFullscreenPass(frame, resources, {{d.out}}, frame.gl->programs->tsBlur.get(), {d.in, d.stretch});
         };
-        block.params.z = std::sqrt(std::max(step.stepVarianceMm2, 0.0f));
+        block.stepSigmaMm = std::sqrt(std::max(step.stepVarianceMm2, 0.0f));
         // The gather reads the blurred textures bilinearly, which blurs by
         // f (1 - f) texels^2 more at fraction f between texel centres, 1/6 on
         // average; the first blur leaves that much out (ts_blur.frag).
-        block.params.w = firstBlur && !step.skipped ? kBilinearVarianceTexels2 : 0.0f;
+        block.omittedVarianceTexels2 = firstBlur && !step.skipped ? kBilinearVarianceTexels2 : 0.0f;
         firstBlur = firstBlur && step.skipped;
-        block.blur = glm::vec4(1.0f, 0.0f, sigmaMm, float(taps));
+        block.blurDirection = glm::vec2(1.0f, 0.0f);
+        block.blurSigmaMm = sigmaMm;
+        block.blurTaps = float(taps);
         const FilterData& u = graph.addPass<FilterData>(
             name + " u",
             [&](graph::PassBuilder& builder, FilterData& d) {
@@ -241,7 +251,9 @@ std::vector<graph::TextureHandle> addBlurPasses(graph::RenderGraph& graph, const
                 builder.skipIf(step.skipped, why);
             },
             [run, block](const graph::PassResources& resources, const FilterData& d) { run(resources, d, block); });
-        block.blur = glm::vec4(0.0f, 1.0f, sigmaMm, float(taps));
+        block.blurDirection = glm::vec2(0.0f, 1.0f);
+        block.blurSigmaMm = sigmaMm;
+        block.blurTaps = float(taps);
         const FilterData& v = graph.addPass<FilterData>(
             name + " v",
             [&](graph::PassBuilder& builder, FilterData& d) {

@@ -46,7 +46,7 @@
 //   texture i - 1"), and the term fades to zero as uv_A approaches uv_C,
 //   where the ordinary blur already carries that light: the fix for double
 //   contribution, weight clamp(|uv_C - uv_A| mm / (6 sigma_i), 0, 1). As in
-//   listing 2.11 only the three widest Gaussians get a TSM term (uTs.tsm.w
+//   listing 2.11 only the three widest Gaussians get a TSM term (uTs.tsmFirstGaussian
 //   is the first).
 //
 // INTEGRATION (passes/TextureSpacePasses.cpp does this)
@@ -71,14 +71,14 @@ const float kTsMinAlpha = 1e-4;
 // Depth in the TSM: along the axis for directional lights, the distance to the
 // light for spot lights (plan/TsPlan.h).
 float tsmDepthM(vec3 worldPositionM) {
-    vec3 d = worldPositionM - uTs.tsmOrigin.xyz;
-    return uTs.tsmOrigin.w > 0.5 ? dot(d, uTs.tsmAxis.xyz) : length(d);
+    vec3 d = worldPositionM - uTs.tsmOriginM;
+    return uTs.tsmAlongAxis > 0.5 ? dot(d, uTs.tsmAxis) : length(d);
 }
 
 // Unit vector from a point towards the TSM light.
 vec3 tsmToLight(vec3 worldPositionM) {
-    return uTs.tsmOrigin.w > 0.5 ? -uTs.tsmAxis.xyz
-                                 : safeNormalize(uTs.tsmOrigin.xyz - worldPositionM, -uTs.tsmAxis.xyz);
+    return uTs.tsmAlongAxis > 0.5 ? -uTs.tsmAxis
+                                 : safeNormalize(uTs.tsmOriginM - worldPositionM, -uTs.tsmAxis);
 }
 
 // The TSM texel over a world position: x depth (m), yz uv of the light-facing
@@ -122,7 +122,7 @@ float tsmThicknessMm(sampler2D tsm, vec3 worldPositionM, vec3 N) {
     return min(mix(thicknessMm, corrected, backFacing), kTsFrontThicknessMm);
 }
 
-float encodeThickness(float thicknessMm) { return max(exp(-uTs.tsm.x * thicknessMm), kTsMinAlpha); }
-float decodeThicknessMm(float alpha) { return -log(max(alpha, kTsMinAlpha)) / max(uTs.tsm.x, kTiny); }
+float encodeThickness(float thicknessMm) { return max(exp(-uTs.tsmPerMm * thicknessMm), kTsMinAlpha); }
+float decodeThicknessMm(float alpha) { return -log(max(alpha, kTsMinAlpha)) / max(uTs.tsmPerMm, kTiny); }
 
 #endif

@@ -6,9 +6,8 @@
 //   - members are vec4, ivec4 and mat4, or named scalars and vec2s in
 //     groups that fill 16 bytes each (a vec2 and two scalars, or four
 //     scalars, or a vec3 and one scalar), so that C++ and std140 place every
-//     one at the same offset (the texture-space block still packs scalars
-//     into vec4s, with a comment saying which component is what; the frame
-//     block's ambient and background are colours in vec4s);
+//     one at the same offset (the frame block's ambient and background are
+//     colours in vec4s);
 //   - arrays only of vec4 or of structs made of them.
 // Matrix names read destination-from-source: clipFromWorld maps world-space
 // positions to clip space.
@@ -258,12 +257,25 @@ DERMIS_BLOCK(SkinningBlock, DERMIS_BINDING_PASS) {
 #if defined(__cplusplus) || defined(DERMIS_USE_TS_BLOCK)
 DERMIS_BLOCK(TextureSpaceBlock, DERMIS_BINDING_PASS) {
     mat4 tsmClipFromWorld;  // the character's translucent shadow map (plan/TsPlan.h)
-    vec4 tsmOrigin;         // xyz: TSM depth is measured from here (m); w: 1 = along tsmAxis, 0 = distance to it
-    vec4 tsmAxis;           // xyz: unit axis of the TSM light; w: 1 = a TSM is bound, 0 = none
-    vec4 tsm;               // x: c (1/mm) of the stored exp(-c d); y: strength; z: TSM side (texels); w: Gaussian the TSM terms start at
-    vec4 size;              // x: irradiance side (texels), y: 1 / side, z: seam blend (std devs), w: Gaussian count
-    vec4 blur;              // xy: (1,0) U or (0,1) V; z: std dev of this step over the kernel's own (mm); w: tap count
-    vec4 params;            // x: dilation radius (texels); y: object-to-world scale (m per object unit); z: std dev of this blur step (mm); w: variance it leaves out (texels^2)
+    vec3 tsmOriginM;        // TSM depth is measured from here
+    float tsmAlongAxis;     // 1: along tsmAxis, 0: the distance to tsmOriginM
+    vec3 tsmAxis;           // unit axis of the TSM light
+    float hasTsm;           // 1: a TSM is bound
+    float tsmPerMm;         // c of the stored exp(-c d)
+    float tsmStrength;
+    float tsmSideTexels;
+    float tsmFirstGaussian; // the Gaussian the TSM terms start at
+    float sideTexels;       // of the irradiance texture
+    float texelUv;          // 1 / sideTexels
+    float seamBlendStdDevs;
+    float gaussianCount;
+    vec2 blurDirection;     // (1, 0) U or (0, 1) V
+    float blurSigmaMm;      // std dev of this step over the kernel's own
+    float blurTaps;
+    float dilationTexels;
+    float metresPerObjectUnit;
+    float stepSigmaMm;      // std dev of this blur step
+    float omittedVarianceTexels2;  // the variance it leaves out
     vec4 kernel[DERMIS_MAX_BLUR_TAPS];  // x: tap offset in standard deviations, y: weight (they sum to 1)
     vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight, a: variance (mm^2); [i] is blurred texture i
 } DERMIS_BLOCK_END(uTs)
