@@ -102,7 +102,7 @@ vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D sh
     // edge that runs perpendicular to the tilt (taken as the usual case: a
     // terminator's own shadow, a nose's on the cheek).
     vec3 L = light.type == float(DERMIS_LIGHT_DIRECTIONAL) ? -light.direction
-                                                                     : safeNormalize(light.positionM - worldPositionM, N);
+                                                           : safeNormalize(light.positionM - worldPositionM, N);
     halfWidthM /= clamp(dot(N, L), 0.2, 1.0);
     float q = halfWidthM / (2.0 * sigmaM);
     float coverage = surfaceDiscPcf(shadowMap, light, f, float(DERMIS_PREINTEGRATED_SHADOW_STDDEVS) * sigmaM * sqrt(1.0 + q * q));
