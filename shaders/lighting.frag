@@ -109,7 +109,7 @@ void main() {
         if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].scattersInLighting != 0) {
             preintegratedSlot = slot;
             curvaturePerMm = scatter.z;
-            scatterShadows = preintegratedShadowShows(uProfiles.profiles[slot].shadowSigmaMm, worldPositionM);
+            scatterShadows = preintegratedShadowShows(uProfiles.profiles[slot].shadowSigmaMm, -viewPositionM.z);
         }
     }
     vec4 shadowed = vec4(0.0);
@@ -127,7 +127,7 @@ void main() {
         if (slot >= 0) {
             if (scatterShadows) {
                 vec4 scattered = preintegratedShadow(uPreintegrated, preintegratedSlot, uProfiles.profiles[preintegratedSlot].shadowSigmaMm,
-                                                     uShadowMaps[slot], light, worldPositionM, N);
+                                                     uShadowMaps[slot], light, worldPositionM, N, nDotL);
                 diffuseVisibility = scattered.rgb;
                 visibility = scattered.a;
             } else {

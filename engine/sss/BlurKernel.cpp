@@ -1,16 +1,12 @@
 #include "sss/BlurKernel.h"
 
+#include "sss/DiffusionProfile.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 namespace dermis {
-
-namespace {
-
-double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
-
-}  // namespace
 
 int writeKernelTaps(const BlurKernel& kernel, glm::vec4 (&taps)[kMaxBlurTaps]) {
     const size_t count = std::min(kernel.weights.size(), size_t(kMaxBlurTaps));

@@ -20,10 +20,9 @@ std::string formatWeight(const glm::vec3& w) {
     return out.str();
 }
 
-// Standard normal CDF, Phi(z) = erfc(-z / sqrt 2) / 2 (erfc keeps the left tail accurate).
-double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
-
 }  // namespace
+
+double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 Result<DiffusionProfile> DiffusionProfile::create(std::string name, std::vector<ProfileGaussian> gaussians) {
     if (gaussians.empty()) return profileError(name, "has no Gaussians");

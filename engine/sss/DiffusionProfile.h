@@ -61,6 +61,9 @@ private:
     std::optional<BurleyParameters> mBurley;
 };
 
+// The standard normal CDF, Phi(z) = erfc(-z / sqrt 2) / 2 (erfc keeps the left tail accurate).
+double standardNormalCdf(double z);
+
 // d'Eon & Luebke's six-Gaussian fit of the three-layer skin model (Chappuis 2011 fig. 2.7).
 const DiffusionProfile& skinProfile();
 // A marble-like profile: wider and whiter (see ProfileLibrary.cpp for its source).

@@ -37,14 +37,12 @@ double discOffset(double c) {
     return 0.5 * (low + high);
 }
 
-double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
-
 // integral g_sigma(x - t) A(t / h) dt: A is 1 past the penumbra (t > h), giving
 // Phi((x - h) / sigma), 0 before it, and inside it the integral runs over phi.
 double scatteredEdge(double x, double sigma, double h, const GaussLegendre& rule) {
-    if (!(h > 0.0)) return sigma > 0.0 ? normalCdf(x / sigma) : (x > 0.0 ? 1.0 : x < 0.0 ? 0.0 : 0.5);
+    if (!(h > 0.0)) return sigma > 0.0 ? standardNormalCdf(x / sigma) : (x > 0.0 ? 1.0 : x < 0.0 ? 0.0 : 0.5);
     if (!(sigma > 0.0)) return discLitShare(x / h);
-    double sum = normalCdf((x - h) / sigma);
+    double sum = standardNormalCdf((x - h) / sigma);
     const double t0 = std::max(-h, x - kSupportStdDevs * sigma);
     const double t1 = std::min(h, x + kSupportStdDevs * sigma);
     if (t1 <= t0) return sum;

@@ -78,15 +78,15 @@ vec3 preintegratedFalloff(sampler2D tables, int slot, float nDotL, float curvatu
 // DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX on screen. Further away the plain
 // shadow lookup is used: it costs less (it skips most taps where PCSS's
 // blocker search finds nothing), and the scattering is under a pixel.
-bool preintegratedShadowShows(float sigmaMm, vec3 worldPositionM) {
-    float viewDepthM = max(-(uFrame.viewFromWorld * vec4(worldPositionM, 1.0)).z, 1e-4);
-    return sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM >= float(DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX);
+bool preintegratedShadowShows(float sigmaMm, float viewDepthM) {
+    return sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / max(viewDepthM, 1e-4) >= float(DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX);
 }
 
-// One shadowed light seen by the slot's skin: rgb the light it scatters
-// across the shadow edge, alpha the light's own visibility (SHADOWS above).
+// One shadowed light seen by the slot's skin (nDotL: N.L of the light's
+// direction): rgb the light it scatters across the shadow edge, alpha the
+// light's own visibility (SHADOWS above).
 vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D shadowMap, GpuLight light,
-                         vec3 worldPositionM, vec3 N) {
+                         vec3 worldPositionM, vec3 N, float nDotL) {
     vec2 uv;
     ShadowFrame f;
     if (!shadowReceiver(light, worldPositionM, N, uv, f)) return vec4(1.0);
@@ -101,9 +101,7 @@ vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D sh
     // the light lands on the surface stretched by 1 / cos(N, L) across an
     // edge that runs perpendicular to the tilt (taken as the usual case: a
     // terminator's own shadow, a nose's on the cheek).
-    vec3 L = light.type == float(DERMIS_LIGHT_DIRECTIONAL) ? -light.direction
-                                                           : safeNormalize(light.positionM - worldPositionM, N);
-    halfWidthM /= clamp(dot(N, L), 0.2, 1.0);
+    halfWidthM /= clamp(nDotL, 0.2, 1.0);
     float q = halfWidthM / (2.0 * sigmaM);
     float coverage = surfaceDiscPcf(shadowMap, light, f, float(DERMIS_PREINTEGRATED_SHADOW_STDDEVS) * sigmaM * sqrt(1.0 + q * q));
     const float columns = float(DERMIS_PREINTEGRATED_COSINES);

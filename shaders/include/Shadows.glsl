@@ -210,22 +210,24 @@ float discPcf(sampler2D shadowMap, GpuLight light, ShadowFrame f, float radiusTe
 // concave neighbourhood: an eye socket, the side of a nose) is the receiver
 // itself, not a blocker; a blocker nearer than that (a contact shadow) is
 // missed.
+float surfaceTapLit(sampler2D shadowMap, GpuLight light, ShadowFrame f, float radiusM, int i) {
+    vec2 offset = radiusM * vogelDisc(i, DERMIS_PCSS_FILTER_SAMPLES);
+    vec3 q = f.positionM + offset.x * f.axisU + offset.y * f.axisV;
+    return lightLinearDepth(light, q) - f.biasM - length(offset) <= storedDepthM(shadowMap, light, q) ? 1.0 : 0.0;
+}
+
 float surfaceDiscPcf(sampler2D shadowMap, GpuLight light, ShadowFrame f, float radiusM) {
-    vec3 tangent = normalize(cross(f.N, abs(f.N.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-    vec3 bitangent = cross(f.N, tangent);
+    f.axisU = normalize(cross(f.N, abs(f.N.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    f.axisV = cross(f.N, f.axisU);
     // Every fourth tap first (an even spiral over the whole disc): where they
     // all agree, the disc is taken as wholly lit or wholly shadowed, and the
     // other three quarters are skipped, as most pixels lie far from an edge.
     float lit = 0.0;
-    for (int pass = 0; pass < 2; ++pass) {
-        for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; ++i) {
-            if (((i & 3) == 0) != (pass == 0)) continue;
-            vec2 offset = radiusM * vogelDisc(i, DERMIS_PCSS_FILTER_SAMPLES);
-            vec3 q = f.positionM + offset.x * tangent + offset.y * bitangent;
-            lit += lightLinearDepth(light, q) - f.biasM - length(offset) <= storedDepthM(shadowMap, light, q) ? 1.0 : 0.0;
-        }
-        const float firstTaps = float((DERMIS_PCSS_FILTER_SAMPLES + 3) / 4);
-        if (pass == 0 && (lit == 0.0 || lit == firstTaps)) return lit / firstTaps;
+    for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; i += 4) lit += surfaceTapLit(shadowMap, light, f, radiusM, i);
+    const float firstTaps = float((DERMIS_PCSS_FILTER_SAMPLES + 3) / 4);
+    if (lit == 0.0 || lit == firstTaps) return lit / firstTaps;
+    for (int i = 0; i < DERMIS_PCSS_FILTER_SAMPLES; ++i) {
+        if ((i & 3) != 0) lit += surfaceTapLit(shadowMap, light, f, radiusM, i);
     }
     return lit / float(DERMIS_PCSS_FILTER_SAMPLES);
 }

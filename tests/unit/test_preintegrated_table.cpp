@@ -21,7 +21,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 double standardNormalPdf(double z) { return std::exp(-0.5 * z * z) / std::sqrt(2.0 * kPi); }
-double standardNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+double normalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 // integral of f over [a, b] by the rule on each panel between consecutive sorted breaks.
 template <class F>
@@ -138,7 +138,7 @@ TEST(PreintegratedTable, FlatTerminatorClosedForm) {
         glm::dvec3 expected(0.0);
         for (const ProfileGaussian& g : profile.gaussians()) {
             const double s = std::sqrt(double(g.varianceMm2)) * double(curvature);
-            expected += glm::dvec3(g.weight) * (s * standardNormalPdf(delta / s) - delta * standardNormalCdf(-delta / s));
+            expected += glm::dvec3(g.weight) * (s * standardNormalPdf(delta / s) - delta * normalCdf(-delta / s));
         }
         const glm::vec3 got = preintegratedDiffuse(profile, 1.0f, cosTheta, curvature);
         for (int c = 0; c < 3; ++c) {
