@@ -6,9 +6,9 @@
 //                  depth-aware blurs compare (layout in UniformBlocks.glsl)
 //   target 3       RGBA16F: the scattering share s, the KHR_materials_volume
 //                  thickness in mm (DERMIS_GBUFFER_SCATTER_LOCATION, docs/materials.md)
-//                  the surface's curvature in 1/mm (0 unless some slot is
-//                  "preintegrated") and the profile slot
-//                  (include/PreintegratedSkin.glsl reads both)
+//                  the surface's curvature in 1/mm (0 unless some slot
+//                  scatters in the lighting pass) and the profile slot
+//                  (include/LightingScatter.glsl reads both)
 // With GBUFFER_LEAN defined (variants lcb and lbb, plan/SssVariant.h):
 //   target 4       RGBA16F: LEAN (B'.x, B'.y, M'.xx, M'.yy) on the view plane
 //   target 5       R16F: LEAN M'.xy

@@ -13,9 +13,9 @@
 //      characters with LEAN maps (their lobe comes from
 //      include/LeanLights.glsl), alpha 0 and in red the environment's
 //      specular occlusion.
-//   With the technique "preintegrated" for a pixel's profile slot, each
-//   light's N.L is its pre-integrated falloff and its shadow the one the
-//   profile scatters (include/PreintegratedSkin.glsl).
+//   Where a pixel's profile slot uses a technique that scatters in this pass
+//   (the pre-integrated one), each light's N.L is that technique's falloff and
+//   its shadow the one the profile scatters (engine/render/LightingScatter.h).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -27,7 +27,7 @@
 #include "Lights.glsl"
 #include "EnergyConservation.glsl"
 #include "Environment.glsl"
-#include "PreintegratedSkin.glsl"
+#include "LightingTechniques.glsl"  // generated from the SSS technique registry
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uAlbedo;
@@ -40,9 +40,6 @@ layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 layout(binding = 8) uniform sampler2D uLeanCross;  // R16F M'.xy
 #endif
 layout(binding = 9) uniform sampler2D uEnvironmentTransfer;  // the G-buffer's environment target (occlusion "transfer")
-// Bound when some visible slot's technique is "preintegrated" (uProfiles.anyScattersInLighting = 1):
-layout(binding = 10) uniform sampler2D uScatter;  // the G-buffer's: z curvature (1/mm), w profile slot
-layout(binding = DERMIS_UNIT_FIRST_PASS_EXTRA) uniform sampler2D uPreintegrated;  // the slots' tables, stacked
 
 in vec2 vUv;
 layout(location = 0) out vec4 oIrradiance;
@@ -99,19 +96,9 @@ void main() {
         environmentVisibility = specularOcclusion(clamp(dot(N, V), 0.0, 1.0), environment.a, roughness);
         if (keepSpecular) specular += environmentSpecular(uEnergy, N, V, roughness, rhoS) * environmentVisibility;
     }
-    // The slot whose technique is "preintegrated", or 0.
-    int preintegratedSlot = 0;
-    float curvaturePerMm = 0.0;
-    bool scatterShadows = false;
-    if (uProfiles.anyScattersInLighting != 0) {
-        vec4 scatter = texelFetch(uScatter, pixel, 0);
-        int slot = int(scatter.w + 0.5);
-        if (slot > 0 && slot <= DERMIS_MAX_PROFILES && uProfiles.profiles[slot].scattersInLighting != 0) {
-            preintegratedSlot = slot;
-            curvaturePerMm = scatter.z;
-            scatterShadows = preintegratedShadowShows(uProfiles.profiles[slot].shadowSigmaMm, -viewPositionM.z);
-        }
-    }
+    // s.technique != 0: the pixel's technique scatters in this pass.
+    LightingScatterSurface s = lightingScatterSurface(pixel);
+    bool scatterShadows = s.technique != 0 && lightingScatterShadowShows(s, -viewPositionM.z);
     vec4 shadowed = vec4(0.0);
     int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {
@@ -119,15 +106,14 @@ void main() {
         vec3 L;
         vec3 radiance = incidentRadiance(light, worldPositionM, L);
         float nDotL = dot(N, L);
-        // Pre-integrated light wraps past the terminator (where D(N.L) > 0).
-        if (nDotL <= 0.0 && preintegratedSlot == 0) continue;
+        // Scattered light wraps past the terminator (where the falloff is > 0).
+        if (nDotL <= 0.0 && s.technique == 0) continue;
         int slot = int(light.shadowSlot);
         float visibility = 1.0;
-        vec3 diffuseVisibility = vec3(1.0);  // pre-integrated skin: the shadow the profile scatters
+        vec3 diffuseVisibility = vec3(1.0);  // where the technique scatters here: the shadow the profile scatters
         if (slot >= 0) {
             if (scatterShadows) {
-                vec4 scattered = preintegratedShadow(uPreintegrated, preintegratedSlot, uProfiles.profiles[preintegratedSlot].shadowSigmaMm,
-                                                     uShadowMaps[slot], light, worldPositionM, N, nDotL);
+                vec4 scattered = lightingScatterShadow(s, uShadowMaps[slot], light, worldPositionM, N, nDotL);
                 diffuseVisibility = scattered.rgb;
                 visibility = scattered.a;
             } else {
@@ -137,8 +123,7 @@ void main() {
             if (nDotL > 0.0) shadowed[slot] = visibility;
         }
         float diffuseShare = conserveEnergy ? energyLeftForDiffuse(uEnergy, max(nDotL, 0.0), roughness, rhoS) : 1.0;
-        vec3 falloff = vec3(nDotL);
-        if (preintegratedSlot > 0) falloff = preintegratedFalloff(uPreintegrated, preintegratedSlot, nDotL, curvaturePerMm);
+        vec3 falloff = s.technique != 0 ? lightingScatterFalloff(s, nDotL) : vec3(nDotL);
         irradiance += radiance * (falloff * diffuseVisibility * diffuseShare);
         if (nDotL <= 0.0) continue;
         if (keepSpecular) specular += radiance * (visibility * ksSpecular(uBeckmann, N, L, V, roughness, rhoS));

@@ -50,18 +50,18 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
             const graph::TextureHandle hdr = addSkyboxPass(
                 graph, frame, gbuffer, addCompositePass(graph, frame, gbuffer, diffuse, lighting.irradiance, lighting.specular, lean));
             graph.markOutput(aov == Aov::Final ? addTonemapPass(graph, frame, hdr, output)
-                                               : addAovPass(graph, frame, {gbuffer, {}, {}, hdr}, output));
+                                               : addAovPass(graph, frame, {gbuffer, {}, {}, hdr, {}}, output));
             return;
         }
         if (aov == Aov::Specular) {
             const graph::TextureHandle specular = addLeanSpecularPass(graph, frame, gbuffer, lean, lighting.specular);
-            graph.markOutput(addAovPass(graph, frame, {gbuffer, {}, specular, {}}, output));
+            graph.markOutput(addAovPass(graph, frame, {gbuffer, {}, specular, {}, {}}, output));
             return;
         }
         graph.markOutput(addAovPass(graph, frame, {gbuffer, diffuse, {}, {}, lighting.irradiance}, output));
         return;
     }
-    AovInputs aovInputs{gbuffer, {}, lighting.specular, {}};
+    AovInputs aovInputs{gbuffer, {}, lighting.specular, {}, {}};
     if (aov == Aov::Irradiance) aovInputs.component = lighting.irradiance;
     if (aov == Aov::Ao) aovInputs.component = ambientOcclusion;
     if (aov == Aov::Transmittance || aov == Aov::Thickness) {

@@ -18,10 +18,21 @@ Result<std::string> readFile(const std::string& path) {
     return text.str();
 }
 
-Status expandIncludes(const std::string& file, const std::string& path, std::set<std::string>& included, int depth,
+struct IncludeContext {
+    const std::vector<GeneratedInclude>& generated;
+    std::set<std::string> included;
+};
+
+Result<std::string> readInclude(const IncludeContext& context, const std::string& name) {
+    for (const GeneratedInclude& generated : context.generated) {
+        if (generated.name == name) return generated.text;
+    }
+    return readFile(shaderDirectory() + "/include/" + name);
+}
+
+Status expandIncludes(const std::string& file, const Result<std::string>& text, IncludeContext& context, int depth,
                       std::string& out) {
     if (depth > kMaxIncludeDepth) return makeError(file, "#include nested too deeply");
-    auto text = readFile(path);
     if (!text.ok()) return text.error();
     std::istringstream lines(*text);
     std::string line;
@@ -36,9 +47,8 @@ Status expandIncludes(const std::string& file, const std::string& path, std::set
                 return makeError(file + ":" + std::to_string(lineNumber), "malformed #include");
             }
             const std::string name = line.substr(open + 1, close - open - 1);
-            if (included.insert(name).second) {
-                const Status status =
-                    expandIncludes(name, shaderDirectory() + "/include/" + name, included, depth + 1, out);
+            if (context.included.insert(name).second) {
+                const Status status = expandIncludes(name, readInclude(context, name), context, depth + 1, out);
                 if (!status.ok()) return status;
             }
             continue;
@@ -75,14 +85,15 @@ std::string shaderDirectory() {
     return DERMIS_SOURCE_SHADER_DIR;
 }
 
-Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines) {
+Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines,
+                                     const std::vector<GeneratedInclude>& generatedIncludes) {
     std::string out = "#version 450 core\n";
     for (const ShaderDefine& define : defines) out += "#define " + define.name + " " + define.value + "\n";
     // Restart line numbering so compile errors point at the file's own lines
     // (approximately: included files shift them).
     out += "#line 1\n";
-    std::set<std::string> included;
-    const Status status = expandIncludes(file, shaderDirectory() + "/" + file, included, 0, out);
+    IncludeContext context{generatedIncludes, {}};
+    const Status status = expandIncludes(file, readFile(shaderDirectory() + "/" + file), context, 0, out);
     if (!status.ok()) return status.error();
     return out;
 }
@@ -97,7 +108,7 @@ Result<Program> buildProgram(const ProgramSource& source) {
                                                            {GL_COMPUTE_SHADER, &source.computeFile}};
     for (const auto& [stage, file] : files) {
         if (file->empty()) continue;
-        auto text = loadShaderSource(*file, source.defines);
+        auto text = loadShaderSource(*file, source.defines, source.generatedIncludes);
         if (!text.ok()) {
             cleanup();
             return text.error();

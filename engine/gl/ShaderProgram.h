@@ -1,7 +1,9 @@
 #pragma once
 // Loads GLSL 450 programs from the shaders/ folder. Sources may
-// `#include "file.glsl"` (resolved in shaders/include/, each file once), and
-// callers may prepend #defines (Jimenez-style configurable headers).
+// `#include "file.glsl"` (resolved in shaders/include/, each file once, or
+// among the caller's generated includes: text a registry writes, such as the
+// lighting pass's dispatch over the SSS techniques), and callers may prepend
+// #defines (Jimenez-style configurable headers).
 //
 // The shader folder is $DERMIS_SHADER_DIR when set, else the source tree's
 // shaders/ (compiled in), so an installed binary and the viewer's hot reload
@@ -20,17 +22,26 @@ struct ShaderDefine {
     std::string value;
 };
 
+// An include whose text the program's caller makes; `#include "name"` finds it
+// before the shader folder, and its own #includes are expanded like a file's.
+struct GeneratedInclude {
+    std::string name;
+    std::string text;
+};
+
 struct ProgramSource {
     std::string vertexFile;    // relative to the shader folder
     std::string fragmentFile;  // empty for a depth-only program
     std::vector<ShaderDefine> defines;
     std::string computeFile;   // a compute program: set this and leave the two above empty
+    std::vector<GeneratedInclude> generatedIncludes;
 };
 
 std::string shaderDirectory();
 
 // Reads a file with its #includes expanded; errors name the file that is missing.
-Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines);
+Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines,
+                                     const std::vector<GeneratedInclude>& generatedIncludes = {});
 
 // Compiles and links; errors carry the file name and the driver's log.
 Result<Program> buildProgram(const ProgramSource& source);

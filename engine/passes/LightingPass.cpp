@@ -9,7 +9,7 @@ struct LightingData {
     std::vector<graph::TextureHandle> shadowMaps;
     graph::TextureHandle ambientOcclusion;
     graph::TextureHandle leanCross;
-    graph::TextureHandle scatter;  // read for the "preintegrated" technique: its slot and the curvature
+    graph::TextureHandle scatter;  // read where a technique scatters in this pass (render/LightingScatter.h): slot, curvature
     Lighting out;
 };
 }  // namespace
@@ -57,7 +57,7 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 if (d.gbuffer.environment.isValid()) glBindTextureUnit(9, resources.texture(d.gbuffer.environment));
                 if (d.scatter.isValid()) {
                     glBindTextureUnit(10, resources.texture(d.scatter));
-                    glBindTextureUnit(DERMIS_UNIT_FIRST_PASS_EXTRA, frame.gl->preintegratedTables);
+                    glBindTextureUnit(DERMIS_UNIT_FIRST_PASS_EXTRA, frame.gl->lightingTables);
                 }
                 frame.gl->drawFullscreenTriangle();
             })

@@ -60,8 +60,9 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
 // A technique's passes: they read the chain start and add into `chain`, which they return.
 using AddSssTechniquePasses = SssChain (*)(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const SssStart& start, SssChain chain);
-// The GL half of the technique registry (scene/SssTechniques.h): each
-// technique's passes, in kSssTechniques' order.
+// The GL half of the technique registry (scene/SssTechniques.h): a
+// technique's passes; null for one that adds none (it scatters in the
+// lighting pass: SssTechniqueInfo::scattersInLighting).
 AddSssTechniquePasses sssTechniquePasses(SssTechnique technique);
 
 constexpr int kAnySssPixel = -1;

@@ -35,7 +35,7 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
     const float pixelsPerMm = plan.visible ? pixelsPerMetreAtUnitDepth * 1e-3f / plan.nearestViewDepthM : 0.0f;
     plan.initWeight = glm::vec3(0.0f);
     plan.steps.clear();
-    if (sssTechniqueInfo(plan.choice.technique).scattersInLighting) {
+    if (sssTechniqueInfo(plan.choice.technique).scattersInLighting()) {
         // The lighting pass scattered already: the chain keeps the whole irradiance.
         for (const glm::vec3& weight : weights) plan.initWeight += weight;
         return;
@@ -85,7 +85,7 @@ RankedChoice chooseFromSettingsOrTable(const Scene& scene, float pixelsPerMm) {
 // texture space cannot run falls back to the d'Eon chain instead.
 RankedChoice chooseSss(const Scene& scene, float pixelsPerMm) {
     RankedChoice ranked = chooseFromSettingsOrTable(scene, pixelsPerMm);
-    if (scene.settings.mode == SssMode::TextureSpace && sssTechniqueInfo(ranked.choice.technique).scattersInLighting) {
+    if (scene.settings.mode == SssMode::TextureSpace && sssTechniqueInfo(ranked.choice.technique).scattersInLighting()) {
         SssChoice chain = ranked.choice;
         chain.technique = SssTechnique::Gaussians;
         ranked.choice = chain.canonical();
@@ -109,13 +109,13 @@ bool SssPlan::anyVisible() const {
 
 bool SssPlan::anyScattersInLighting() const {
     return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
-        return s.visible && sssTechniqueInfo(s.choice.technique).scattersInLighting;
+        return s.visible && sssTechniqueInfo(s.choice.technique).scattersInLighting();
     });
 }
 
 bool SssPlan::onlyLightingScatters() const {
     return anyVisible() && std::all_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
-               return !s.visible || sssTechniqueInfo(s.choice.technique).scattersInLighting;
+               return !s.visible || sssTechniqueInfo(s.choice.technique).scattersInLighting();
            });
 }
 

@@ -37,7 +37,7 @@ struct FrameServices {
     GLuint emptyVertexArray = 0;
     GLuint whiteTexture = 0;    // 1x1 RGBA8 white: a neutral input (AO = 1)
     GLuint blackTexture = 0;    // 1x1 RGBA8 black: nothing (no transmitted light)
-    GLuint preintegratedTables = 0;  // render/PreintegratedTables.h: 0 unless some slot is "preintegrated"
+    GLuint lightingTables = 0;  // render/LightingScatter.h: 0 unless a visible slot scatters in the lighting pass
 
     void setViewport(int w, int h) const { glViewport(0, 0, w, h); }
     void drawFullscreenTriangle() const;

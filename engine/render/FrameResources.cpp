@@ -4,7 +4,6 @@
 #include "brdf/BeckmannTable.h"
 #include "brdf/EnergyTable.h"
 #include "scene/SssTechniques.h"
-#include "sss/PreintegratedShadow.h"
 
 #include <algorithm>
 
@@ -146,8 +145,8 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
 
     gpu::ProfilesBlock profiles{};
     // The lighting pass reads the tables (and binds them) only where a visible slot needs them.
-    const bool preintegrated = mPreintegrated.prepare(plan.sss) && plan.sss.anyScattersInLighting();
-    mServices.preintegratedTables = preintegrated ? mPreintegrated.texture() : 0;
+    const bool lightingTables = mLightingTables.prepare(plan.sss) && plan.sss.anyScattersInLighting();
+    mServices.lightingTables = lightingTables ? mLightingTables.texture() : 0;
     for (const SssSlotPlan& slot : plan.sss.slots) {
         gpu::ProfileParams& p = profiles.profiles[slot.slot];
         const auto& gaussians = slot.profile->gaussians();
@@ -155,12 +154,13 @@ void FrameResources::uploadSssBlocks(const FramePlan& plan) {
         for (size_t i = 0; i < n; ++i) p.gaussians[i] = glm::vec4(gaussians[i].weight, gaussians[i].varianceMm2);
         p.gaussianCount = int(n);
         p.initWeight = slot.initWeight;
-        p.scattersInLighting = sssTechniqueInfo(slot.choice.technique).scattersInLighting ? 1 : 0;
-        p.shadowSigmaMm = float(preintegratedShadowSigmaMm(*slot.profile, slot.widthScale));
+        const SssLightingScatter& lighting = sssTechniqueInfo(slot.choice.technique).lighting;
+        p.lightingTechnique = lightingTechniqueId(slot.choice.technique);
+        p.lightingParameter = lighting.slotParameter ? lighting.slotParameter(*slot.profile, slot.widthScale) : 0.0f;
     }
     profiles.transmittanceShrinkMm = scene.settings.transmittance.shrinkMm;
     profiles.transmittanceStrength = scene.settings.transmittance.strength;
-    profiles.anyScattersInLighting = preintegrated ? 1 : 0;
+    profiles.anyScattersInLighting = lightingTables ? 1 : 0;
     glNamedBufferSubData(mProfileUniforms.get(), 0, sizeof profiles, &profiles);
 }
 

@@ -14,7 +14,7 @@
 #include "plan/FramePlan.h"
 #include "render/GpuEnvironment.h"
 #include "render/GpuScene.h"
-#include "render/PreintegratedTables.h"
+#include "render/LightingScatter.h"
 #include "render/Programs.h"
 #include "plan/SceneGeometry.h"
 #include "render/GpuEnvironment.h"
@@ -63,7 +63,7 @@ private:
     gl::Texture mEnergy;
     gl::Texture mWhite;
     gl::Texture mBlack;
-    PreintegratedTables mPreintegrated;
+    LightingTables mLightingTables;
     struct ShadowMap {
         gl::Texture texture;
         graph::TextureDesc desc;

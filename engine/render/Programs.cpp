@@ -2,6 +2,7 @@
 
 #include "brdf/BeckmannTable.h"
 #include "plan/SssVariant.h"
+#include "render/LightingScatter.h"
 
 #include <string>
 #include <utility>
@@ -13,11 +14,12 @@ Result<Programs> Programs::build() {
     Programs programs;
     // Every program as (where it goes, its source), built in one loop below.
     std::vector<std::pair<gl::Program*, gl::ProgramSource>> builds;
-    auto add = [&builds](gl::Program& into, const char* vertex, const char* fragment,
+    const std::vector<gl::GeneratedInclude> generated = {lightingTechniquesGlsl()};
+    auto add = [&builds, &generated](gl::Program& into, const char* vertex, const char* fragment,
                          const std::vector<gl::ShaderDefine>& extra = {}, const char* compute = "") {
         std::vector<gl::ShaderDefine> defines = {{"DERMIS_BECKMANN_SIZE", std::to_string(kBeckmannTableSize)}};
         defines.insert(defines.end(), extra.begin(), extra.end());
-        builds.push_back({&into, {vertex, fragment, std::move(defines), compute}});
+        builds.push_back({&into, {vertex, fragment, std::move(defines), compute, generated}});
     };
     // The programs that light with the environment, with its code (DERMIS_ENVIRONMENT 1)
     // and without it (0), for frames with no environment.

@@ -29,7 +29,8 @@ inline constexpr EnumTable<SssMode, 2> kSssModes{
 // The screen-space SSS technique (settings.sss.technique): how the
 // irradiance is spread by the profile. Each has its own descriptor
 // (scene/SssTechniques.h: its settings, its tuner candidates), its own passes
-// (passes/SssTechniquePasses.cpp) and its own shaders.
+// (passes/SssTechniquePasses.cpp) or lighting-pass hook (render/LightingScatter.h)
+// and its own shaders.
 enum class SssTechnique {
     Gaussians,
     Separable,

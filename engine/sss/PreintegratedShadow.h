@@ -36,7 +36,7 @@
 // an edge that is not straight over the disc (a corner, a thin shadow), and the disc's
 // DERMIS_PCSS_FILTER_SAMPLES taps, which quantise c in steps of 1/64.
 
-#include "include/SharedConstants.glsl"
+#include "include/PreintegratedConstants.glsl"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>

@@ -42,7 +42,7 @@
 // y_j = (j + 1/2) / curvatures. Shaders sample it with CLAMP_TO_EDGE and LINEAR at
 // uv = (x, y).
 
-#include "include/SharedConstants.glsl"
+#include "include/PreintegratedConstants.glsl"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
@@ -73,7 +73,7 @@ struct PreintegratedTable {
     glm::vec3 at(float cosTheta, float curvaturePerMm) const;
 };
 
-// The table for one profile and width scale, with the default shape (SharedConstants.glsl).
+// The table for one profile and width scale, with the default shape (include/PreintegratedConstants.glsl).
 // Built at run time, on the calling thread: 3.4 ms for skin (six Gaussians) on one core.
 PreintegratedTable makePreintegratedTable(const DiffusionProfile& profile, float widthScale);
 

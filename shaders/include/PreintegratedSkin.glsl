@@ -18,12 +18,11 @@
 //   sampled linearly with clamping: u = (N.L + 1) / 2 and
 //   v = sqrt(curvature / DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM) (the square
 //   root gives the gently curved cheek, where the falloff changes fastest with
-//   curvature, most rows). Texel centres hold the exact values. The slots'
-//   tables are stacked in one 2-D texture, slot s in rows s x CURVATURES up
-//   (render/PreintegratedTables.h), slot s from row s x DERMIS_PREINTEGRATED_SLOT_ROWS
-//   up: its falloff, then its shadow table; v is clamped to the texel centres of
-//   the table it reads so that no row of its neighbours leaks in. (A 2-D array
-//   texture sampled in the lights' loop crashed llvmpipe's shader compiler, LLVM 15.)
+//   curvature, most rows). Texel centres hold the exact values. Each slot's
+//   falloff and shadow tables (DERMIS_PREINTEGRATED_SLOT_ROWS rows) are its
+//   table in the lighting pass's stacked texture (include/LightingScatter.glsl,
+//   engine/render/LightingScatter.h); x and the row are clamped to the texel
+//   centres of the table read so that no row of a neighbour leaks in.
 //
 // CURVATURE
 //   Per pixel from the G-buffer's scatter target (z, 1/mm): gbuffer.frag's
@@ -36,7 +35,7 @@
 //   shadows; sss/PreintegratedShadow.h has the model and its table): the
 //   shadow map's coverage of a disc of radius k sigma sqrt(1 + q^2) around the
 //   receiver, in its tangent plane (k = DERMIS_PREINTEGRATED_SHADOW_STDDEVS,
-//   sigma = ProfileParams.shadowSigmaMm, q = h / (2 sigma), h the light's
+//   sigma = ProfileParams.lightingParameter, q = h / (2 sigma), h the light's
 //   penumbra half-width from PCSS's blocker search, at least one map texel,
 //   stretched onto the surface by 1 / cos(N, L)) and q look up the scattered
 //   shadow (rgb), which multiplies the falloff, and the light's own
@@ -52,45 +51,46 @@
 #ifndef DERMIS_PREINTEGRATED_SKIN_GLSL
 #define DERMIS_PREINTEGRATED_SKIN_GLSL
 
+#include "PreintegratedConstants.glsl"
+#include "LightingScatter.glsl"
+#include "Shadows.glsl"
+
 #if DERMIS_PREINTEGRATED_COSINES < 2 || DERMIS_PREINTEGRATED_CURVATURES < 2
 #error "the pre-integrated table needs at least 2 x 2 texels"
 #endif
 #if DERMIS_PREINTEGRATED_SHADOW_ROWS < 1
 #error "the pre-integrated shadow table needs at least one row"
 #endif
-
-#include "Shadows.glsl"
-
-// The texture's v for a row (texel units) of a slot's tables.
-float preintegratedV(int slot, float row) {
-    return (row + float(slot * DERMIS_PREINTEGRATED_SLOT_ROWS)) / float(DERMIS_PREINTEGRATED_SLOT_ROWS * (DERMIS_MAX_PROFILES + 1));
-}
+#if DERMIS_LIGHTING_TABLE_COLUMNS < DERMIS_PREINTEGRATED_COSINES || DERMIS_LIGHTING_TABLE_SLOT_ROWS < DERMIS_PREINTEGRATED_SLOT_ROWS
+#error "the lighting tables' texture is smaller than the pre-integrated table (engine/scene/SssTechniquePreintegrated.cpp)"
+#endif
 
 // The slot's scattered share of one light: D(N.L, curvature) per channel.
-vec3 preintegratedFalloff(sampler2D tables, int slot, float nDotL, float curvaturePerMm) {
+vec3 preintegratedFalloff(LightingScatterSurface s, float nDotL) {
     const float rows = float(DERMIS_PREINTEGRATED_CURVATURES);
-    float u = 0.5 * clamp(nDotL, -1.0, 1.0) + 0.5;
-    float v = sqrt(clamp(curvaturePerMm / float(DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM), 0.0, 1.0));
-    return textureLod(tables, vec2(u, preintegratedV(slot, clamp(v * rows, 0.5, rows - 0.5))), 0.0).rgb;
+    const float columns = float(DERMIS_PREINTEGRATED_COSINES);
+    float x = clamp((0.5 * clamp(nDotL, -1.0, 1.0) + 0.5) * columns, 0.5, columns - 0.5);
+    float y = sqrt(clamp(s.curvaturePerMm / float(DERMIS_PREINTEGRATED_MAX_CURVATURE_PER_MM), 0.0, 1.0));
+    return textureLod(uLightingTables, lightingTableUv(s.slot, x, clamp(y * rows, 0.5, rows - 0.5)), 0.0).rgb;
 }
 
-// Whether the scattered shadow can show at this pixel: the slot's sigma covers
-// DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX on screen. Further away the plain
-// shadow lookup is used: it costs less (it skips most taps where PCSS's
-// blocker search finds nothing), and the scattering is under a pixel.
-bool preintegratedShadowShows(float sigmaMm, float viewDepthM) {
-    return sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / max(viewDepthM, 1e-4) >= float(DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX);
+// Whether the scattered shadow can show at this pixel: the slot's sigma
+// (s.parameter, mm) covers DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX on screen.
+// Further away the plain shadow lookup is used: it costs less (it skips most
+// taps where PCSS's blocker search finds nothing), and the scattering is under
+// a pixel.
+bool preintegratedShadowShows(LightingScatterSurface s, float viewDepthM) {
+    return s.parameter * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / max(viewDepthM, 1e-4) >= float(DERMIS_PREINTEGRATED_SHADOW_MIN_SIGMA_PX);
 }
 
 // One shadowed light seen by the slot's skin (nDotL: N.L of the light's
 // direction): rgb the light it scatters across the shadow edge, alpha the
 // light's own visibility (SHADOWS above).
-vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D shadowMap, GpuLight light,
-                         vec3 worldPositionM, vec3 N, float nDotL) {
+vec4 preintegratedShadow(LightingScatterSurface s, sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, float nDotL) {
     vec2 uv;
     ShadowFrame f;
     if (!shadowReceiver(light, worldPositionM, N, uv, f)) return vec4(1.0);
-    float sigmaM = sigmaMm * 1e-3;
+    float sigmaM = s.parameter * 1e-3;
     // One map texel: the sharpest edge the map resolves (a delta light's).
     float halfWidthM = f.metresPerTexel;
     if (light.size > 0.0 && int(light.shadowFilter + 0.5) == DERMIS_SHADOW_FILTER_PCSS) {
@@ -104,11 +104,10 @@ vec4 preintegratedShadow(sampler2D tables, int slot, float sigmaMm, sampler2D sh
     halfWidthM /= clamp(nDotL, 0.2, 1.0);
     float q = halfWidthM / (2.0 * sigmaM);
     float coverage = surfaceDiscPcf(shadowMap, light, f, float(DERMIS_PREINTEGRATED_SHADOW_STDDEVS) * sigmaM * sqrt(1.0 + q * q));
-    const float columns = float(DERMIS_PREINTEGRATED_COSINES);
     const float rows = float(DERMIS_PREINTEGRATED_SHADOW_ROWS);
-    float u = (coverage * (columns - 1.0) + 0.5) / columns;
+    float x = coverage * float(DERMIS_PREINTEGRATED_COSINES - 1) + 0.5;
     float row = clamp(q / (1.0 + q) * rows, 0.5, rows - 0.5) + float(DERMIS_PREINTEGRATED_CURVATURES);
-    return textureLod(tables, vec2(u, preintegratedV(slot, row)), 0.0);
+    return textureLod(uLightingTables, lightingTableUv(s.slot, x, row), 0.0);
 }
 
 #endif

@@ -156,8 +156,8 @@ struct ProfileParams {
     vec4 gaussians[DERMIS_MAX_PROFILE_GAUSSIANS];  // rgb: weight (normalised per channel), a: variance (mm^2)
     vec3 initWeight;       // the SSS accumulation starts with it: the identity plus skipped narrow Gaussians
     int gaussianCount;
-    int scattersInLighting;  // 1: technique "preintegrated", the lighting pass reads the slot's table
-    float shadowSigmaMm;     // the widest Gaussian's standard deviation x width scale (sss/PreintegratedShadow.h)
+    int lightingTechnique;    // 0, or its technique's id + 1 where it scatters in the lighting pass (render/LightingScatter.h)
+    float lightingParameter;  // that technique's per-slot value (SssLightingScatter::slotParameter)
     int unused1;
     int unused2;
 };
@@ -166,7 +166,7 @@ DERMIS_BLOCK(ProfilesBlock, DERMIS_BINDING_PROFILES) {
     ProfileParams profiles[DERMIS_MAX_PROFILES + 1];  // [slot]; [0] is unused (no SSS)
     float transmittanceShrinkMm;
     float transmittanceStrength;
-    int anyScattersInLighting;  // 1: some visible slot is "preintegrated" (the lighting pass binds the tables)
+    int anyScattersInLighting;  // 1: some visible slot scatters in the lighting pass (it binds the tables)
     int unused;
 } DERMIS_BLOCK_END(uProfiles)
 

@@ -14,6 +14,7 @@
 #include "plan/SceneGeometry.h"
 #include "render/SceneLoading.h"
 #include "scene/SceneLoader.h"
+#include "scene/SssTechniques.h"
 
 #include <gtest/gtest.h>
 
@@ -197,6 +198,24 @@ TEST(FrameDeclaration, PreintegratedSkinRunsNoSssPass) {
     EXPECT_EQ(frames.culledBecause("sss init"), "predicate: every SSS slot on screen scatters in the lighting pass");
     EXPECT_TRUE(frames.executed("lighting"));
     EXPECT_TRUE(frames.executed("composite"));
+}
+
+// The registry's two halves agree (scene/SssTechniques.h and
+// passes/SssTechniquePasses.cpp): every technique either runs SSS passes of
+// its own after `sss init` or scatters in the lighting pass, never neither
+// (a technique missing from the passes' list would leave its skin unblurred)
+// and never both.
+TEST(FrameDeclaration, EveryTechniqueBlursOrScattersInLighting) {
+    for (const dermis::EnumEntry<dermis::SssTechnique>& technique : dermis::kSssTechniques) {
+        DeclaredFrames frames("default.json", {"sss.technique=" + std::string(technique.name)});
+        ASSERT_TRUE(frames.declare()) << technique.name;
+        const int techniquePasses = frames.executedWithPrefix("sss") - (frames.executed("sss init") ? 1 : 0);
+        if (dermis::sssTechniqueInfo(technique.value).scattersInLighting()) {
+            EXPECT_EQ(techniquePasses, 0) << technique.name << "\n" << frames.listing();
+        } else {
+            EXPECT_GT(techniquePasses, 0) << technique.name << "\n" << frames.listing();
+        }
+    }
 }
 
 TEST(FrameDeclaration, OffScreenScreenSpaceCharacterRunsNoBlur) {
