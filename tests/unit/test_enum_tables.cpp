@@ -8,6 +8,7 @@
 #include "scene/JsonReader.h"
 #include "scene/SceneEnums.h"
 #include "scene/SceneLoader.h"
+#include "scene/SssTechniques.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -51,6 +52,24 @@ TEST(EnumTables, EveryValueHasOneNameThatRoundTrips) {
     expectRoundTrips(kSssBlurs);
     expectRoundTrips(kShadowFilters);
     expectRoundTrips(kAovs);
+}
+
+// The technique registry (scene/SssTechniques.cpp) has one descriptor per
+// kSssTechniques entry, in its order: a technique added to the enum but not
+// to the registry (or the other way round) fails here, in a release build too.
+TEST(EnumTables, TheTechniqueRegistryHasOneDescriptorPerTechnique) {
+    ASSERT_EQ(sssTechniques().size(), kSssTechniques.size());
+    size_t i = 0;
+    for (const EnumEntry<SssTechnique>& technique : kSssTechniques) {
+        EXPECT_EQ(int(sssTechniques()[i].technique), int(technique.value)) << technique.name;
+        EXPECT_FALSE(sssTechniques()[i].candidates.empty()) << technique.name << ": the tuner would never try it";
+        const SssLightingScatter& lighting = sssTechniques()[i].lighting;
+        if (sssTechniques()[i].scattersInLighting()) {
+            EXPECT_TRUE(lighting.glslPrefix && lighting.makeTable && lighting.tableColumns > 0 && lighting.tableRows > 0)
+                << technique.name << ": a lighting-pass technique needs its prefix and table";
+        }
+        ++i;
+    }
 }
 
 TEST(EnumTables, ListsAndHelpLines) {
