@@ -48,6 +48,8 @@ constexpr double kMaxFarOverNear = 1e5;
 constexpr double kMinVerticalFovDeg = 1.0;
 constexpr double kMaxVerticalFovDeg = 179.0;
 constexpr double kMaxExposure = 1e4;
+// settings.lod.max_error_px: beyond a few pixels a level of detail is a visible change of shape.
+constexpr double kMaxLodErrorPx = 8.0;
 constexpr double kMaxLightRadiusM = 1.0;
 
 // Light values and sizes that stay inside float32 everywhere the renderer

@@ -53,8 +53,12 @@ void Renderer::warnOfFallbacks(const FramePlan& plan) {
     }
 }
 
-Status Renderer::renderFrame(const FrameRequest& request) {
+Status Renderer::renderFrame(const FrameRequest& frameRequest) {
     if (const Status loaded = loadEnvironment(mScene, mGeometry); !loaded.ok()) return loaded.error();
+    FrameRequest request = frameRequest;
+    if (request.previousLods.empty() && mPlan) {
+        for (const CharacterPlacement& character : mPlan->characters) request.previousLods.push_back(character.lod);
+    }
     auto plan = planFrame(mScene, mGeometry, request, mShadowCache);
     if (!plan.ok()) return plan.error();
     mPlan = std::move(*plan);
@@ -134,6 +138,8 @@ std::vector<CharacterReport> Renderer::characterReports() const {
         report.culledBecause = placement.culledBecause;
         report.animated = placement.animated;
         report.clipTimeS = placement.clipTimeS;
+        report.lod = placement.lod;
+        report.lodErrorPx = placement.lodErrorPx;
         for (const TsCharacterPlan& ts : mPlan->ts.characters) {
             if (static_cast<size_t>(ts.character) != c || !mPlan->textureSpace) continue;
             report.textureSpaceSize = ts.runs() ? ts.size : 0;

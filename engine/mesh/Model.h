@@ -55,12 +55,23 @@ struct Submesh {
     int material = 0;  // index into Model::materials
 };
 
+// A coarser triangle list over the model's own vertices (mesh/MeshLod.h).
+struct LodLevel {
+    std::vector<uint32_t> indices;  // triangle list over the model's vertices
+    std::vector<Submesh> ranges;    // one per draw range of the full mesh, same order, into `indices`
+    // How far the surface moved from the full mesh's, object units: the
+    // simplifier's estimate with a margin (mesh/MeshLod.h kLodErrorMargin).
+    float errorObject = 0.0f;
+    size_t triangleCount() const { return indices.size() / 3; }
+};
+
 struct Model {
     MeshData mesh;
     std::vector<glm::vec4> colours;          // COLOR_0 per merged vertex (linear RGBA); empty = all white
     std::vector<ModelMaterial> materials{1};  // never empty
     std::vector<Submesh> submeshes;          // in index order; empty = the whole mesh uses materials[0]
     Rig rig;
+    std::vector<LodLevel> lods;  // levels of detail, finest first (mesh/MeshLod.h); empty: none
 
     // The submeshes, or one covering the whole mesh with materials[0].
     std::vector<Submesh> drawRanges() const;

@@ -77,8 +77,9 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                     glDisable(GL_CULL_FACE);
                 }
                 glBindVertexArray(character.mesh.vertexArray.get());
-                for (size_t s = 0; s < character.submeshes.size(); ++s) {
-                    const GpuSubmesh& submesh = character.submeshes[s];
+                const std::vector<GpuSubmesh>& submeshes = character.submeshesAt(frame.plan.characters[index].lod);
+                for (size_t s = 0; s < submeshes.size(); ++s) {
+                    const GpuSubmesh& submesh = submeshes[s];
                     const GpuMaterial& material = character.materials[submesh.material];
                     frame.gl->uploadObject(frame.objectBlock(index, s));
                     glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOf(index, s), 0xFF);

@@ -60,7 +60,7 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                         block.cubeFace = float(face);
                         frame.gl->uploadObject(block);
                         glBindVertexArray(character.mesh.vertexArray.get());
-                        glDrawElements(GL_TRIANGLES, character.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+                        character.wholeMeshAt(frame.plan.characters[index].lod).draw();
                     }
                 }
                 glDisable(GL_DEPTH_TEST);

@@ -1,5 +1,6 @@
 #include "plan/FramePlan.h"
 
+#include "plan/LevelOfDetail.h"
 #include "plan/ScreenFootprint.h"
 #include "plan/SssVariant.h"
 
@@ -26,6 +27,25 @@ void markVisibleCharacters(const FrameRequest& request, FramePlan& plan) {
         const ScreenFootprint footprint = screenFootprint(c.worldBounds, plan.view);
         c.visible = request.everyCharacterVisible || footprint.visible;
         c.culledBecause = c.visible ? "" : std::string("off screen: ") + footprint.outside;
+    }
+}
+
+// Each visible character's level of detail (plan/LevelOfDetail.h), by its
+// pixels per object unit at its nearest view depth.
+void chooseLevelsOfDetail(const Scene& scene, const SceneGeometry& geometry, const FrameRequest& request, FramePlan& plan) {
+    const float maxErrorPx = scene.settings.lod.maxErrorPx;
+    for (size_t c = 0; c < plan.characters.size(); ++c) {
+        CharacterPlacement& placement = plan.characters[c];
+        const std::vector<float>& errors = geometry.lodErrorsObject(c);
+        if (!placement.visible || errors.empty() || request.everyCharacterVisible) continue;
+        const glm::mat4& m = placement.worldFromObject;
+        const float metresPerUnit =
+            std::max({glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
+        const float depthM = screenFootprint(placement.worldBounds, plan.view).nearestViewDepthM;
+        const float pixelsPerUnit = plan.view.pixelsPerMetreAtUnitDepth() / std::max(depthM, plan.view.nearM) * metresPerUnit;
+        const int previous = c < request.previousLods.size() ? request.previousLods[c] : -1;
+        placement.lod = chooseLodLevel(errors, pixelsPerUnit, maxErrorPx, previous);
+        placement.lodErrorPx = placement.lod > 0 ? errors[size_t(placement.lod - 1)] * pixelsPerUnit : 0.0f;
     }
 }
 
@@ -132,7 +152,10 @@ void planShadows(const Scene& scene, const ShadowCache& cache, std::vector<Shado
         std::vector<glm::mat4> transforms;
         for (int c : s.casters.kept) transforms.push_back(plan.characters[static_cast<size_t>(c)].worldFromObject);
         s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], s.casters.kept, transforms);
-        for (int c : s.casters.kept) appendPoseKey(plan.characters[static_cast<size_t>(c)], s.key);
+        for (int c : s.casters.kept) {
+            appendPoseKey(plan.characters[static_cast<size_t>(c)], s.key);
+            s.key.push_back(float(plan.characters[static_cast<size_t>(c)].lod));  // the triangles it casts with
+        }
         s.current = cache.isCurrent(static_cast<int>(slot), s.desc, s.key);
         plan.shadows.push_back(std::move(s));
     }
@@ -212,6 +235,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     }
     plan.worldBounds = unionBounds(plan.characters, false);
     markVisibleCharacters(request, plan);
+    chooseLevelsOfDetail(scene, geometry, request, plan);
     auto environment = geometry.environment(scene.environment, scene.lights.size());
     if (!environment.ok()) return environment.error();
     std::vector<glm::mat4> worldFromObject;

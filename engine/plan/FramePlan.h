@@ -59,6 +59,9 @@ struct FrameRequest {
     // Every character counts as visible: the irradiance capture renders
     // characters off screen too (Renderer::captureIrradianceTextures).
     bool everyCharacterVisible = false;
+    // Each character's level of detail last frame (FramePlan::characters[c].lod),
+    // for the hysteresis (plan/LevelOfDetail.h); empty: none.
+    std::vector<int> previousLods{};
 };
 
 // Largest frame a request may ask for (GL_MAX_TEXTURE_SIZE may be smaller).
@@ -79,6 +82,10 @@ struct CharacterPlacement {
     // Its bounds may cover a pixel (plan/ScreenFootprint.h); else why not.
     bool visible = true;
     std::string culledBecause;
+    // The level of detail it draws (plan/LevelOfDetail.h; 0: the full mesh)
+    // and that level's error projected on screen, pixels.
+    int lod = 0;
+    float lodErrorPx = 0.0f;
 };
 
 // One shadow-casting light's map this frame.

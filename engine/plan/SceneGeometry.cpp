@@ -12,8 +12,10 @@ SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
             const auto index = static_cast<size_t>(submesh.material);
             names.push_back({model.materials[index].name, index, model.materials[index].profile});
         }
-        mCharacters.push_back(
-            {model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig), std::move(names)});
+        std::vector<float> lodErrors;
+        for (const LodLevel& level : model.lods) lodErrors.push_back(level.errorObject);
+        mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig),
+                               std::move(names), std::move(lodErrors)});
     }
 }
 

@@ -43,6 +43,9 @@ public:
     const std::vector<SubmeshMaterial>& submeshMaterials(size_t character) const {
         return mCharacters[character].submeshMaterials;
     }
+    // Each level of detail's error against the full mesh, object units, finest
+    // first (mesh/Model.h LodLevel); empty: the character has no levels.
+    const std::vector<float>& lodErrorsObject(size_t character) const { return mCharacters[character].lodErrorsObject; }
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second).
     const UvLayout& uvLayout(size_t character);
@@ -63,6 +66,7 @@ private:
         std::shared_ptr<const UvLayout> uvLayout;
         std::shared_ptr<const Rig> rig;
         std::vector<SubmeshMaterial> submeshMaterials;
+        std::vector<float> lodErrorsObject;
     };
     std::vector<Character> mCharacters;
 };

@@ -116,7 +116,9 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
                                        {"animated", c.animated},
                                        {"clip_time_s", c.clipTimeS},
                                        {"texture_space_size", c.textureSpaceSize},
-                                       {"texture_space_fallback", c.textureSpaceFallback}});
+                                       {"texture_space_fallback", c.textureSpaceFallback},
+                                       {"lod", c.lod},
+                                       {"lod_error_px", c.lodErrorPx}});
             nlohmann::ordered_json sss;  // null
             if (c.hasSss) {
                 sss = sssChoiceJson(c.sssChoice);
@@ -133,8 +135,14 @@ std::string describeCharacterSss(const CharacterReport& character) {
     if (!character.hasSss) return {};
     char scale[32];
     std::snprintf(scale, sizeof scale, "%.2f px/mm", character.pixelsPerMm);
+    std::string lod;
+    if (character.lod > 0) {
+        char text[64];
+        std::snprintf(text, sizeof text, ", level of detail %d (%.2f px)", character.lod, character.lodErrorPx);
+        lod = text;
+    }
     return character.name + ": " + describeSssChoice(character.sssChoice) + ", " + scale + " (" +
-           character.sssChoiceSource + ")";
+           character.sssChoiceSource + ")" + lod;
 }
 
 std::string FrameTimings::toTable(const RunInfo& info) const {

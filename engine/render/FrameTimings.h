@@ -56,6 +56,9 @@ struct CharacterReport {
     SssChoice sssChoice;
     float pixelsPerMm = 0.0f;
     std::string sssChoiceSource;
+    // Its level of detail (plan/LevelOfDetail.h; 0: the full mesh) and that level's error on screen.
+    int lod = 0;
+    float lodErrorPx = 0.0f;
 };
 
 struct RunInfo {

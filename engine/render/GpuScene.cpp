@@ -14,7 +14,14 @@
 namespace dermis {
 namespace {
 
-GpuMesh uploadMesh(const MeshData& mesh, const std::vector<glm::vec4>& colours) {
+// The full mesh's indices, then each level's.
+std::vector<uint32_t> allIndices(const Model& model) {
+    std::vector<uint32_t> indices = model.mesh.indices;
+    for (const LodLevel& level : model.lods) indices.insert(indices.end(), level.indices.begin(), level.indices.end());
+    return indices;
+}
+
+GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, const std::vector<glm::vec4>& colours) {
     GpuMesh gpu;
     const std::vector<glm::vec4> white(mesh.vertices.size(), glm::vec4(1.0f));
     const std::vector<glm::vec4>& perVertex = colours.size() == mesh.vertices.size() ? colours : white;
@@ -25,8 +32,8 @@ GpuMesh uploadMesh(const MeshData& mesh, const std::vector<glm::vec4>& colours) 
     glNamedBufferStorage(gpu.vertexBuffer.get(), static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
                          mesh.vertices.data(), 0);
     gpu.indexBuffer = gl::createBuffer();
-    glNamedBufferStorage(gpu.indexBuffer.get(), static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
-                         mesh.indices.data(), 0);
+    glNamedBufferStorage(gpu.indexBuffer.get(), static_cast<GLsizeiptr>(indices.size() * sizeof(uint32_t)), indices.data(),
+                         0);
     gpu.vertexArray = gl::createVertexArray();
     const GLuint vao = gpu.vertexArray.get();
     glVertexArrayVertexBuffer(vao, 0, gpu.vertexBuffer.get(), 0, sizeof(Vertex));
@@ -178,6 +185,16 @@ void GpuSubmesh::draw() const {
                    reinterpret_cast<const void*>(static_cast<uintptr_t>(firstIndex) * sizeof(uint32_t)));
 }
 
+const std::vector<GpuSubmesh>& GpuCharacter::submeshesAt(int lod) const {
+    if (lod <= 0 || lods.empty()) return submeshes;
+    return lods[size_t(std::min(lod, int(lods.size())) - 1)].submeshes;
+}
+
+GpuSubmesh GpuCharacter::wholeMeshAt(int lod) const {
+    if (lod <= 0 || lods.empty()) return {0, mesh.indexCount, 0};
+    return lods[size_t(std::min(lod, int(lods.size())) - 1)].whole;
+}
+
 bool GpuCharacter::hasLeanMaps() const {
     return std::any_of(materials.begin(), materials.end(), [](const GpuMaterial& m) { return m.leanMap1.isValid(); });
 }
@@ -208,7 +225,7 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         const Model& model = models[c];
         GpuCharacter gpu;
         gpu.name = character.name;
-        gpu.mesh = uploadMesh(model.mesh, model.colours);
+        gpu.mesh = uploadMesh(model.mesh, allIndices(model), model.colours);
         gpu.closedOutward = isClosedOutward(model.mesh);
         gpu.rig = uploadRig(model.rig, model.mesh);
         for (const ModelMaterial& material : model.materials) {
@@ -220,6 +237,17 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
         for (const Submesh& submesh : model.drawRanges())
             gpu.submeshes.push_back({static_cast<GLsizei>(submesh.firstIndex), static_cast<GLsizei>(submesh.indexCount),
                                      static_cast<size_t>(submesh.material)});
+        auto first = static_cast<GLsizei>(model.mesh.indices.size());
+        for (const LodLevel& level : model.lods) {
+            GpuLod lod;
+            lod.whole = {first, static_cast<GLsizei>(level.indices.size()), 0};
+            for (const Submesh& range : level.ranges) {
+                lod.submeshes.push_back({first + static_cast<GLsizei>(range.firstIndex), static_cast<GLsizei>(range.indexCount),
+                                         static_cast<size_t>(range.material)});
+            }
+            first += lod.whole.indexCount;
+            gpu.lods.push_back(std::move(lod));
+        }
         gpuScene.mCharacters.push_back(std::move(gpu));
     }
     return gpuScene;

@@ -24,8 +24,8 @@ struct GpuMesh {
     gl::VertexArray vertexArray;
     gl::Buffer vertexBuffer;
     gl::Buffer colourBuffer;  // vec4 per vertex, white where the file has no COLOR_0
-    gl::Buffer indexBuffer;
-    GLsizei indexCount = 0;
+    gl::Buffer indexBuffer;   // the full mesh's triangles, then each level of detail's
+    GLsizei indexCount = 0;   // the full mesh's
     Bounds objectBounds;
 };
 
@@ -80,15 +80,25 @@ struct GpuSubmesh {
     void draw() const;  // with the vertex array bound
 };
 
+// A level of detail (mesh/MeshLod.h): its triangles in the mesh's index buffer.
+struct GpuLod {
+    GpuSubmesh whole;                   // all of them (material unused)
+    std::vector<GpuSubmesh> submeshes;  // per submesh of the full mesh, same order
+};
+
 struct GpuCharacter {
     std::string name;
     GpuMesh mesh;
     GpuRig rig;  // empty for a static character
     std::vector<GpuMaterial> materials;
     std::vector<GpuSubmesh> submeshes;  // cover the whole mesh, in index order
+    std::vector<GpuLod> lods;           // levels of detail 1, 2, ... (CharacterPlacement::lod)
     bool closedOutward = false;         // mesh/MeshTopology.h: no back face shows from outside it
 
     bool hasLeanMaps() const;  // some material has a normal map
+    // The triangles to draw at level of detail `lod` (0: the full mesh; past the last level, the last).
+    const std::vector<GpuSubmesh>& submeshesAt(int lod) const;
+    GpuSubmesh wholeMeshAt(int lod) const;
 };
 
 class GpuScene {

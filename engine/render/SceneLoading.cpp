@@ -1,14 +1,55 @@
 #include "render/SceneLoading.h"
 
+#include "core/ContentHash.h"
 #include "core/Log.h"
 #include "import/EnvironmentSource.h"
 #include "import/ModelLoader.h"
+#include "mesh/MeshLod.h"
 #include "pose/CharacterPose.h"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
 
 namespace dermis {
 
+namespace {
+
+uint64_t lodKey(const Model& model) {
+    uint64_t hash = kFnvOffsetBasis;
+    for (const Vertex& vertex : model.mesh.vertices) hash = fnv1a(&vertex.position, sizeof vertex.position, hash);
+    hash = fnv1a(model.mesh.indices.data(), model.mesh.indices.size() * sizeof(uint32_t), hash);
+    for (const Submesh& range : model.drawRanges()) hash = fnv1a(&range, sizeof range, hash);
+    return hash;
+}
+
+// The model's levels of detail, made once per distinct mesh in the scene (a
+// crowd repeats a few meshes); each takes tens of ms (mesh/MeshLod.h).
+void addLevelsOfDetail(Model& model, std::map<uint64_t, std::vector<LodLevel>>& made) {
+    const uint64_t key = lodKey(model);
+    if (auto found = made.find(key); found != made.end()) {
+        model.lods = found->second;
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    model.lods = makeLodLevels(model.mesh, model.drawRanges());
+    if (!model.lods.empty()) {
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::string levels;
+        for (const LodLevel& level : model.lods) levels += " " + std::to_string(level.triangleCount());
+        char line[160];
+        std::snprintf(line, sizeof line, "levels of detail of %zu triangles:%s triangles (%.0f ms)",
+                      model.mesh.triangleCount(), levels.c_str(), ms);
+        log::info(line);
+    }
+    made.emplace(key, model.lods);
+}
+
+}  // namespace
+
 Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
     std::vector<Model> models;
+    std::map<uint64_t, std::vector<LodLevel>> levelsOfDetail;
     for (const Character& character : scene.characters) {
         log::info("loading character '" + character.name + "'");
         auto model = loadCharacterModel(character);
@@ -17,6 +58,7 @@ Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
         if (Status names = checkMaterialNames(scene, models.size(), *model); !names) return names.error();
         auto clip = resolveAnimationClip(scene, models.size(), model->rig);
         if (!clip.ok()) return clip.error();
+        addLevelsOfDetail(*model, levelsOfDetail);
         models.push_back(std::move(*model));
     }
     return models;

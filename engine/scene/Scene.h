@@ -221,6 +221,15 @@ struct QualitySettings {
     QualityTable loaded;       // read at scene load when errorBudget > 0; not a field of the file
 };
 
+// Levels of detail (mesh/MeshLod.h, plan/LevelOfDetail.h): each visible
+// character draws the coarsest level whose error against the full mesh,
+// projected on screen, is at most maxErrorPx pixels; 0 (the default) draws
+// full meshes. Off by default: a level's shading differs from the full
+// mesh's by more than its geometric error suggests (docs/crowds.md).
+struct LodSettings {
+    float maxErrorPx = 0.0f;
+};
+
 // Settings of the frame itself.
 struct RenderSettings {
     SssMode mode = SssMode::ScreenSpace;  // kSssModes
@@ -236,6 +245,7 @@ struct RenderSettings {
     SsaoSettings ssao;
     TextureSpaceSettings ts;
     QualitySettings quality;
+    LodSettings lod;
 };
 
 struct Scene {

@@ -83,6 +83,11 @@ void visitQualityFields(S& s, V& v) {
 }
 
 template <typename S, typename V>
+void visitLodFields(S& s, V& v) {
+    v.number("max_error_px", s.maxErrorPx, Range::closed(0.0, kMaxLodErrorPx));
+}
+
+template <typename S, typename V>
 void visitSettingsFields(S& s, V& v) {
     v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
     v.vec3("ambient", s.ambient, Range::closed(0.0, kMaxLightRadiance));
@@ -95,6 +100,7 @@ void visitSettingsFields(S& s, V& v) {
     v.group("ssao", s.ssao, [](auto& g, auto& w) { visitSsaoFields(g, w); });
     v.group("ts", s.ts, [](auto& g, auto& w) { visitTextureSpaceFields(g, w); });
     v.group("quality", s.quality, [](auto& g, auto& w) { visitQualityFields(g, w); });
+    v.group("lod", s.lod, [](auto& g, auto& w) { visitLodFields(g, w); });
 }
 
 // The keys a group's visit lists, in order: the loader's known keys.

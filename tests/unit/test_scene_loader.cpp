@@ -818,7 +818,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     // The flat shadow keys of the first format are gone.
     EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 2048}})"),
               "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, ambient, "
-              "energy_conservation, cull_back_faces, mode, shadow, sss, transmittance, ssao, ts and quality)");
+              "energy_conservation, cull_back_faces, mode, shadow, sss, transmittance, ssao, ts, quality and lod)");
 }
 
 TEST(SceneLoader, ModeAndTextureSpaceSettingsAreChecked) {

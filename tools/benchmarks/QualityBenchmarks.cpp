@@ -25,9 +25,11 @@ constexpr int kWidth = 640;
 constexpr int kHeight = 360;
 constexpr const char* kScene = "crowd8_mixed.json";
 constexpr double kCostGoal = 0.6;
+// The budget with levels of detail (settings.lod): 1 px at 640x360.
+constexpr float kLodErrorPx = 1.0f;
 
 struct QualityCase {
-    std::string key;  // "quality/budget", "quality/fixed"
+    std::string key;  // "quality/budget", "quality/fixed", "quality/budget_lod"
     std::unique_ptr<Scene> scene;
     std::unique_ptr<Renderer> renderer;
     std::vector<double> frameMs;
@@ -43,12 +45,15 @@ void errorBudget(benchmark::State& state) {
         state.SkipWithError("content/scenes/crowd8_mixed.json has no error budget");
         return;
     }
-    std::vector<QualityCase> cases(2);
+    std::vector<QualityCase> cases(3);
     cases[0].key = "quality/budget";
     cases[0].scene = std::make_unique<Scene>(shipped);
     cases[1].key = "quality/fixed";
     cases[1].scene = std::make_unique<Scene>(shipped);
     cases[1].scene->settings.quality.errorBudget = 0.0f;
+    cases[2].key = "quality/budget_lod";
+    cases[2].scene = std::make_unique<Scene>(shipped);
+    cases[2].scene->settings.lod.maxErrorPx = kLodErrorPx;
     Scene finestScene = shipped;
     finestScene.settings.quality.errorBudget = 0.0f;
     SssChoice::finest().applyTo(finestScene.settings.sss);
@@ -108,11 +113,12 @@ void printQualitySummary() {
                 "pixels against the finest choice):\n",
                 100.0 * budget, kScene, kWidth, kHeight);
     std::printf("| settings | frame ms | SSS passes ms | loss | distinct choices |\n| --- | ---: | ---: | ---: | ---: |\n");
-    for (const char* name : {"budget", "fixed"}) {
+    const std::pair<const char*, const char*> rows[] = {
+        {"budget", "budget table"}, {"fixed", "fixed defaults"}, {"budget_lod", "budget table + levels of detail (1 px)"}};
+    for (const auto& [name, label] : rows) {
         const std::string k = std::string("quality/") + name;
-        std::printf("| %s | %.2f | %.2f | %.3f%% | %.0f |\n",
-                    std::string(name) == "budget" ? "budget table" : "fixed defaults", r.at(k + "/frame"),
-                    r.at(k + "/sss"), 100.0 * r.at(k + "/loss"), r.at(k + "/choices"));
+        std::printf("| %s | %.2f | %.2f | %.3f%% | %.0f |\n", label, r.at(k + "/frame"), r.at(k + "/sss"),
+                    100.0 * r.at(k + "/loss"), r.at(k + "/choices"));
     }
     const double sssRatio = r.at("quality/budget/sss") / r.at("quality/fixed/sss");
     const double frameRatio = r.at("quality/budget/frame") / r.at("quality/fixed/frame");
@@ -120,6 +126,10 @@ void printQualitySummary() {
     std::printf("budget / fixed: SSS passes %.3fx%s, frame %.3fx; budget loss %.3f%%%s\n", sssRatio,
                 sssRatio <= kCostGoal ? " (within the 0.6 goal)" : " (OVER the 0.6 goal)", frameRatio, 100.0 * loss,
                 loss <= budget ? " (within the budget)" : " (OVER the budget)");
+    const double lodLoss = r.at("quality/budget_lod/loss");
+    std::printf("budget + levels of detail / fixed: frame %.3fx; loss %.3f%%%s\n",
+                r.at("quality/budget_lod/frame") / r.at("quality/fixed/frame"), 100.0 * lodLoss,
+                lodLoss <= budget ? " (within the budget)" : " (OVER the budget)");
 }
 
 BENCHMARK(errorBudget)->UseManualTime()->Iterations(9)->Unit(benchmark::kMillisecond);
