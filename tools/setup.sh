@@ -37,7 +37,7 @@ packages=(
   libglfw3-dev libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev libstb-dev
   libosmesa6-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev libtbb-dev libmeshoptimizer-dev gltfpack libdraco-dev draco
-  xvfb xauth python3-matplotlib
+  xvfb xauth python3-matplotlib parallel
 )
 
 missing=()

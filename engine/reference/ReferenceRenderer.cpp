@@ -352,6 +352,14 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
 
 Image ReferenceRenderer::renderDiffuse(int width, int height) { return renderPixels(Quantity::Diffuse, width, height); }
 
+Image ReferenceRenderer::renderDiffuseRows(int width, int height, int firstRow, int rowCount) {
+    const int begin = std::clamp(firstRow, 0, height), end = std::clamp(firstRow + rowCount, begin, height);
+    std::vector<uint32_t> pixels;
+    pixels.reserve(size_t(end - begin) * size_t(width));
+    for (uint32_t p = uint32_t(begin) * uint32_t(width); p < uint32_t(end) * uint32_t(width); ++p) pixels.push_back(p);
+    return renderPixels(Quantity::Diffuse, width, height, &pixels);
+}
+
 void ReferenceRenderer::usePass(uint32_t pass) {
     if (pass == mPass) return;
     mPass = pass;

@@ -124,6 +124,9 @@ public:
     std::vector<glm::vec4> scatterChangeAlongRays(const std::vector<Ray>& rays, float tMin, float tMax);
     // The scene camera's view at width x height, samplesPerPixel sub-samples each.
     Image renderDiffuse(int width, int height);
+    // The rows [firstRow, firstRow + rowCount) of renderDiffuse's image, bit for
+    // bit (every pixel is computed on its own); the other rows 0.
+    Image renderDiffuseRows(int width, int height, int firstRow, int rowCount);
     // renderDiffuse (pass 0), then passes with independent environment rays until
     // the estimated relative RMSE of the mean's noise, from the spread of the
     // passes over the covered pixels, is at most the target (or maxPasses); the

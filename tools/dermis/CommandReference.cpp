@@ -7,8 +7,11 @@
 #include "measure/ReferenceImages.h"
 #include "measure/Session.h"
 
+#include "core/ContentHash.h"
 #include "core/Image.h"
 #include "core/Log.h"
+#include "core/OutputFiles.h"
+#include "shards/ReferenceShards.h"
 #include "raytrace/ParallelFor.h"
 #include "reference/ReferenceRenderer.h"
 #include "scene/SceneLoader.h"
@@ -69,6 +72,10 @@ const char* const kHelp =
     "                      dermis render: --set sss.mix=0.5 --set camera.position_m=[0,0.1,0.5])\n"
     "  --threads N         worker threads (default: one per hardware thread); the image does not\n"
     "                      depend on it\n"
+    "  --shard K/N         compute only the K-th of N bands of rows (K from 1), the other rows 0,\n"
+    "                      and write FILE.exr.shard.json beside the image; `dermis merge` joins\n"
+    "                      the N shards into the image one run makes, bit for bit\n"
+    "                      (docs/shards.md). Not with --target-error or --max-passes\n"
     "  --quiet             no progress bars or summary\n"
     "  --help              this text\n"
     "\n"
@@ -82,6 +89,7 @@ struct ReferenceCommandOptions {
     reference::ReferenceOptions renderer;
     std::optional<reference::ProgressiveSettings> progressive;  // with --target-error or --max-passes
     std::vector<std::string> overrides;
+    shards::ShardSpec shard;
 };
 
 // --density, --spp, --env-samples, --integral-env-samples and --threads into `options`.
@@ -150,14 +158,36 @@ Result<ReferenceCommandOptions> parseReferenceCommandOptions(const ParsedArgs& a
         options.progressive = *settings;
     }
     options.overrides = args.all("set");
+    if (args.has("shard")) {
+        auto shard = shards::parseShardSpec(args.get("shard", ""));
+        if (!shard.ok()) return shard.error();
+        if (options.progressive) {
+            return makeError("--shard", "not with --target-error or --max-passes: the progressive passes stop on the "
+                                        "noise of the whole image");
+        }
+        options.shard = *shard;
+    }
     *usage = false;
     return options;
+}
+
+// A hash of what the pixels depend on: the scene as loaded, the options, the content.
+std::string referenceIdentity(const ReferenceCommandOptions& options, const Scene& scene,
+                              const reference::ReferenceRenderer& renderer) {
+    const reference::ReferenceOptions& r = options.renderer;
+    std::string text = std::to_string(options.width) + "x" + std::to_string(options.height) + " density " +
+                       std::to_string(r.quadrature.density) + " spp " + std::to_string(r.samplesPerPixel) + " env " +
+                       std::to_string(r.environmentSamples) + " integral env " + std::to_string(r.integralEnvironmentSamples) +
+                       " content " + std::to_string(renderer.contentHash()) + "\n" + sceneToJson(scene);
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(text.data(), text.size())));
+    return hex;
 }
 
 }  // namespace
 
 int runReference(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "integral-env-samples", "target-error", "max-passes", "set", "threads"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"out", "aov", "size", "density", "spp", "env-samples", "integral-env-samples", "target-error", "max-passes", "set", "threads", "shard"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) return std::printf("%s", kHelp), 0;
     log::setQuiet(args->flags.count("quiet") > 0);
@@ -177,11 +207,23 @@ int runReference(const std::vector<std::string>& rawArgs) {
               std::to_string(options->renderer.quadrature.density) + " per s^2, " +
               std::to_string(options->renderer.samplesPerPixel) + " samples per pixel, " +
               std::to_string(raytrace::resolveThreadCount(options->renderer.threads)) + " threads");
-    const Image image = options->progressive
-                            ? renderer->renderDiffuseProgressive(options->width, options->height, *options->progressive)
-                            : renderer->renderDiffuse(options->width, options->height);
+    const shards::ShardRange rows = shards::shardRange(options->shard, options->height);
+    const Image image = options->progressive ? renderer->renderDiffuseProgressive(options->width, options->height, *options->progressive)
+                        : options->shard.whole()
+                            ? renderer->renderDiffuse(options->width, options->height)
+                            : renderer->renderDiffuseRows(options->width, options->height, rows.first, rows.count);
     const auto done = std::chrono::steady_clock::now();
-    if (const Status saved = saveImage(options->outPath, image); !saved.ok()) return failure(saved.error());
+    OutputFiles out;
+    if (Status staged = out.stageImage(options->outPath, image); !staged.ok()) return failure(staged.error());
+    if (!options->shard.whole()) {
+        const shards::ReferenceShardNote note{options->shard, options->width, options->height, rows.first, rows.count,
+                                              referenceIdentity(*options, *scene, *renderer)};
+        if (Status staged = out.stageText(shards::referenceShardNotePath(options->outPath), shards::referenceShardNoteJson(note));
+            !staged.ok()) {
+            return failure(staged.error());
+        }
+    }
+    if (Status committed = out.commit(); !committed.ok()) return failure(committed.error());
 
     const reference::ReferenceStats& stats = renderer->stats();
     auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };

@@ -21,6 +21,7 @@ int runView(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 int runBakeLean(const std::vector<std::string>& args);
 int runTune(const std::vector<std::string>& args);
+int runMerge(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();
 

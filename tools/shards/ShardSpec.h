@@ -1,0 +1,34 @@
+#pragma once
+// `--shard K/N`: run the K-th of N parts of a batch job, so that N processes
+// (GNU parallel on one machine, a Slurm job array on a cluster; docs/shards.md)
+// share it, and `dermis merge` puts the parts back together. Shards are
+// numbered from 1, as job-array tasks usually are.
+
+#include "core/Result.h"
+
+#include <string>
+
+namespace dermis::shards {
+
+struct ShardSpec {
+    int index = 1;  // K, 1..count
+    int count = 1;  // N
+    bool whole() const { return count == 1; }
+    std::string text() const { return std::to_string(index) + "/" + std::to_string(count); }
+};
+
+// The largest N: more shards than this is a mistake, not a cluster.
+constexpr int kMaxShards = 4096;
+
+// "K/N" with 1 <= K <= N <= kMaxShards; errors name the option and the text.
+Result<ShardSpec> parseShardSpec(const std::string& text);
+
+// The part [first, first + count) of `items` things that shard K of N takes:
+// consecutive, in order, sizes differing by at most one, together all of them.
+struct ShardRange {
+    int first = 0;
+    int count = 0;
+};
+ShardRange shardRange(const ShardSpec& shard, int items);
+
+}  // namespace dermis::shards
