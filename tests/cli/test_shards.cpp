@@ -1,14 +1,17 @@
-// Shards of `dermis reference` (docs/shards.md): the GNU parallel recipe and the
-// Slurm job array's scripts (run here as plain bash, one task after another)
-// each merge into the image one run writes, bit for bit; `dermis merge`
-// refuses a missing, repeated or foreign shard; bad --shard values are usage
-// errors.
+// Shards of `dermis reference` and `dermis stress` (docs/shards.md): the GNU
+// parallel recipe and the Slurm job array's scripts (run here as plain bash,
+// one task after another) each merge into what one run writes (the image bit
+// for bit; the stress summary but for its times); `dermis merge` refuses a
+// missing, repeated or foreign shard; bad --shard values are usage errors.
 #include "TestSupport.h"
 
 #include "core/Image.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using dermis::test::ProcessResult;
@@ -56,14 +59,14 @@ protected:
 
 TEST_F(ShardsCli, TheGnuParallelRecipeMergesIntoTheSingleRun) {
     const ProcessResult r = runProcess("DERMIS=" + kDermis + " " + kShardsScript + " parallel 2 " + mDir.file("merged.exr") +
-                                       " " + scene() + kJob);
+                                       " reference " + scene() + kJob);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     expectSameImage(mDir.file("whole.exr"), mDir.file("merged.exr"));
 }
 
 TEST_F(ShardsCli, TheSlurmArrayScriptsMergeIntoTheSingleRun) {
     const std::string out = mDir.file("slurm.exr");
-    const ProcessResult written = runProcess("DERMIS=" + kDermis + " " + kShardsScript + " slurm 3 " + out + " " + scene() + kJob);
+    const ProcessResult written = runProcess("DERMIS=" + kDermis + " " + kShardsScript + " slurm 3 " + out + " reference " + scene() + kJob);
     ASSERT_EQ(written.exitCode, 0) << written.err;
     EXPECT_NE(written.out.find("sbatch --dependency=afterok:"), std::string::npos) << written.out;
     for (int task = 1; task <= 3; ++task) {
@@ -104,6 +107,37 @@ TEST_F(ShardsCli, MergeRefusesAMissingRepeatedOrForeignShard) {
                                          " " + mDir.file("s2.exr"));
     ASSERT_EQ(all.exitCode, 0) << all.err;
     expectSameImage(mDir.file("whole.exr"), out);
+}
+
+// Stress: 4 cases as one run and as 2 shards through GNU parallel. Every value
+// of the merged summary equals the single run's but the times, which no two
+// runs share; the seeds' hashes in particular, in seed order.
+TEST(ShardsCliStress, TheMergedSummaryIsTheSingleRunsButForItsTimes) {
+    TempDir dir;
+    const ProcessResult whole = runProcess(kDermis + " stress --cases 4 --seed 11 --quiet --out " + dir.file("whole.json"));
+    ASSERT_EQ(whole.exitCode, 0) << whole.err;
+    const ProcessResult sharded = runProcess("DERMIS=" + kDermis + " " + kShardsScript + " parallel 2 " + dir.file("merged.json") +
+                                             " stress --cases 4 --seed 11");
+    ASSERT_EQ(sharded.exitCode, 0) << sharded.out << sharded.err;
+    auto read = [](const std::string& path) {
+        std::ifstream in(path);
+        nlohmann::json json = nlohmann::json::parse(in);
+        for (const char* time : {"seconds", "seconds_by_stage", "slowest_cases"}) {
+            EXPECT_TRUE(json.contains(time)) << path << " " << time;
+            json.erase(time);
+        }
+        return json;
+    };
+    const nlohmann::json expected = read(dir.file("whole.json"));
+    const nlohmann::json merged = read(dir.file("merged.json"));
+    EXPECT_EQ(merged["hashes"].size(), 4u);
+    for (const auto& [key, value] : expected.items()) EXPECT_EQ(merged[key], value) << key;
+    EXPECT_EQ(merged.size(), expected.size());
+    // Without the second shard the merge refuses and writes nothing.
+    const ProcessResult missing = runProcess(kDermis + " merge --out " + dir.file("m.json") + " " + dir.file("merged.json.shards/shard-1.json"));
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("shards missing of 2: 2"), std::string::npos) << missing.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("m.json")));
 }
 
 TEST(ShardsCliUsage, BadShardValuesAreUsageErrors) {

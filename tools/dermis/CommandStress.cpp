@@ -10,7 +10,10 @@
 #include "gl/GlContext.h"
 #include "frame/Renderer.h"
 #include "scene/SceneLoader.h"
+#include "shards/ShardSpec.h"
 #include "stress/StressCases.h"
+
+#include <unistd.h>
 #include "stress/StressCounting.h"
 #include "stress/StressRun.h"
 
@@ -61,6 +64,9 @@ const char* const kHelp =
     "  --failed-scenes DIR  write each failed case's scene, as its detectors saw\n"
     "                it (after the last frame's move), to DIR/seed-N.json, to\n"
     "                reproduce it with dermis render\n"
+    "  --shard K/N     run only the K-th of N parts of the cases (K from 1); the\n"
+    "                summary says which, and `dermis merge` adds the N summaries up\n"
+    "                into the one a single run writes (docs/shards.md)\n"
     "  --quiet         no progress\n"
     "  --help          this text\n"
     "\n"
@@ -83,6 +89,9 @@ struct StressOptions {
     std::string plantPass;        // --plant-nan
     std::string failedScenesDir;  // --failed-scenes
     bool quiet = false;
+    shards::ShardSpec shard;  // --shard: cases and seed are then this shard's part of the job's
+    int jobCases = 0;
+    int jobSeed = 0;
 };
 
 Result<StressOptions> parseStressOptions(const ParsedArgs& args, bool* usage) {
@@ -105,6 +114,19 @@ Result<StressOptions> parseStressOptions(const ParsedArgs& args, bool* usage) {
     options.plantPass = args.get("plant-nan", "");
     options.failedScenesDir = args.get("failed-scenes", "");
     options.quiet = args.flags.count("quiet") > 0;
+    options.jobCases = options.cases;
+    options.jobSeed = options.seed;
+    if (args.has("shard")) {
+        auto shard = shards::parseShardSpec(args.get("shard", ""));
+        if (!shard.ok()) return shard.error();
+        if (shard->count > options.cases) {
+            return makeError("--shard " + shard->text(), "more shards than cases (" + std::to_string(options.cases) + ")");
+        }
+        options.shard = *shard;
+        const shards::ShardRange range = shards::shardRange(*shard, options.cases);
+        options.seed += range.first;
+        options.cases = range.count;
+    }
     *usage = false;
     return options;
 }
@@ -134,7 +156,7 @@ void runCases(const StressOptions& options, const stress::CaseOptions& caseOptio
 }  // namespace
 
 int runStress(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan", "plant-violation", "failed-scenes"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"cases", "seed", "out", "backend", "plant-nan", "plant-violation", "failed-scenes", "shard"}, {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) return std::printf("%s", kHelp), 0;
     bool usage = false;
@@ -142,9 +164,19 @@ int runStress(const std::vector<std::string>& rawArgs) {
     if (!options.ok()) return usage ? usageError(options.error()) : failure(options.error());
     auto context = gl::createHeadlessContext({options->backend, false});
     if (!context.ok()) return failure(context.error());
-    const std::filesystem::path assets = std::filesystem::temp_directory_path() / "dermis-stress-assets";
+    // One folder per process: shards running side by side (docs/shards.md)
+    // would otherwise read each other's half-written assets.
+    const std::filesystem::path assets =
+        std::filesystem::temp_directory_path() / ("dermis-stress-assets-" + std::to_string(::getpid()));
     std::error_code ec;
     std::filesystem::create_directories(assets, ec);
+    struct RemoveOnExit {
+        std::filesystem::path path;
+        ~RemoveOnExit() {
+            std::error_code ignored;
+            std::filesystem::remove_all(path, ignored);
+        }
+    } removeAssets{assets};
     if (const Status written = stress::writeStressAssets(assets.string()); !written.ok()) return failure(written.error());
     // Compiled once for every case (most of a renderer's set-up time); the
     // test Stress.SameSeedsGiveTheSameCaseHashes checks that no case leaves
@@ -169,6 +201,12 @@ int runStress(const std::vector<std::string>& rawArgs) {
     nlohmann::ordered_json header = {{"cases", options->cases},       {"first_seed", options->seed},
                                      {"renderer", (*context)->renderer()}, {"plant_nan", options->plantPass},
                                      {"plant_violation", stress::kPlants.name(options->plant)}};
+    if (!options->shard.whole()) {
+        header["shard"] = {{"index", options->shard.index},
+                           {"of", options->shard.count},
+                           {"job_first_seed", options->jobSeed},
+                           {"job_cases", options->jobCases}};
+    }
     const nlohmann::ordered_json summary = run.summary(std::move(header), seconds);
     if (const Status written = outputs.stageText(options->outPath, summary.dump(2) + "\n"); !written.ok())
         return failure(written.error());

@@ -18,7 +18,7 @@ const std::vector<Command>& commands() {
         {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},
         {"bench", "run time against error: sweep the quality knobs of both modes against the CPU reference", runBench},
         {"tune", "the cheapest SSS choice within an error budget per on-screen scale: write a quality table", runTune},
-        {"merge", "join the shards of a `reference --shard K/N` job into the image one run makes", runMerge},
+        {"merge", "join the shards of a `reference` or `stress` job run with --shard K/N into what one run writes", runMerge},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };
