@@ -111,13 +111,15 @@ TEST_F(ShardsCli, MergeRefusesAMissingRepeatedOrForeignShard) {
 
 // Stress: 4 cases as one run and as 2 shards through GNU parallel. Every value
 // of the merged summary equals the single run's but the times, which no two
-// runs share; the seeds' hashes in particular, in seed order.
+// runs share; the seeds' hashes in particular, in seed order. Seed 119 is a
+// refused case whose message names an asset file: each process has its own
+// asset folder, and a hash that kept the folder's name differed.
 TEST(ShardsCliStress, TheMergedSummaryIsTheSingleRunsButForItsTimes) {
     TempDir dir;
-    const ProcessResult whole = runProcess(kDermis + " stress --cases 4 --seed 11 --quiet --out " + dir.file("whole.json"));
+    const ProcessResult whole = runProcess(kDermis + " stress --cases 4 --seed 116 --quiet --out " + dir.file("whole.json"));
     ASSERT_EQ(whole.exitCode, 0) << whole.err;
     const ProcessResult sharded = runProcess("DERMIS=" + kDermis + " " + kShardsScript + " parallel 2 " + dir.file("merged.json") +
-                                             " stress --cases 4 --seed 11");
+                                             " stress --cases 4 --seed 116");
     ASSERT_EQ(sharded.exitCode, 0) << sharded.out << sharded.err;
     auto read = [](const std::string& path) {
         std::ifstream in(path);

@@ -140,6 +140,7 @@ StressCase makeStressCase(uint64_t seed, const std::string& assets) {
     Dice dice(seed);
     StressCase c;
     c.seed = seed;
+    c.assetDirectory = assets;
     Scene& scene = c.scene;
     // The file a Loader or Hostile case writes; Memory cases name it too, so
     // that asset paths written relative to it read back the same.

@@ -47,6 +47,9 @@ struct StressCase {
     std::vector<std::string> overrides;  // `--set` texts (Loader and Hostile)
     ExpectedRefusal refusal;             // Hostile only
     std::string description;  // what was extreme about it, for the summary
+    // Where its files are (writeStressAssets): one folder per process, so a
+    // case's hash leaves it out of the messages it hashes.
+    std::string assetDirectory;
 };
 
 // Files the cases refer to (glTFs with degenerate triangles, without normals,

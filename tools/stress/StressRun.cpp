@@ -77,6 +77,15 @@ std::string hex(uint64_t value) {
     return text;
 }
 
+// `message` with the case's asset folder (per process) written as "ASSETS".
+std::string withoutAssetDirectory(std::string message, const std::string& directory) {
+    if (directory.empty()) return message;
+    for (size_t at = message.find(directory); at != std::string::npos; at = message.find(directory, at)) {
+        message.replace(at, directory.size(), "ASSETS");
+    }
+    return message;
+}
+
 }  // namespace
 
 CaseResult runCase(const StressCase& c, const CaseOptions& options, CountingTotals& totals) {
@@ -90,7 +99,7 @@ CaseResult runCase(const StressCase& c, const CaseOptions& options, CountingTota
         result.error = refusalProblem(c, loaded);
         result.refused = result.error.empty();
         CaseHash hash;  // of the refusal, so that a changed message changes the hash
-        if (!loaded.ok()) hash.addText(loaded.error().message());
+        if (!loaded.ok()) hash.addText(withoutAssetDirectory(loaded.error().message(), c.assetDirectory));
         result.hash = hash.value();
         return result;
     }
