@@ -27,7 +27,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, std::shar
         log::warn(scene.path + ": only the first " + std::to_string(DERMIS_MAX_LIGHTS) + " of " +
                   std::to_string(scene.lights.size()) + " lights are used");
     }
-    auto models = loadSceneModels(scene);
+    auto models = loadSharedSceneModels(scene);
     if (!models.ok()) return models.error();
     auto gpuScene = GpuScene::create(scene, *models);
     if (!gpuScene.ok()) return gpuScene.error();

@@ -20,6 +20,12 @@ std::vector<Submesh> Model::drawRanges() const {
     return {Submesh{0, static_cast<uint32_t>(mesh.indices.size()), 0}};
 }
 
+SceneModels shareModels(std::vector<Model> models) {
+    SceneModels shared;
+    for (Model& model : models) shared.push_back(std::make_shared<const Model>(std::move(model)));
+    return shared;
+}
+
 void setVertexFrames(MeshData& mesh, const SkinnedVertices& frames) {
     for (size_t v = 0; v < mesh.vertices.size() && v < frames.positions.size(); ++v) {
         mesh.vertices[v].position = frames.positions[v];

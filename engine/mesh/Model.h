@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,11 @@ struct Model {
     // The submeshes, or one covering the whole mesh with materials[0].
     std::vector<Submesh> drawRanges() const;
 };
+
+// One model per scene character; characters that repeat a model share it.
+using SceneModels = std::vector<std::shared_ptr<const Model>>;
+// Each model shared by no one else.
+SceneModels shareModels(std::vector<Model> models);
 
 // Writes positions, normals and tangents (a pose of the rig, or its bind
 // vertices) into the mesh's vertices, keeping their UVs; the counts match.

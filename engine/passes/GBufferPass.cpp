@@ -80,7 +80,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 const std::vector<GpuSubmesh>& submeshes = character.submeshesAt(frame.plan.characters[index].lod);
                 for (size_t s = 0; s < submeshes.size(); ++s) {
                     const GpuSubmesh& submesh = submeshes[s];
-                    const GpuMaterial& material = character.materials[submesh.material];
+                    const GpuMaterial& material = character.material(submesh.material);
                     frame.gl->uploadObject(frame.objectBlock(index, s));
                     glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOf(index, s), 0xFF);
                     bindMaterialMaps(material);

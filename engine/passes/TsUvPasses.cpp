@@ -99,7 +99,7 @@ void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan, TsDraw w
     glBindVertexArray(mesh.vertexArray.get());
     for (size_t s : plan.submeshes) {
         frame.gl->uploadObject(frame.objectBlock(index, s));
-        if (what == TsDraw::SurfaceWithMaps) bindMaterialMaps(character.materials[character.submeshes[s].material]);
+        if (what == TsDraw::SurfaceWithMaps) bindMaterialMaps(character.material(character.submeshes[s].material));
         character.submeshes[s].draw();
     }
 }

@@ -5,8 +5,11 @@
 
 namespace dermis {
 
-SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
-    for (const Model& model : models) {
+SceneGeometry::SceneGeometry(const std::vector<Model>& models) : SceneGeometry(shareModels(models)) {}
+
+SceneGeometry::SceneGeometry(const SceneModels& models) {
+    for (const std::shared_ptr<const Model>& shared : models) {
+        const Model& model = *shared;
         std::vector<SubmeshMaterial> names;
         for (const Submesh& submesh : model.drawRanges()) {
             const auto index = static_cast<size_t>(submesh.material);
@@ -14,14 +17,14 @@ SceneGeometry::SceneGeometry(const std::vector<Model>& models) {
         }
         std::vector<float> lodErrors;
         for (const LodLevel& level : model.lods) lodErrors.push_back(level.errorObject);
-        mCharacters.push_back({model.mesh, model.mesh.bounds(), nullptr, std::make_shared<const Rig>(model.rig),
+        mCharacters.push_back({shared, model.mesh.bounds(), nullptr, std::shared_ptr<const Rig>(shared, &model.rig),
                                std::move(names), std::move(lodErrors)});
     }
 }
 
 const UvLayout& SceneGeometry::uvLayout(size_t character) {
     Character& c = mCharacters[character];
-    if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.mesh));
+    if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh));
     return *c.uvLayout;
 }
 

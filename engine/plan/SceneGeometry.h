@@ -32,10 +32,12 @@ namespace dermis {
 class SceneGeometry {
 public:
     SceneGeometry() = default;
+    // Characters that share a model (render/SceneLoading.h) share its mesh here too.
+    explicit SceneGeometry(const SceneModels& models);
     explicit SceneGeometry(const std::vector<Model>& models);
 
     size_t size() const { return mCharacters.size(); }
-    const MeshData& mesh(size_t character) const { return mCharacters[character].mesh; }
+    const MeshData& mesh(size_t character) const { return mCharacters[character].model->mesh; }
     const Bounds& objectBounds(size_t character) const { return mCharacters[character].objectBounds; }
     // What moves the character's vertices (empty for a static one).
     const Rig& rig(size_t character) const { return *mCharacters[character].rig; }
@@ -61,7 +63,7 @@ public:
 private:
     std::shared_ptr<const EnvironmentLight> mEnvironment;
     struct Character {
-        MeshData mesh;
+        std::shared_ptr<const Model> model;
         Bounds objectBounds;
         std::shared_ptr<const UvLayout> uvLayout;
         std::shared_ptr<const Rig> rig;

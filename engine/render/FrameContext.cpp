@@ -65,7 +65,7 @@ gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex) const {
 gpu::ObjectBlock FrameContext::objectBlock(size_t characterIndex, size_t submeshIndex) const {
     const GpuCharacter& character = gl->gpuScene->characters()[characterIndex];
     const GpuSubmesh& submesh = character.submeshes[submeshIndex];
-    const GpuMaterial& maps = character.materials[submesh.material];
+    const GpuMaterial& maps = character.material(submesh.material);
     const Material& material = characterMaterial(plan.scene->characters[characterIndex], maps.name, maps.index);
     gpu::ObjectBlock block = objectBlock(characterIndex);
     block.albedo = material.albedo * glm::vec3(maps.baseColourFactor);

@@ -8,6 +8,7 @@
 #include "gpu/UniformBlocks.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstddef>
 
@@ -196,7 +197,7 @@ GpuSubmesh GpuCharacter::wholeMeshAt(int lod) const {
 }
 
 bool GpuCharacter::hasLeanMaps() const {
-    return std::any_of(materials.begin(), materials.end(), [](const GpuMaterial& m) { return m.leanMap1.isValid(); });
+    return std::any_of(materials->begin(), materials->end(), [](const GpuMaterial& m) { return m.leanMap1.isValid(); });
 }
 
 gl::Texture uploadImage(const Image& image) {
@@ -213,27 +214,38 @@ gl::Texture uploadImage(const Image& image) {
 }
 
 Result<GpuScene> GpuScene::create(const Scene& scene) {
-    auto models = loadSceneModels(scene);
+    auto models = loadSharedSceneModels(scene);
     if (!models.ok()) return models.error();
     return create(scene, *models);
 }
 
 Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& models) {
+    return create(scene, shareModels(models));
+}
+
+Result<GpuScene> GpuScene::create(const Scene& scene, const SceneModels& models) {
     GpuScene gpuScene;
+    std::map<const Model*, std::shared_ptr<std::vector<GpuMaterial>>> uploaded;
     for (size_t c = 0; c < scene.characters.size() && c < models.size(); ++c) {
         const Character& character = scene.characters[c];
-        const Model& model = models[c];
+        const Model& model = *models[c];
         GpuCharacter gpu;
         gpu.name = character.name;
         gpu.mesh = uploadMesh(model.mesh, allIndices(model), model.colours);
         gpu.closedOutward = isClosedOutward(model.mesh);
         gpu.rig = uploadRig(model.rig, model.mesh);
-        for (const ModelMaterial& material : model.materials) {
-            auto uploaded = uploadMaterial(material);
-            if (!uploaded.ok()) return makeError(character.name, uploaded.error().what);
-            uploaded->index = gpu.materials.size();
-            gpu.materials.push_back(std::move(*uploaded));
+        std::shared_ptr<std::vector<GpuMaterial>>& materials = uploaded[&model];
+        if (!materials) {
+            auto made = std::make_shared<std::vector<GpuMaterial>>();
+            for (const ModelMaterial& material : model.materials) {
+                auto one = uploadMaterial(material);
+                if (!one.ok()) return makeError(character.name, one.error().what);
+                one->index = made->size();
+                made->push_back(std::move(*one));
+            }
+            materials = std::move(made);
         }
+        gpu.materials = materials;
         for (const Submesh& submesh : model.drawRanges())
             gpu.submeshes.push_back({static_cast<GLsizei>(submesh.firstIndex), static_cast<GLsizei>(submesh.indexCount),
                                      static_cast<size_t>(submesh.material)});

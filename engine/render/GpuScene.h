@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace dermis {
@@ -90,12 +91,14 @@ struct GpuCharacter {
     std::string name;
     GpuMesh mesh;
     GpuRig rig;  // empty for a static character
-    std::vector<GpuMaterial> materials;
+    // Shared by the characters that share a model (render/SceneLoading.h).
+    std::shared_ptr<std::vector<GpuMaterial>> materials;
     std::vector<GpuSubmesh> submeshes;  // cover the whole mesh, in index order
     std::vector<GpuLod> lods;           // levels of detail 1, 2, ... (CharacterPlacement::lod)
     bool closedOutward = false;         // mesh/MeshTopology.h: no back face shows from outside it
 
     bool hasLeanMaps() const;  // some material has a normal map
+    const GpuMaterial& material(size_t index) const { return (*materials)[index]; }
     // The triangles to draw at level of detail `lod` (0: the full mesh; past the last level, the last).
     const std::vector<GpuSubmesh>& submeshesAt(int lod) const;
     GpuSubmesh wholeMeshAt(int lod) const;
@@ -105,7 +108,9 @@ class GpuScene {
 public:
     // Loads every character's model (procedural or glTF) and uploads it.
     static Result<GpuScene> create(const Scene& scene);
-    // Uploads models already loaded (render/SceneLoading.h, loadSceneModels), one per character.
+    // Uploads models already loaded (render/SceneLoading.h), one per
+    // character; characters that share a model share its materials' maps.
+    static Result<GpuScene> create(const Scene& scene, const SceneModels& models);
     static Result<GpuScene> create(const Scene& scene, const std::vector<Model>& models);
 
     std::vector<GpuCharacter>& characters() { return mCharacters; }

@@ -6,6 +6,7 @@
 #include "import/ModelLoader.h"
 #include "mesh/MeshLod.h"
 #include "pose/CharacterPose.h"
+#include "scene/SceneLoader.h"
 
 #include <chrono>
 #include <cstdio>
@@ -23,8 +24,8 @@ uint64_t lodKey(const Model& model) {
     return hash;
 }
 
-// The model's levels of detail, made once per distinct mesh in the scene (a
-// crowd repeats a few meshes); each takes tens of ms (mesh/MeshLod.h).
+// The model's levels of detail, made once per distinct mesh in the scene (two
+// models may share a mesh with different materials); tens of ms each (mesh/MeshLod.h).
 void addLevelsOfDetail(Model& model, std::map<uint64_t, std::vector<LodLevel>>& made) {
     const uint64_t key = lodKey(model);
     if (auto found = made.find(key); found != made.end()) {
@@ -45,22 +46,56 @@ void addLevelsOfDetail(Model& model, std::map<uint64_t, std::vector<LodLevel>>& 
     made.emplace(key, model.lods);
 }
 
+// What loadCharacterModel reads of a character: all of it but its name and
+// where and how it moves.
+std::string modelKey(const Character& character) {
+    Scene alone;
+    Character loaded = character;
+    loaded.name.clear();
+    loaded.transform = {};
+    loaded.ssao = {};
+    loaded.animation = {};
+    alone.characters.push_back(std::move(loaded));
+    return sceneToJson(alone);
+}
+
 }  // namespace
 
-Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
-    std::vector<Model> models;
+Result<SceneModels> loadSharedSceneModels(const Scene& scene) {
+    SceneModels models;
     std::map<uint64_t, std::vector<LodLevel>> levelsOfDetail;
+    std::map<std::string, size_t> loaded;  // model key -> the first character with it
     for (const Character& character : scene.characters) {
-        log::info("loading character '" + character.name + "'");
-        auto model = loadCharacterModel(character);
-        if (!model.ok()) return model.error();
-        if (model->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
-        if (Status names = checkMaterialNames(scene, models.size(), *model); !names) return names.error();
-        auto clip = resolveAnimationClip(scene, models.size(), model->rig);
+        const size_t index = models.size();
+        std::shared_ptr<const Model> model;
+        const std::string key = modelKey(character);
+        if (auto found = loaded.find(key); found != loaded.end()) {
+            model = models[found->second];
+        } else {
+            log::info("loading character '" + character.name + "'");
+            auto made = loadCharacterModel(character);
+            if (!made.ok()) return made.error();
+            if (made->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
+            addLevelsOfDetail(*made, levelsOfDetail);
+            model = std::make_shared<const Model>(std::move(*made));
+            loaded.emplace(key, index);
+        }
+        if (Status names = checkMaterialNames(scene, index, *model); !names) return names.error();
+        auto clip = resolveAnimationClip(scene, index, model->rig);
         if (!clip.ok()) return clip.error();
-        addLevelsOfDetail(*model, levelsOfDetail);
-        models.push_back(std::move(*model));
+        models.push_back(std::move(model));
     }
+    if (loaded.size() < models.size()) {
+        log::info(std::to_string(models.size()) + " characters share " + std::to_string(loaded.size()) + " models");
+    }
+    return models;
+}
+
+Result<std::vector<Model>> loadSceneModels(const Scene& scene) {
+    auto shared = loadSharedSceneModels(scene);
+    if (!shared.ok()) return shared.error();
+    std::vector<Model> models;
+    for (const std::shared_ptr<const Model>& model : *shared) models.push_back(*model);
     return models;
 }
 

@@ -14,9 +14,14 @@
 
 namespace dermis {
 
-// Loads every character's model (import/ModelLoader.h), in scene order. Errors
-// name the character; a mesh without triangles is one, and so is an
-// animation clip the model does not have (the message lists those it has).
+// Loads every character's model (import/ModelLoader.h), in scene order.
+// Characters whose models would load the same (the same mesh source,
+// material and materials) share one: a crowd of one head loads it once, and
+// GpuScene uploads its maps once. Errors name the character; a mesh without
+// triangles is one, and so is an animation clip the model does not have (the
+// message lists those it has).
+Result<SceneModels> loadSharedSceneModels(const Scene& scene);
+// The same, each character with a copy of its own (for code that changes them).
 Result<std::vector<Model>> loadSceneModels(const Scene& scene);
 
 // The environment's map (import/EnvironmentSource.h), split by the scene's extraction settings.

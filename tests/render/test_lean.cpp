@@ -291,8 +291,8 @@ TEST_F(Lean, HostileMomentsAndDepthEdgesNeverMakeABadPixel) {
     for (const char* variant : {"lbb", "lcb"}) {
         load(scene, {std::string("sss.variant=") + variant});
         GpuCharacter& hostile = mRenderer->gpuScene().characters()[0];
-        hostile.materials[0].leanMap1 = hostileLeanTexture(true);
-        hostile.materials[0].leanMap2 = hostileLeanTexture(false);
+        (*hostile.materials)[0].leanMap1 = hostileLeanTexture(true);
+        (*hostile.materials)[0].leanMap2 = hostileLeanTexture(false);
         TargetAudit audit;
         auditEveryTarget(*mRenderer, audit);
         gl::SanitiseCounters& counters = mRenderer->sanitiseCounters();

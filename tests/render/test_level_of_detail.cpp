@@ -96,3 +96,19 @@ TEST_F(LevelsOfDetail, AStillFrameKeepsItsLevels) {
 }
 
 }  // namespace
+
+namespace {
+
+// The eight heads repeat one model (render/SceneLoading.h): the GPU holds one
+// set of their maps, and one set of LEAN maps baked from the normal map.
+TEST_F(LevelsOfDetail, RepeatedHeadsShareTheirMaps) {
+    (void)render(Aov::Final, 32, 18);
+    const auto& characters = mRenderer->gpuScene().characters();
+    ASSERT_EQ(characters.size(), 8u);
+    for (const GpuCharacter& character : characters) {
+        EXPECT_EQ(character.materials.get(), characters[0].materials.get()) << character.name;
+    }
+    EXPECT_TRUE(characters[0].hasLeanMaps());
+}
+
+}  // namespace
