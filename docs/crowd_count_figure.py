@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Frame time against the number of characters (docs/crowds.md,
-docs/results/crowds.md): crowds of 1 to 256 procedural heads that repeat one
+docs/results/crowds.md): crowds of 1 to 255 procedural heads (the most a scene may have: object ids are 8 bits) that repeat one
 model, in a grid receding from the camera so that most are small on screen,
 rendered with and without levels of detail (settings.lod.max_error_px).
 
     python3 docs/crowd_count_figure.py [--size 1280x720] [--frames 3]
-        [--counts 1,4,16,64,256] [--lod-px 1] [--out docs/crowd_count.png]
+        [--counts 1,4,16,64,255] [--lod-px 1] [--out docs/crowd_count.png]
 
 Run from the repository root after building. Each point is `dermis render
 SCENE --size SIZE --frames N --timings T.json` (printed as it goes): the
@@ -37,9 +37,10 @@ def crowd_scene(count):
     scene["characters"] = []
     for i in range(count):
         row, column = divmod(i, COLUMNS)
+        in_row = min(COLUMNS, count - row * COLUMNS)  # each row centred, so that a small crowd is in view
         character = json.loads(json.dumps(head))
         character["name"] = f"head {i}"
-        character["transform"] = {"translation_m": [(column - (COLUMNS - 1) / 2) * 0.3, -0.15 + 0.08 * row, -0.4 - 0.8 * row]}
+        character["transform"] = {"translation_m": [(column - (in_row - 1) / 2) * 0.3, -0.15 + 0.08 * row, -0.4 - 0.8 * row]}
         scene["characters"].append(character)
     return scene
 
@@ -59,7 +60,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--size", default="1280x720")
     parser.add_argument("--frames", type=int, default=3)
-    parser.add_argument("--counts", default="1,4,16,64,256")
+    parser.add_argument("--counts", default="1,4,16,64,255")
     parser.add_argument("--lod-px", type=float, default=1.0)
     parser.add_argument("--out", default="docs/crowd_count.png")
     args = parser.parse_args()
