@@ -15,13 +15,6 @@
 namespace dermis {
 namespace {
 
-// The full mesh's indices, then each level's.
-std::vector<uint32_t> allIndices(const Model& model) {
-    std::vector<uint32_t> indices = model.mesh.indices;
-    for (const LodLevel& level : model.lods) indices.insert(indices.end(), level.indices.begin(), level.indices.end());
-    return indices;
-}
-
 GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, const std::vector<glm::vec4>& colours) {
     GpuMesh gpu;
     const std::vector<glm::vec4> white(mesh.vertices.size(), glm::vec4(1.0f));
@@ -223,43 +216,69 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const std::vector<Model>& 
     return create(scene, shareModels(models));
 }
 
+namespace {
+
+// What characters that share a model share on the GPU side, made once per model.
+struct SharedUpload {
+    std::shared_ptr<std::vector<GpuMaterial>> materials;
+    std::vector<uint32_t> indices;  // the full mesh's, then each level's
+    std::vector<GpuSubmesh> submeshes;
+    std::vector<GpuLod> lods;
+    bool closedOutward = false;
+};
+
+Result<SharedUpload> makeSharedUpload(const Model& model) {
+    SharedUpload shared;
+    shared.materials = std::make_shared<std::vector<GpuMaterial>>();
+    for (const ModelMaterial& material : model.materials) {
+        auto one = uploadMaterial(material);
+        if (!one.ok()) return one.error();
+        one->index = shared.materials->size();
+        shared.materials->push_back(std::move(*one));
+    }
+    shared.indices = model.mesh.indices;
+    for (const Submesh& submesh : model.drawRanges())
+        shared.submeshes.push_back({static_cast<GLsizei>(submesh.firstIndex), static_cast<GLsizei>(submesh.indexCount),
+                                    static_cast<size_t>(submesh.material)});
+    for (const LodLevel& level : model.lods) {
+        const auto first = static_cast<GLsizei>(shared.indices.size());
+        GpuLod lod;
+        lod.whole = {first, static_cast<GLsizei>(level.indices.size()), 0};
+        for (const Submesh& range : level.ranges) {
+            lod.submeshes.push_back({first + static_cast<GLsizei>(range.firstIndex), static_cast<GLsizei>(range.indexCount),
+                                     static_cast<size_t>(range.material)});
+        }
+        shared.indices.insert(shared.indices.end(), level.indices.begin(), level.indices.end());
+        shared.lods.push_back(std::move(lod));
+    }
+    shared.closedOutward = isClosedOutward(model.mesh);
+    return shared;
+}
+
+}  // namespace
+
 Result<GpuScene> GpuScene::create(const Scene& scene, const SceneModels& models) {
     GpuScene gpuScene;
-    std::map<const Model*, std::shared_ptr<std::vector<GpuMaterial>>> uploaded;
+    std::map<const Model*, SharedUpload> uploads;
     for (size_t c = 0; c < scene.characters.size() && c < models.size(); ++c) {
         const Character& character = scene.characters[c];
         const Model& model = *models[c];
+        auto found = uploads.find(&model);
+        if (found == uploads.end()) {
+            auto made = makeSharedUpload(model);
+            if (!made.ok()) return makeError(character.name, made.error().what);
+            found = uploads.emplace(&model, std::move(*made)).first;
+        }
+        const SharedUpload& shared = found->second;
         GpuCharacter gpu;
         gpu.name = character.name;
-        gpu.mesh = uploadMesh(model.mesh, allIndices(model), model.colours);
-        gpu.closedOutward = isClosedOutward(model.mesh);
+        // Its own buffers: the skinning pass writes an animated character's vertices.
+        gpu.mesh = uploadMesh(model.mesh, shared.indices, model.colours);
+        gpu.closedOutward = shared.closedOutward;
         gpu.rig = uploadRig(model.rig, model.mesh);
-        std::shared_ptr<std::vector<GpuMaterial>>& materials = uploaded[&model];
-        if (!materials) {
-            auto made = std::make_shared<std::vector<GpuMaterial>>();
-            for (const ModelMaterial& material : model.materials) {
-                auto one = uploadMaterial(material);
-                if (!one.ok()) return makeError(character.name, one.error().what);
-                one->index = made->size();
-                made->push_back(std::move(*one));
-            }
-            materials = std::move(made);
-        }
-        gpu.materials = materials;
-        for (const Submesh& submesh : model.drawRanges())
-            gpu.submeshes.push_back({static_cast<GLsizei>(submesh.firstIndex), static_cast<GLsizei>(submesh.indexCount),
-                                     static_cast<size_t>(submesh.material)});
-        auto first = static_cast<GLsizei>(model.mesh.indices.size());
-        for (const LodLevel& level : model.lods) {
-            GpuLod lod;
-            lod.whole = {first, static_cast<GLsizei>(level.indices.size()), 0};
-            for (const Submesh& range : level.ranges) {
-                lod.submeshes.push_back({first + static_cast<GLsizei>(range.firstIndex), static_cast<GLsizei>(range.indexCount),
-                                         static_cast<size_t>(range.material)});
-            }
-            first += lod.whole.indexCount;
-            gpu.lods.push_back(std::move(lod));
-        }
+        gpu.materials = shared.materials;
+        gpu.submeshes = shared.submeshes;
+        gpu.lods = shared.lods;
         gpuScene.mCharacters.push_back(std::move(gpu));
     }
     return gpuScene;

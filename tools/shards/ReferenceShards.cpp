@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
-#include <map>
+#include <optional>
 
 namespace dermis::shards {
 namespace {
@@ -56,13 +56,16 @@ Result<ReferenceShardNote> readReferenceShardNote(const std::string& imagePath) 
 
 Result<Image> mergeReferenceShards(const std::vector<std::string>& imagePaths) {
     if (imagePaths.empty()) return makeError("merge", "no shard given");
-    std::map<int, std::string> byIndex;
+    std::optional<ShardSet> given;
+    std::string firstPath;
     ReferenceShardNote first;
     Image merged;
     for (const std::string& path : imagePaths) {
         auto note = readReferenceShardNote(path);
         if (!note.ok()) return note.error();
-        if (byIndex.empty()) {
+        if (!given) {
+            given.emplace(note->shard.count);
+            firstPath = path;
             first = *note;
             merged.width = note->width;
             merged.height = note->height;
@@ -73,12 +76,9 @@ Result<Image> mergeReferenceShards(const std::vector<std::string>& imagePaths) {
             return makeError(path, "another job's shard: " + note->shard.text() + ", " + std::to_string(note->width) + "x" +
                                        std::to_string(note->height) + ", identity " + note->identity + ", against " +
                                        first.shard.text() + ", " + std::to_string(first.width) + "x" +
-                                       std::to_string(first.height) + ", identity " + first.identity + " in " +
-                                       byIndex.begin()->second);
+                                       std::to_string(first.height) + ", identity " + first.identity + " in " + firstPath);
         }
-        if (auto [at, added] = byIndex.emplace(note->shard.index, path); !added) {
-            return makeError(path, "shard " + note->shard.text() + " is also " + at->second);
-        }
+        if (Status added = given->add(note->shard.index, path); !added.ok()) return added.error();
         int nonFinite = 0;
         auto image = loadImage(path, ColourSpace::Linear, &nonFinite);
         if (!image.ok()) return image.error();
@@ -91,13 +91,7 @@ Result<Image> mergeReferenceShards(const std::vector<std::string>& imagePaths) {
         const size_t end = begin + size_t(note->rows) * size_t(note->width);
         std::copy(image->texels.begin() + long(begin), image->texels.begin() + long(end), merged.texels.begin() + long(begin));
     }
-    if (int(byIndex.size()) != first.shard.count) {
-        std::string missing;
-        for (int k = 1; k <= first.shard.count; ++k) {
-            if (byIndex.count(k) == 0) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
-        }
-        return makeError("merge", "shards missing of " + std::to_string(first.shard.count) + ": " + missing);
-    }
+    if (Status complete = given->complete(); !complete.ok()) return complete.error();
     return merged;
 }
 

@@ -36,4 +36,20 @@ ShardRange shardRange(const ShardSpec& shard, int items) {
     return {first, begin(shard.index) - first};
 }
 
+Status ShardSet::add(int index, const std::string& path) {
+    if (auto [at, added] = mPaths.emplace(index, path); !added) {
+        return makeError(path, "shard " + ShardSpec{index, mCount}.text() + " is also " + at->second);
+    }
+    return success();
+}
+
+Status ShardSet::complete() const {
+    std::string missing;
+    for (int k = 1; k <= mCount; ++k) {
+        if (mPaths.count(k) == 0) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    }
+    if (missing.empty()) return success();
+    return makeError("merge", "shards missing of " + std::to_string(mCount) + ": " + missing);
+}
+
 }  // namespace dermis::shards

@@ -6,6 +6,7 @@
 
 #include "core/Result.h"
 
+#include <map>
 #include <string>
 
 namespace dermis::shards {
@@ -30,5 +31,19 @@ struct ShardRange {
     int count = 0;
 };
 ShardRange shardRange(const ShardSpec& shard, int items);
+
+// The shards a merge was given: each K of N once, all of them.
+class ShardSet {
+public:
+    explicit ShardSet(int count) : mCount(count) {}
+    // Errors when shard `index` was already given (naming both files).
+    Status add(int index, const std::string& path);
+    // Errors listing the shards not given.
+    Status complete() const;
+
+private:
+    int mCount;
+    std::map<int, std::string> mPaths;  // by K
+};
 
 }  // namespace dermis::shards

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <optional>
 
 namespace dermis::shards {
 namespace {
@@ -56,6 +57,7 @@ Result<Json> mergeStressSummaries(const std::vector<std::string>& summaryPaths) 
         Json summary;
     };
     std::map<int, Shard> shards;  // by K
+    std::optional<ShardSet> given;
     Json job;                      // the first shard's "shard" object
     for (const std::string& path : summaryPaths) {
         std::ifstream in(path);
@@ -76,7 +78,10 @@ Result<Json> mergeStressSummaries(const std::vector<std::string>& summaryPaths) 
             }
         }
         const int index = shard["index"].get<int>();
-        if (job.is_null()) job = shard;
+        if (job.is_null()) {
+            job = shard;
+            given.emplace(job["of"].get<int>());
+        }
         Json sameJob = shard;
         sameJob["index"] = job["index"];
         if (sameJob != job) return makeError(path, "another job's shard: " + shard.dump() + ", against " + job.dump());
@@ -85,18 +90,10 @@ Result<Json> mergeStressSummaries(const std::vector<std::string>& summaryPaths) 
         if (summary.value("first_seed", -1) != job["job_first_seed"].get<int>() + range.first || summary.value("cases", -1) != range.count) {
             return makeError(path, "/first_seed, /cases: not the seeds of shard " + std::to_string(index) + "/" + job["of"].dump());
         }
-        if (auto [at, added] = shards.emplace(index, Shard{path, std::move(summary)}); !added) {
-            return makeError(path, "shard " + std::to_string(index) + "/" + job["of"].dump() + " is also " + at->second.path);
-        }
+        if (Status added = given->add(index, path); !added.ok()) return added.error();
+        shards.emplace(index, Shard{path, std::move(summary)});
     }
-    const int count = job["of"].get<int>();
-    if (int(shards.size()) != count) {
-        std::string missing;
-        for (int k = 1; k <= count; ++k) {
-            if (shards.count(k) == 0) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
-        }
-        return makeError("merge", "shards missing of " + std::to_string(count) + ": " + missing);
-    }
+    if (Status complete = given->complete(); !complete.ok()) return complete.error();
     // In seed order (K order), so that the hashes and failures come in the order one run lists them.
     Json merged;
     size_t slowestListed = 0;
