@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Runs a `dermis reference` or `dermis stress` job as N shards and merges
-# them (docs/shards.md).
+# Runs a `dermis reference`, `stress`, `tune` or `bench` job as N shards and
+# merges them (docs/shards.md).
 #
 #   tools/shards.sh parallel N OUT reference SCENE [options...]
-#   tools/shards.sh parallel N OUT stress [options...]
+#   tools/shards.sh parallel N OUT stress|tune|bench [options...]
 #       GNU parallel on this machine: N shard processes (a reference's
 #       each with --threads cores / N), then `dermis merge` into OUT
-#       (.exr for a reference, .json for stress).
-#   tools/shards.sh slurm N OUT reference|stress ...
+#       (.exr for a reference, .json for stress and tune, a directory
+#       for bench).
+#   tools/shards.sh slurm N OUT reference|stress|tune|bench ...
 #       writes OUT.shards/array.sbatch (a Slurm job array: task K runs
 #       shard K/N) and OUT.shards/merge.sbatch (the merge), and prints the
 #       two sbatch commands that submit them, the merge after every task
@@ -18,7 +19,7 @@
 set -euo pipefail
 
 usage() {
-    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 2
 }
 fail() {
@@ -33,15 +34,19 @@ shift 4
 [[ $count =~ ^[1-9][0-9]*$ ]] || fail "N must be a positive integer, not '$count'"
 case $command in
 reference) [[ $out == *.exr ]] || fail "a reference's OUT must end in .exr, not '$out'"; [[ $# -ge 1 ]] || fail "reference needs a SCENE"; extension=exr ;;
-stress) [[ $out == *.json ]] || fail "a stress run's OUT must end in .json, not '$out'"; extension=json ;;
-*) fail "unknown command '$command' (reference or stress)" ;;
+stress|tune) [[ $out == *.json ]] || fail "a $command run's OUT must end in .json, not '$out'"; extension=json ;;
+bench) [[ $out != *.json && $out != *.exr ]] || fail "a bench run's OUT is a directory, not '$out'"; extension="" ;;
+*) fail "unknown command '$command' (reference, stress, tune or bench)" ;;
 esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 dermis=${DERMIS:-$root/build/dermis}
 dir=$out.shards
 mkdir -p "$dir"
 shards=()
-for k in $(seq 1 "$count"); do shards+=("$dir/shard-$k.$extension"); done
+suffix=${extension:+.$extension}
+merge_options=()
+for option in "$@"; do [[ $option == --no-plots ]] && merge_options=(--no-plots); done
+for k in $(seq 1 "$count"); do shards+=("$dir/shard-$k$suffix"); done
 
 case $mode in
 parallel)
@@ -51,10 +56,10 @@ parallel)
         cores=$(nproc)
         threads=(--threads $(( cores / count > 0 ? cores / count : 1 )))
     fi
-    parallel --will-cite --halt now,fail=1 -j "$count" \
-        "$dermis" "$command" "$@" "${threads[@]}" --quiet --shard {}/"$count" --out "$dir"/shard-{}."$extension" \
+    parallel --will-cite --quote --halt now,fail=1 -j "$count" \
+        "$dermis" "$command" "$@" "${threads[@]}" --quiet --shard {}/"$count" --out "$dir"/shard-{}"$suffix" \
         ::: $(seq 1 "$count")
-    "$dermis" merge --out "$out" "${shards[@]}"
+    "$dermis" merge "${merge_options[@]}" --out "$out" "${shards[@]}"
     ;;
 slurm)
     cat > "$dir/array.sbatch" <<SBATCH
@@ -63,13 +68,13 @@ slurm)
 #SBATCH --array=1-$count
 #SBATCH --cpus-per-task=8
 set -euo pipefail
-$(printf '%q ' "$dermis" "$command" "$@")--quiet --shard "\$SLURM_ARRAY_TASK_ID/$count" --out $(printf '%q' "$dir")/shard-"\$SLURM_ARRAY_TASK_ID".$extension
+$(printf '%q ' "$dermis" "$command" "$@")--quiet --shard "\$SLURM_ARRAY_TASK_ID/$count" --out $(printf '%q' "$dir")/shard-"\$SLURM_ARRAY_TASK_ID"$suffix
 SBATCH
     cat > "$dir/merge.sbatch" <<SBATCH
 #!/usr/bin/env bash
 #SBATCH --job-name=dermis-$command-merge
 set -euo pipefail
-$(printf '%q ' "$dermis" merge --out "$out" "${shards[@]}")
+$(printf '%q ' "$dermis" merge "${merge_options[@]}" --out "$out" "${shards[@]}")
 SBATCH
     echo "array=\$(sbatch --parsable $dir/array.sbatch)"
     echo "sbatch --dependency=afterok:\$array $dir/merge.sbatch"

@@ -8,11 +8,13 @@
 namespace dermis::log {
 namespace {
 std::atomic<bool> gQuiet{false};
+std::atomic<bool> gWarnings{true};
 std::mutex gMutex;
 }  // namespace
 
 void setQuiet(bool q) { gQuiet = q; }
 bool quiet() { return gQuiet; }
+void setWarnings(bool on) { gWarnings = on; }
 
 void info(const std::string& message) {
     if (gQuiet) return;
@@ -21,7 +23,7 @@ void info(const std::string& message) {
 }
 
 void warn(const std::string& message) {
-    if (gQuiet) return;
+    if (!gWarnings) return;
     std::lock_guard<std::mutex> lock(gMutex);
     std::fprintf(stderr, "warning: %s\n", message.c_str());
 }

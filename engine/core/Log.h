@@ -1,6 +1,7 @@
 #pragma once
 // Minimal logging: errors and progress go to stderr so stdout stays for tables
-// and machine-readable output. Quiet mode silences info and warnings, never errors.
+// and machine-readable output. Quiet mode (--quiet) silences info and progress;
+// warnings stay unless turned off too (dermis --no-warnings); errors always print.
 
 #include <cstdio>
 #include <string>
@@ -9,6 +10,7 @@ namespace dermis::log {
 
 void setQuiet(bool quiet);
 bool quiet();
+void setWarnings(bool on);
 void info(const std::string& message);
 void warn(const std::string& message);
 void error(const std::string& message);

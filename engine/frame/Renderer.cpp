@@ -80,7 +80,7 @@ Status Renderer::renderFrame(const FrameRequest& frameRequest) {
     recordShadowMaps(*mPlan, graph, mShadowCache);
     mPoseCache.record(*mPlan, graph);
 
-    mTimings.addPassReports(graph.passReports());
+    mTimings.addPassReports(mFrame, graph.passReports());
     mTimings.addTimings(mProfiler.takeCompleted());
     ++mFrame;
     return success();

@@ -75,6 +75,10 @@ public:
     // Each character as the last frame planned it (for the timings JSON); empty before the first frame.
     std::vector<CharacterReport> characterReports() const;
     void resetTimings() { mTimings = FrameTimings{}; }
+    // The next `frames` frames after a reset are warm-up: recorded, marked, not in the medians.
+    void setWarmUpFrames(size_t frames) { mTimings.setWarmUpFrames(frames); }
+    // Off: GL_TIME_ELAPSED instead of GL_TIMESTAMP pairs, so no GPU thread in a trace (what they cost: tools/benchmarks).
+    void setGpuTimestamps(bool on) { mProfiler.setTimestamps(on); }
     GpuScene& gpuScene() { return mGpuScene; }
     // The environment's GPU side: its map, block and per-character transfer buffers.
     const GpuEnvironment& gpuEnvironment() const;

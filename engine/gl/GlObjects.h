@@ -1,8 +1,14 @@
 #pragma once
 // Move-only owners of GL object names. A zero name means "none".
+//
+// Every object is made with a label (glObjectLabel, GL 4.3 / KHR_debug), so
+// that a frame capture (RenderDoc, docs/profiling.md) and the debug output
+// name it: "<owner>: <what>" ("gpu scene: head vertices"). A test reads every
+// live object's label back (tests/render/test_object_labels.cpp).
 
 #include "gl/Gl.h"
 
+#include <string_view>
 #include <utility>
 
 namespace dermis::gl {
@@ -51,25 +57,40 @@ using VertexArray = Object<detail::deleteVertexArray>;
 using Program = Object<detail::deleteProgram>;
 using Query = Object<detail::deleteQuery>;
 
-inline Texture createTexture(GLenum target) {
+// identifier: GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER, GL_VERTEX_ARRAY, GL_PROGRAM, GL_SHADER, GL_QUERY.
+inline void labelObject(GLenum identifier, GLuint name, std::string_view label) {
+    if (name != 0) glObjectLabel(identifier, name, static_cast<GLsizei>(label.size()), label.data());
+}
+
+inline Texture createTexture(GLenum target, std::string_view label) {
     GLuint name = 0;
     glCreateTextures(target, 1, &name);
+    labelObject(GL_TEXTURE, name, label);
     return Texture(name);
 }
-inline Buffer createBuffer() {
+inline Buffer createBuffer(std::string_view label) {
     GLuint name = 0;
     glCreateBuffers(1, &name);
+    labelObject(GL_BUFFER, name, label);
     return Buffer(name);
 }
-inline Framebuffer createFramebuffer() {
+inline Framebuffer createFramebuffer(std::string_view label) {
     GLuint name = 0;
     glCreateFramebuffers(1, &name);
+    labelObject(GL_FRAMEBUFFER, name, label);
     return Framebuffer(name);
 }
-inline VertexArray createVertexArray() {
+inline VertexArray createVertexArray(std::string_view label) {
     GLuint name = 0;
     glCreateVertexArrays(1, &name);
+    labelObject(GL_VERTEX_ARRAY, name, label);
     return VertexArray(name);
+}
+inline GLuint createQuery(GLenum target, std::string_view label) {
+    GLuint name = 0;
+    glCreateQueries(target, 1, &name);
+    labelObject(GL_QUERY, name, label);
+    return name;
 }
 
 }  // namespace dermis::gl

@@ -1,6 +1,7 @@
 #include "gl/GpuProfiler.h"
 
 #include <cassert>
+#include <cmath>
 
 namespace dermis::gl {
 
@@ -8,16 +9,21 @@ GpuProfiler::~GpuProfiler() {
     if (!mAllQueries.empty()) glDeleteQueries(static_cast<GLsizei>(mAllQueries.size()), mAllQueries.data());
 }
 
-GLuint GpuProfiler::newQuery() {
-    if (!mFreeQueries.empty()) {
-        const GLuint query = mFreeQueries.back();
-        mFreeQueries.pop_back();
+GLuint GpuProfiler::newQuery(GLenum target) {
+    std::vector<GLuint>& free = mFreeQueries[target];
+    if (!free.empty()) {
+        const GLuint query = free.back();
+        free.pop_back();
         return query;
     }
     GLuint query = 0;
-    glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+    glCreateQueries(target, 1, &query);
     mAllQueries.push_back(query);
     return query;
+}
+
+double GpuProfiler::cpuNowMs() const {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mEpoch).count();
 }
 
 void GpuProfiler::beginFrame(uint64_t frame) {
@@ -32,14 +38,23 @@ void GpuProfiler::beginFrame(uint64_t frame) {
         Framebuffer framebuffer = createFramebuffer();
         glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, texture.get(), 0);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        const GLuint warmUp = newQuery();
+        const GLuint warmUp = newQuery(GL_TIME_ELAPSED);
         glBeginQuery(GL_TIME_ELAPSED, warmUp);
         glClear(GL_COLOR_BUFFER_BIT);
         glEndQuery(GL_TIME_ELAPSED);
         GLuint64 ignored = 0;
         glGetQueryObjectui64v(warmUp, GL_QUERY_RESULT, &ignored);
-        mFreeQueries.push_back(warmUp);
+        mFreeQueries[GL_TIME_ELAPSED].push_back(warmUp);
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+    }
+    if (!mClockPaired) {
+        GLint counterBits = 0;
+        glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &counterBits);
+        mTimestamps = mTimestamps && counterBits > 0;
+        GLint64 gpuNowNs = 0;
+        glGetInteger64v(GL_TIMESTAMP, &gpuNowNs);
+        mGpuToCpuMs = cpuNowMs() - double(gpuNowNs) * 1e-6;
+        mClockPaired = true;
     }
     mFrame = frame;
     collect(false);
@@ -49,17 +64,34 @@ void GpuProfiler::beginPass(const std::string& name) {
     assert(!mInPass);
     mInPass = true;
     mPassName = name;
-    mActiveQuery = newQuery();
-    glBeginQuery(GL_TIME_ELAPSED, mActiveQuery);
+    mActiveTimestamp = 0;
+    if (mTimestamps) {
+        // Two stamps, before and after: the pass's time is their difference.
+        mActiveTimestamp = newQuery(GL_TIMESTAMP);
+        glQueryCounter(mActiveTimestamp, GL_TIMESTAMP);
+    } else {
+        mActiveQuery = newQuery(GL_TIME_ELAPSED);
+        glBeginQuery(GL_TIME_ELAPSED, mActiveQuery);
+    }
     mPassStart = std::chrono::steady_clock::now();
 }
 
 void GpuProfiler::endPass() {
     assert(mInPass);
     const auto end = std::chrono::steady_clock::now();
-    glEndQuery(GL_TIME_ELAPSED);
-    Pending pending{mActiveQuery, PassTiming{mFrame, mPassName, 0.0,
-                                             std::chrono::duration<double, std::milli>(end - mPassStart).count()}};
+    if (mTimestamps) {
+        mActiveQuery = newQuery(GL_TIMESTAMP);
+        glQueryCounter(mActiveQuery, GL_TIMESTAMP);
+    } else {
+        glEndQuery(GL_TIME_ELAPSED);
+    }
+    PassTiming timing;
+    timing.frame = mFrame;
+    timing.pass = mPassName;
+    timing.cpuMs = std::chrono::duration<double, std::milli>(end - mPassStart).count();
+    timing.cpuBeginMs = std::chrono::duration<double, std::milli>(mPassStart - mEpoch).count();
+    timing.gpuBeginMs = NAN;
+    Pending pending{mActiveQuery, mActiveTimestamp, std::move(timing)};
     mPending.push_back(std::move(pending));
     mInPass = false;
 }
@@ -75,9 +107,19 @@ void GpuProfiler::collect(bool wait) {
         }
         GLuint64 nanoseconds = 0;
         glGetQueryObjectui64v(front.query, GL_QUERY_RESULT, &nanoseconds);
-        front.timing.gpuMs = static_cast<double>(nanoseconds) * 1e-6;
+        if (front.timestamp != 0) {
+            // `query` is the end stamp; the begin stamp was issued before it, so it is ready too.
+            GLuint64 beginNs = 0;
+            glGetQueryObjectui64v(front.timestamp, GL_QUERY_RESULT, &beginNs);
+            front.timing.gpuMs = nanoseconds >= beginNs ? double(nanoseconds - beginNs) * 1e-6 : 0.0;
+            front.timing.gpuBeginMs = double(beginNs) * 1e-6 + mGpuToCpuMs;
+            mFreeQueries[GL_TIMESTAMP].push_back(front.timestamp);
+            mFreeQueries[GL_TIMESTAMP].push_back(front.query);
+        } else {
+            front.timing.gpuMs = static_cast<double>(nanoseconds) * 1e-6;
+            mFreeQueries[GL_TIME_ELAPSED].push_back(front.query);
+        }
         mCompleted.push_back(std::move(front.timing));
-        mFreeQueries.push_back(front.query);
         mPending.pop_front();
     }
 }

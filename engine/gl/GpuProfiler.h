@@ -1,10 +1,16 @@
 #pragma once
-// Per-pass GPU and CPU time. GPU time comes from GL_TIME_ELAPSED queries kept
-// in flight for several frames: beginFrame() collects only results that are
-// already available, so reading them never stalls the pipeline. drain() waits
-// for the rest (at the end of a run, when a stall no longer matters).
+// Per-pass GPU and CPU time. GPU time comes from a pair of GL_TIMESTAMP
+// queries (glQueryCounter) around each pass, kept in flight for several
+// frames: beginFrame() collects only results that are already available, so
+// reading them never stalls the pipeline. drain() waits for the rest (at the
+// end of a run, when a stall no longer matters). The begin stamp also places
+// the pass in a trace (render/TraceEvents.h), moved onto the CPU's clock by
+// one pair of readings (GL_TIMESTAMP now, the steady clock now) taken at the
+// first frame. Without a timestamp counter (or with setTimestamps(false)) a
+// GL_TIME_ELAPSED query measures the pass instead, and it has no place.
 //
 // CPU time is the wall-clock time the pass took to record its commands.
+// Begin times are ms since the profiler was made.
 
 #include "gl/GlObjects.h"
 
@@ -22,6 +28,8 @@ struct PassTiming {
     std::string pass;
     double gpuMs = 0.0;
     double cpuMs = 0.0;
+    double cpuBeginMs = 0.0;
+    double gpuBeginMs = 0.0;  // NaN when the GL has no timestamp counter, or timestamps are off
 };
 
 class GpuProfiler {
@@ -30,6 +38,9 @@ public:
     ~GpuProfiler();
     GpuProfiler(const GpuProfiler&) = delete;
     GpuProfiler& operator=(const GpuProfiler&) = delete;
+
+    // Off: GL_TIME_ELAPSED queries, no place in time (gpuBeginMs NaN); what the stamps cost is benchmarked against it.
+    void setTimestamps(bool on) { mTimestamps = on; }
 
     void beginFrame(uint64_t frame);
     void beginPass(const std::string& name);
@@ -42,20 +53,27 @@ public:
 
 private:
     struct Pending {
-        GLuint query;
+        GLuint query;      // the end stamp, or the elapsed-time query
+        GLuint timestamp;  // the begin stamp; 0 for an elapsed-time query
         PassTiming timing;
     };
-    GLuint newQuery();
+    GLuint newQuery(GLenum target);
     void collect(bool wait);
+    double cpuNowMs() const;
 
     std::deque<Pending> mPending;
-    std::vector<GLuint> mFreeQueries;
+    std::map<GLenum, std::vector<GLuint>> mFreeQueries;  // by target
     std::vector<GLuint> mAllQueries;
+    std::chrono::steady_clock::time_point mEpoch = std::chrono::steady_clock::now();
+    bool mTimestamps = true;
+    bool mClockPaired = false;
+    double mGpuToCpuMs = 0.0;  // add to a GL_TIMESTAMP in ms to get ms since mEpoch
     std::vector<PassTiming> mCompleted;
     uint64_t mFrame = 0;
     bool mInPass = false;
     std::string mPassName;
     GLuint mActiveQuery = 0;
+    GLuint mActiveTimestamp = 0;
     std::chrono::steady_clock::time_point mPassStart;
 };
 

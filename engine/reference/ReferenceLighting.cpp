@@ -123,7 +123,7 @@ Result<ReferenceLighting> ReferenceLighting::create(const Scene& scene, const ra
     Image environmentMap;
     if (scene.environment.enabled()) {
         auto loaded = loadEnvironmentSource(scene.environment);
-        if (!loaded.ok()) return loaded.error();
+        if (!loaded.ok()) return atSceneKey(scene, "/environment/source", loaded.error());
         environmentMap = std::move(*loaded);
     }
     return ReferenceLighting(scene, occluders, std::move(environmentMap), environmentSamples);

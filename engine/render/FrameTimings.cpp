@@ -1,10 +1,9 @@
 #include "render/FrameTimings.h"
 
-#include "core/TextFile.h"
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -31,29 +30,72 @@ std::string describeCull(const graph::PassReport& report) {
     return "";
 }
 
-void FrameTimings::addPassReports(const std::vector<graph::PassReport>& reports) {
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const double position = std::clamp(p, 0.0, 100.0) / 100.0 * double(values.size() - 1);
+    const size_t below = static_cast<size_t>(std::floor(position));
+    const size_t above = std::min(below + 1, values.size() - 1);
+    return values[below] + (position - double(below)) * (values[above] - values[below]);
+}
+
+double FrameRecord::gpuMs() const {
+    double sum = 0.0;
+    for (const gl::PassTiming& pass : passes) sum += pass.gpuMs;
+    return sum;
+}
+
+double FrameRecord::cpuMs() const {
+    double sum = 0.0;
+    for (const gl::PassTiming& pass : passes) sum += pass.cpuMs;
+    return sum;
+}
+
+FrameRecord* FrameTimings::record(uint64_t frame) {
+    const auto found = mFrameIndex.find(frame);
+    return found == mFrameIndex.end() ? nullptr : &mFrames[found->second];
+}
+
+void FrameTimings::addPassReports(uint64_t frame, const std::vector<graph::PassReport>& reports) {
+    FrameRecord* existing = record(frame);
+    if (!existing) {
+        mFrameIndex[frame] = mFrames.size();
+        FrameRecord added;
+        added.frame = frame;
+        added.warmUp = mFrames.size() < mWarmUpFrames;
+        mFrames.push_back(std::move(added));
+        existing = &mFrames.back();
+    }
     for (const graph::PassReport& report : reports) {
+        if (!report.executed) existing->culled.emplace_back(report.name, describeCull(report));
+        if (existing->warmUp) continue;
         if (mRecords.find(report.name) == mRecords.end()) mOrder.push_back(report.name);
-        PassRecord& record = mRecords[report.name];
-        ++record.declared;
+        PassRecord& pass = mRecords[report.name];
+        ++pass.declared;
         if (report.executed) {
-            ++record.executed;
+            ++pass.executed;
         } else {
-            record.lastCull = describeCull(report);
+            pass.lastCull = describeCull(report);
         }
     }
 }
 
 void FrameTimings::addTimings(const std::vector<gl::PassTiming>& timings) {
     for (const gl::PassTiming& t : timings) {
-        mGpu[t.pass].push_back(t.gpuMs);
-        mCpu[t.pass].push_back(t.cpuMs);
-        mFrameGpu[t.frame] += t.gpuMs;
-        mFrameCpu[t.frame] += t.cpuMs;
+        // A frame's timers without its report (a capture, not a frame) are not recorded.
+        if (FrameRecord* frame = record(t.frame)) frame->passes.push_back(t);
     }
 }
 
 std::vector<PassSummary> FrameTimings::summary() const {
+    std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> samples;  // gpu, cpu
+    for (const FrameRecord& frame : mFrames) {
+        if (frame.warmUp) continue;
+        for (const gl::PassTiming& pass : frame.passes) {
+            samples[pass.pass].first.push_back(pass.gpuMs);
+            samples[pass.pass].second.push_back(pass.cpuMs);
+        }
+    }
     std::vector<PassSummary> out;
     for (const std::string& name : mOrder) {
         const PassRecord& record = mRecords.at(name);
@@ -63,27 +105,40 @@ std::vector<PassSummary> FrameTimings::summary() const {
         s.executedFrames = record.executed;
         s.frames = record.declared;
         s.culledBecause = record.lastCull;
-        if (auto it = mGpu.find(name); it != mGpu.end()) {
-            s.gpuMs = median(it->second);
-            s.samples = it->second.size();
+        if (auto it = samples.find(name); it != samples.end()) {
+            const auto& [gpu, cpu] = it->second;
+            s.gpuMs = median(gpu);
+            s.gpuP5Ms = percentile(gpu, 5.0);
+            s.gpuP95Ms = percentile(gpu, 95.0);
+            s.cpuMs = median(cpu);
+            s.cpuP5Ms = percentile(cpu, 5.0);
+            s.cpuP95Ms = percentile(cpu, 95.0);
+            s.samples = gpu.size();
         }
-        if (auto it = mCpu.find(name); it != mCpu.end()) s.cpuMs = median(it->second);
         out.push_back(std::move(s));
     }
     return out;
 }
 
-double FrameTimings::frameGpuMs() const {
+std::vector<double> FrameTimings::frameSums(double (FrameRecord::*sum)() const) const {
     std::vector<double> values;
-    for (const auto& [frame, ms] : mFrameGpu) values.push_back(ms);
-    return median(values);
+    for (const FrameRecord& frame : mFrames) {
+        if (!frame.warmUp && !frame.passes.empty()) values.push_back((frame.*sum)());
+    }
+    return values;
 }
 
-double FrameTimings::frameCpuMs() const {
-    std::vector<double> values;
-    for (const auto& [frame, ms] : mFrameCpu) values.push_back(ms);
-    return median(values);
-}
+double FrameTimings::frameGpuMs() const { return median(frameSums(&FrameRecord::gpuMs)); }
+
+double FrameTimings::frameCpuMs() const { return median(frameSums(&FrameRecord::cpuMs)); }
+
+namespace {
+
+nlohmann::ordered_json finiteOrNull(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); }
+
+double spread(double p5, double p95, double median) { return median > 0.0 ? (p95 - p5) / median : 0.0; }
+
+}  // namespace
 
 std::string FrameTimings::toJson(const RunInfo& info) const {
     nlohmann::ordered_json j;
@@ -94,6 +149,7 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
     j["width"] = info.width;
     j["height"] = info.height;
     j["frames"] = info.frames;
+    j["warm_up_frames"] = mWarmUpFrames;
     j["passes"] = nlohmann::ordered_json::array();
     for (const PassSummary& s : summary()) {
         nlohmann::ordered_json p;
@@ -102,11 +158,22 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
         p["executed_frames"] = s.executedFrames;
         p["culled_because"] = s.culledBecause;
         p["gpu_ms"] = s.gpuMs;
+        p["gpu_p5_ms"] = s.gpuP5Ms;
+        p["gpu_p95_ms"] = s.gpuP95Ms;
+        p["gpu_spread"] = spread(s.gpuP5Ms, s.gpuP95Ms, s.gpuMs);
         p["cpu_ms"] = s.cpuMs;
+        p["cpu_p5_ms"] = s.cpuP5Ms;
+        p["cpu_p95_ms"] = s.cpuP95Ms;
         p["samples"] = s.samples;
         j["passes"].push_back(p);
     }
-    j["frame"] = {{"gpu_ms", frameGpuMs()}, {"cpu_ms", frameCpuMs()}, {"wall_ms", info.wallMsPerFrame}};
+    const std::vector<double> frameGpu = frameSums(&FrameRecord::gpuMs);
+    j["frame"] = {{"gpu_ms", median(frameGpu)},
+                  {"gpu_p5_ms", percentile(frameGpu, 5.0)},
+                  {"gpu_p95_ms", percentile(frameGpu, 95.0)},
+                  {"gpu_spread", spread(percentile(frameGpu, 5.0), percentile(frameGpu, 95.0), median(frameGpu))},
+                  {"cpu_ms", frameCpuMs()},
+                  {"wall_ms", info.wallMsPerFrame}};
     if (!info.characters.empty()) {
         j["characters"] = nlohmann::ordered_json::array();
         for (const CharacterReport& c : info.characters) {
@@ -128,7 +195,36 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
             j["characters"].back()["sss"] = std::move(sss);
         }
     }
+    j["per_frame"] = nlohmann::ordered_json::array();
+    for (const FrameRecord& frame : mFrames) {
+        nlohmann::ordered_json f{{"frame", frame.frame}, {"warm_up", frame.warmUp}, {"gpu_ms", frame.gpuMs()},
+                                 {"cpu_ms", frame.cpuMs()}, {"passes", nlohmann::ordered_json::array()},
+                                 {"culled", nlohmann::ordered_json::array()}};
+        for (const gl::PassTiming& pass : frame.passes) {
+            f["passes"].push_back({{"name", pass.pass},
+                                   {"gpu_ms", pass.gpuMs},
+                                   {"cpu_ms", pass.cpuMs},
+                                   {"gpu_begin_ms", finiteOrNull(pass.gpuBeginMs)},
+                                   {"cpu_begin_ms", pass.cpuBeginMs}});
+        }
+        for (const auto& [name, because] : frame.culled) f["culled"].push_back({{"name", name}, {"because", because}});
+        j["per_frame"].push_back(std::move(f));
+    }
     return j.dump(2) + "\n";
+}
+
+std::string FrameTimings::toCsv() const {
+    std::string out = "frame,warm_up,pass,gpu_ms,cpu_ms,gpu_begin_ms,cpu_begin_ms\n";
+    char line[512];
+    for (const FrameRecord& frame : mFrames) {
+        for (const gl::PassTiming& pass : frame.passes) {
+            // Pass names hold no comma or quote (graph passes are named in code).
+            std::snprintf(line, sizeof line, "%llu,%d,%s,%.9g,%.9g,%.12g,%.12g\n", static_cast<unsigned long long>(frame.frame),
+                          frame.warmUp ? 1 : 0, pass.pass.c_str(), pass.gpuMs, pass.cpuMs, pass.gpuBeginMs, pass.cpuBeginMs);
+            out += line;
+        }
+    }
+    return out;
 }
 
 std::string describeCharacterSss(const CharacterReport& character) {
@@ -148,24 +244,31 @@ std::string describeCharacterSss(const CharacterReport& character) {
 std::string FrameTimings::toTable(const RunInfo& info) const {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%s (%s), %dx%d, median of %d frames\n", info.renderer.c_str(),
-                  info.backend.c_str(), info.width, info.height, info.frames);
+    const std::string warmUp = mWarmUpFrames > 0 ? " after " + std::to_string(mWarmUpFrames) + " warm-up" : "";
+    std::snprintf(line, sizeof line, "%s (%s), %dx%d, median and 5th-95th percentile of %d frames%s\n", info.renderer.c_str(),
+                  info.backend.c_str(), info.width, info.height, info.frames - int(mWarmUpFrames), warmUp.c_str());
     out += line;
-    std::snprintf(line, sizeof line, "%-28s %10s %10s  %s\n", "pass", "gpu ms", "cpu ms", "");
+    std::snprintf(line, sizeof line, "%-28s %10s %19s %10s  %s\n", "pass", "gpu ms", "gpu p5-p95", "cpu ms", "");
     out += line;
     for (const PassSummary& s : summary()) {
+        char range[64];
+        std::snprintf(range, sizeof range, "%8.3f-%-8.3f", s.gpuP5Ms, s.gpuP95Ms);
         if (s.executed && s.executedFrames < s.frames) {
-            std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f  ran in %zu of %zu frames, then %s\n", s.name.c_str(),
-                          s.gpuMs, s.cpuMs, s.executedFrames, s.frames, s.culledBecause.c_str());
+            std::snprintf(line, sizeof line, "%-28s %10.3f %19s %10.3f  ran in %zu of %zu frames, then %s\n", s.name.c_str(),
+                          s.gpuMs, range, s.cpuMs, s.executedFrames, s.frames, s.culledBecause.c_str());
         } else if (s.executed) {
-            std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f\n", s.name.c_str(), s.gpuMs, s.cpuMs);
+            std::snprintf(line, sizeof line, "%-28s %10.3f %19s %10.3f\n", s.name.c_str(), s.gpuMs, range, s.cpuMs);
         } else {
-            std::snprintf(line, sizeof line, "%-28s %10s %10s  culled: %s\n", s.name.c_str(), "-", "-",
+            std::snprintf(line, sizeof line, "%-28s %10s %19s %10s  culled: %s\n", s.name.c_str(), "-", "", "-",
                           s.culledBecause.c_str());
         }
         out += line;
     }
-    std::snprintf(line, sizeof line, "%-28s %10.3f %10.3f\n", "frame (sum of passes)", frameGpuMs(), frameCpuMs());
+    const std::vector<double> frameGpu = frameSums(&FrameRecord::gpuMs);
+    char frameRange[64];
+    std::snprintf(frameRange, sizeof frameRange, "%8.3f-%-8.3f", percentile(frameGpu, 5.0), percentile(frameGpu, 95.0));
+    std::snprintf(line, sizeof line, "%-28s %10.3f %19s %10.3f\n", "frame (sum of passes)", median(frameGpu), frameRange,
+                  frameCpuMs());
     out += line;
     std::snprintf(line, sizeof line, "%-28s %10.3f\n", "frame wall clock", info.wallMsPerFrame);
     out += line;
@@ -178,10 +281,6 @@ std::string FrameTimings::toTable(const RunInfo& info) const {
         out += "  " + choice + "\n";
     }
     return out;
-}
-
-Status FrameTimings::writeJson(const std::string& path, const RunInfo& info) const {
-    return writeTextFileAtomically(path, toJson(info));
 }
 
 }  // namespace dermis

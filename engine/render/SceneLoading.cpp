@@ -74,7 +74,10 @@ Result<SceneModels> loadSharedSceneModels(const Scene& scene) {
         } else {
             log::info("loading character '" + character.name + "'");
             auto made = loadCharacterModel(character);
-            if (!made.ok()) return made.error();
+            if (!made.ok()) {
+                const bool gltf = !character.mesh.gltfPath.empty() && made.error().where == character.mesh.gltfPath;
+                return atSceneKey(scene, "/characters/" + std::to_string(index) + (gltf ? "/mesh/gltf" : ""), made.error());
+            }
             if (made->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
             addLevelsOfDetail(*made, levelsOfDetail);
             model = std::make_shared<const Model>(std::move(*made));
@@ -114,7 +117,7 @@ Status loadEnvironment(const Scene& scene, SceneGeometry& geometry) {
     const std::shared_ptr<const EnvironmentLight>& loaded = geometry.environmentLight();
     if (!loaded || loaded->source != environment.source) {
         auto light = loadEnvironmentLight(environment, scene.lights.size());
-        if (!light.ok()) return light.error();
+        if (!light.ok()) return atSceneKey(scene, "/environment/source", light.error());
         geometry.setEnvironmentLight(std::move(*light));
     } else if (!(loaded->extraction == extraction)) {
         geometry.setEnvironmentLight(splitEnvironmentLight(environment.source, loaded->map, extraction));

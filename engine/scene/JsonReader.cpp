@@ -1,5 +1,7 @@
 #include "scene/JsonReader.h"
 
+#include "core/Suggest.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -207,6 +209,11 @@ std::string quoteForMessage(const std::string& s) {
     return out + "\"";
 }
 
+std::string suggestionForMessage(const std::string& given, const std::vector<std::string>& known) {
+    const std::string closest = closestName(given, known);
+    return closest.empty() ? "" : ": did you mean " + quoteForMessage(closest) + "?";
+}
+
 std::string listForMessage(const std::vector<std::string>& items, const char* lastSeparator) {
     std::string out;
     for (size_t i = 0; i < items.size(); ++i) {
@@ -297,7 +304,8 @@ JsonObject::JsonObject(JsonContext& context, const json& value, std::string poin
         if (!isKnown) {
             mContext.fail(
                 mPointer + "/" + jsonPointerSegment(item.key()),
-                "unknown key " + quoteForMessage(item.key()) + " (known: " + listForMessage(known, "and") + ")");
+                "unknown key " + quoteForMessage(item.key()) + suggestionForMessage(item.key(), known) + " (known: " +
+                    listForMessage(known, "and") + ")");
             return;
         }
     }
@@ -433,8 +441,8 @@ void JsonObject::choice(const char* key, const char* noun, const std::vector<std
             return;
         }
     }
-    mContext.fail(pointer(key), std::string("unknown ") + noun + " " + quoteForMessage(text) + " (expected " +
-                                    listForMessage(options, "or") + ")");
+    mContext.fail(pointer(key), std::string("unknown ") + noun + " " + quoteForMessage(text) +
+                                    suggestionForMessage(text, options) + " (expected " + listForMessage(options, "or") + ")");
 }
 
 const json* JsonObject::array(const char* key, size_t maxSize, const char* elementNoun) {

@@ -36,6 +36,8 @@ std::string quoteForMessage(const std::string& s);
 
 // "directional, spot or point"
 std::string listForMessage(const std::vector<std::string>& items, const char* lastSeparator);
+// ": did you mean "NAME"?" when one of `known` is a likely typo of `given` (core/Suggest.h), else "".
+std::string suggestionForMessage(const std::string& given, const std::vector<std::string>& known);
 
 // The shortest text that reads back as x ("0.05", "1e+39").
 std::string formatNumberForMessage(double x);

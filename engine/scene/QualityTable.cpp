@@ -108,14 +108,20 @@ Result<QualityTable> parseQualityTable(const std::string& text, const std::strin
     return table;
 }
 
-Result<QualityTable> loadQualityTable(const std::string& path) {
+Result<std::string> readQualityTableText(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return makeError(path, "cannot open the quality table: no such file");
     std::ifstream file(path, std::ios::binary);
     if (!file) return makeError(path, "cannot open the quality table");
     const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     if (file.bad()) return makeError(path, "cannot read the quality table");
-    return parseQualityTable(text, path);
+    return text;
+}
+
+Result<QualityTable> loadQualityTable(const std::string& path) {
+    auto text = readQualityTableText(path);
+    if (!text.ok()) return text.error();
+    return parseQualityTable(*text, path);
 }
 
 std::string qualityTableJson(const QualityTable& table) {

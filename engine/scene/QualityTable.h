@@ -59,6 +59,8 @@ struct QualityTable {
 // pixels_per_mm are errors naming `path` and the JSON pointer.
 Result<QualityTable> parseQualityTable(const std::string& text, const std::string& path);
 Result<QualityTable> loadQualityTable(const std::string& path);
+// The file's text, unparsed (dermis merge joins tables as JSON).
+Result<std::string> readQualityTableText(const std::string& path);
 std::string qualityTableJson(const QualityTable& table);
 
 }  // namespace dermis

@@ -1,6 +1,9 @@
 #include "scene/Scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/component_wise.hpp>
+
+#include <cstdio>
 
 namespace dermis {
 
@@ -52,6 +55,23 @@ Result<const DiffusionProfile*> findSceneProfile(const Scene& scene, const std::
     for (const std::string& n : profileNames()) known += (known.empty() ? "" : ", ") + n;
     for (const DiffusionProfile& profile : scene.profiles) known += ", " + profile.name();
     return makeError("", "unknown diffusion profile \"" + name + "\" (known: " + known + ")");
+}
+
+Error atSceneKey(const Scene& scene, const std::string& pointer, const Error& cause) {
+    const std::string where = scene.path.empty() ? pointer : scene.path + ": " + pointer;
+    return Error{where, cause.message()};
+}
+
+std::string unlitSceneReason(const Scene& scene) {
+    bool lit = false;
+    for (const Light& light : scene.lights) lit = lit || (light.intensity > 0.0f && glm::compMax(light.colour) > 0.0f);
+    if (lit || (scene.environment.enabled() && scene.environment.intensity > 0.0f)) return "";
+    const std::string what = scene.lights.empty() ? "no light" : "no light of non-zero intensity and colour";
+    const std::string environment = scene.environment.enabled() ? "an environment of intensity 0" : "no environment";
+    const float ambient = glm::compMax(scene.settings.ambient);
+    char tail[96];
+    std::snprintf(tail, sizeof tail, ambient > 0.0f ? "; only the ambient term (%.3g) lights it" : "; nothing lights it", ambient);
+    return what + " and " + environment + tail;
 }
 
 }  // namespace dermis

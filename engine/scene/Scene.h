@@ -261,6 +261,16 @@ struct Scene {
 
 // The material a character's primitives with this glTF material name use:
 // its `materials` entry, else its `material`.
+// `cause`, found while loading what the scene file's key `pointer` names (a
+// JSON pointer: "/environment/source"), as an error that names the scene
+// file and the key first: "SCENE: /environment/source: FILE: problem".
+Error atSceneKey(const Scene& scene, const std::string& pointer, const Error& cause);
+
+// Why nothing but the ambient term lights the scene ("no light and no
+// environment", ...), or "" when a light or the environment does: such a
+// scene renders (nearly) black, which deserves a warning, not an error.
+std::string unlitSceneReason(const Scene& scene);
+
 const Material& characterMaterial(const Character& character, const std::string& gltfMaterialName);
 // The scene's own entry for the character's glTF material `index` (named
 // `gltfMaterialName`): `materials` by that name, else by "#index"; null when

@@ -148,7 +148,8 @@ void checkName(JsonObject& object, const char* key, const std::string& name, con
                const std::string& noun) {
     if (!object.has(key) || std::find(known.begin(), known.end(), name) != known.end()) return;
     object.context().check(false, object.pointer(key),
-                           "unknown " + noun + " " + quoteForMessage(name) + " (known: " + listForMessage(known, "or") + ")");
+                           "unknown " + noun + " " + quoteForMessage(name) + suggestionForMessage(name, known) + " (known: " +
+                               listForMessage(known, "or") + ")");
 }
 
 void readMesh(JsonObject& parent, const std::string& sceneFile, MeshSource& mesh) {

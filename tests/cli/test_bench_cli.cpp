@@ -202,7 +202,7 @@ TEST(BenchCli, BadInputFailsBeforeAnythingIsWritten) {
     const Case cases[] = {
         {kScene + " --sweep 'ss:sss.taps=5,,9'", 2, "--sweep ss:sss.taps=5,,9: axis has an empty value"},
         {kScene + " --sweep 'camera.near_m=1'", 2, "settings only"},
-        {kScene + " --sweep 'ss:sss.taps=4'", 1, "must be an odd number"},
+        {kScene + " --sweep 'ss:sss.taps=4'", 2, "must be an odd number"},  // a value the command line gave
         {kScene + " --size 64x36 --reference " + dir.file("missing.exr"), 1, "missing.exr"},
         {dir.file("nope.json"), 1, "nope.json"},
         {kScene + " --frames 0", 2, "--frames"},

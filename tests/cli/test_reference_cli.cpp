@@ -57,7 +57,7 @@ TEST(ReferenceCli, BadInputFailsCleanly) {
         {furnaceScene() + " --out " + out + " --aov specular", 2, "--aov"},
         {furnaceScene() + " --out " + out + " --spp 2", 2, "--spp"},  // not a perfect square
         {furnaceScene() + " --out " + dir.file("ref.png"), 2, ".exr"},
-        {furnaceScene() + " --out " + out + " --set sss.mix=7", 1, "mix"},
+        {furnaceScene() + " --out " + out + " --set sss.mix=7", 2, "mix"},  // a refused --set is a usage error
         {dir.file("missing.json") + " --out " + out, 1, "missing.json"},
         {furnaceScene() + " --out " + dir.file("no/such/dir/ref.exr"), 1, "no such directory"},
     };

@@ -8,7 +8,10 @@
   `stale` below), which a reader of the repository cannot follow;
 - the README's command table lists exactly the program's commands (the
   table in tools/dermis/main.cpp that `dermis --help` prints), and its layer
-  list exactly the folders of engine/.
+  list exactly the folders of engine/;
+- with the program given (check_docs.py ROOT [DERMIS]), every default the
+  docs state for an option ("`--frames N` ... (default 10)", or a table's
+  "default" column) is one that some command's --help states for it.
 Prints every problem, exits 1 if there is one."""
 import re
 import subprocess
@@ -71,6 +74,91 @@ engine_layers = sorted(p.name for p in (root / "engine").iterdir() if p.is_dir()
 readme_layers = sorted(re.findall(r"^engine/([a-z]+)/ ", readme, flags=re.M))
 if readme_layers != engine_layers:
     problems.append(f"README.md: the layer list has {readme_layers}; engine/ has {engine_layers}")
+
+
+# The chapter that documents each command's options (README.md documents them all).
+COMMAND_PAGES = {"cli.md": "render", "reference.md": "reference", "bench.md": "bench", "quality.md": "tune",
+                 "stress.md": "stress", "texture-space.md": "compare", "lean.md": "bake-lean", "viewer.md": "view",
+                 "shards.md": "merge"}
+
+# The README's examples of one command each write their own file: a reader
+# who runs them one after another keeps every result.
+for command in ("render", "compare", "bench", "reference", "tune"):
+    outputs = {}
+    for line in re.findall(r"^build/dermis " + command + r" .*$", readme, flags=re.M):
+        match = re.search(r"--out[ =](\S+)", line)
+        target = match.group(1) if match else "out/<scene name>.png (the default)"
+        if target in outputs:
+            problems.append(f"README.md: two `dermis {command}` examples write {target}:\n  {outputs[target]}\n  {line}")
+        outputs[target] = line
+
+
+def help_defaults(program):
+    """{command: {option: default}}: "default X" in the lines of each option of each command's --help."""
+    defaults = {}
+    for command in program_commands:
+        text = subprocess.run([program, command, "--help"], capture_output=True, text=True).stdout
+        option = None
+        for line in text.splitlines():
+            start = re.match(r"^  (--[a-z][\w-]*)", line)
+            if start:
+                option = start.group(1)
+            elif not line.startswith("     "):
+                option = None
+            for value in re.findall(r"\bdefault:? ([^),;]+)", line) if option else []:
+                defaults.setdefault(command, {})[option] = normalise(value)
+    return defaults
+
+
+def normalise(value):
+    return value.strip().strip("`*").rstrip(".").split(",")[0].split(":")[0].strip().strip("`").lower()
+
+
+def documented_defaults():
+    """(page, option, default) for each default the docs state next to an option: in a table
+    row whose table has a "default" column, or in prose ("`--opt N` (..., default X)")."""
+    found = []
+    inline = r"`[^`(]{0,40}\((?:[^()]*?\b)?default:? ([^),;]+)"
+    for page in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+        text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
+        default_column = None
+        paragraph = []
+        for line in text.splitlines() + [""]:
+            if not line.startswith("|"):
+                default_column = None
+                if line.strip():
+                    paragraph.append(line.strip())
+                    continue
+                joined = " ".join(paragraph)
+                paragraph = []
+                for option in set(re.findall(r"`(--[a-z][\w-]*)", joined)):
+                    for value in re.findall(re.escape(option) + r"(?![\w-])[^`]*" + inline, joined):
+                        found.append((page, option, normalise(value)))
+                continue
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if any(c.lower() == "default" for c in cells):
+                default_column = [c.lower() for c in cells].index("default")
+                continue
+            for option in set(re.findall(r"`(--[a-z][\w-]*)", line)):
+                if default_column is not None and len(cells) > default_column and cells[0].startswith(f"`{option}"):
+                    found.append((page, option, normalise(cells[default_column])))
+                for value in re.findall(re.escape(option) + r"(?![\w-])[^`]*" + inline, line):
+                    found.append((page, option, normalise(value)))
+    return found
+
+
+if len(sys.argv) > 2:
+    known = help_defaults(sys.argv[2])
+    for page, option, value in documented_defaults():
+        command = COMMAND_PAGES.get(page.name)
+        stated = ({known[command][option]} if option in known.get(command, {}) else set()) if command else \
+            {options[option] for options in known.values() if option in options}
+        if value in ("required",) or not stated or value in stated:
+            continue
+        problems.append(f"{page.relative_to(root)}: {option}: the docs say the default is {value}; "
+                        f"`dermis {command or '...'} --help` says {' or '.join(sorted(stated))}")
+else:
+    print("no program given: the documented defaults are not checked")
 
 for problem in problems:
     print(problem)

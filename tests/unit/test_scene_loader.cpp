@@ -615,7 +615,7 @@ TEST(SceneLoader, UnknownKeyIsNamedWithTheKnownOnes) {
     EXPECT_EQ(errorOf(R"({"background": {"colr": [1, 1, 1]}})"),
               "/background/colr: unknown key \"colr\" (known: colour)");
     EXPECT_EQ(errorOf(R"({"camra": {}})"),
-              "/camra: unknown key \"camra\" (known: camera, lights, characters, profiles, background, environment and settings)");
+              "/camra: unknown key \"camra\": did you mean \"camera\"? (known: camera, lights, characters, profiles, background, environment and settings)");
     EXPECT_EQ(
         errorOf(R"({"lights": [{}, {"colour": [1, 1, 1], "power": 2}]})").rfind("/lights/1/power: unknown key", 0), 0u);
     // Keys with pointer syntax in them are escaped.
@@ -814,7 +814,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
               "disk_samples, bilateral_depth_mm, "
               "control_depth_scale_per_mm, width_scale, min_width_px, mix and lean_moment_width_mm)");
     EXPECT_EQ(errorOf(withCharacter(R"("mesh": {"procedural": "head"}, "ssao": {"radius": 1})")),
-              "/characters/0/ssao/radius: unknown key \"radius\" (known: radius_m and samples)");
+              "/characters/0/ssao/radius: unknown key \"radius\": did you mean \"radius_m\"? (known: radius_m and samples)");
     // The flat shadow keys of the first format are gone.
     EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 2048}})"),
               "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, ambient, "

@@ -159,7 +159,7 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
     EXPECT_ERROR(errorOf({"characters.0={}"}), "--set characters.0={}", "/characters/0: missing required key \"mesh\"");
     // Names the engine defines are checked while loading, so the error names the override and the key.
     EXPECT_ERROR(errorOf({"characters.0.material.profile=marble2"}), "--set characters.0.material.profile=marble2",
-                 "/characters/0/material/profile: unknown diffusion profile \"marble2\" (known: skin, marble or none)");
+                 "/characters/0/material/profile: unknown diffusion profile \"marble2\": did you mean \"marble\"? (known: skin, marble or none)");
     // A number no double holds is out of range, not a string.
     EXPECT_ERROR(errorOf({"exposure=1e999"}), "--set exposure=1e999",
                  "1e999 is a number out of range (finite values up to about 1.8e308)");
@@ -169,7 +169,7 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
 
 TEST(SceneOverrides, UnknownKeysNameTheOverride) {
     EXPECT_ERROR(errorOf({"sss.tap=5"}), "--set sss.tap=5",
-                 "/settings/sss/tap: unknown key \"tap\" (known: enabled, variant, blur, technique, taps, gaussians, "
+                 "/settings/sss/tap: unknown key \"tap\": did you mean \"taps\"? (known: enabled, variant, blur, technique, taps, gaussians, "
                  "separable_samples, disk_samples, bilateral_depth_mm, control_depth_scale_per_mm, width_scale, min_width_px, mix and lean_moment_width_mm)");
     EXPECT_EQ(errorOf({"foo=1"}).what.rfind("/settings/foo: unknown key \"foo\"", 0), 0u);
     const Error nested = errorOf({"sss.extra.deep=1"});

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace dermis::shards {
 namespace {
 
@@ -19,6 +21,28 @@ TEST(ShardSpec, PartsCoverEveryItemOnceInOrder) {
                 largest = std::max(largest, range.count);
             }
             EXPECT_EQ(next, items) << count << " shards of " << items;
+            EXPECT_LE(largest - smallest, 1) << count << " shards of " << items;
+        }
+    }
+}
+
+TEST(ShardSpec, StridesTakeEveryItemOnceAndMixTheOrder) {
+    for (int count : {1, 2, 3, 7, 64}) {
+        for (int items : {0, 1, 5, 36, 180, 1001}) {
+            std::vector<int> takenBy(size_t(items), 0);
+            int smallest = items, largest = 0;
+            for (int k = 1; k <= count; ++k) {
+                const ShardStride stride = shardStride({k, count}, items);
+                for (int i = 0; i < stride.count; ++i) {
+                    ASSERT_LT(stride.item(i), items) << k << "/" << count << " of " << items;
+                    ++takenBy[size_t(stride.item(i))];
+                    // Consecutive items go to different shards: each shard gets a like mix of the order.
+                    if (i > 0) EXPECT_EQ(stride.item(i) - stride.item(i - 1), count);
+                }
+                smallest = std::min(smallest, stride.count);
+                largest = std::max(largest, stride.count);
+            }
+            for (int item = 0; item < items; ++item) EXPECT_EQ(takenBy[size_t(item)], 1) << item << " of " << items;
             EXPECT_LE(largest - smallest, 1) << count << " shards of " << items;
         }
     }

@@ -1,5 +1,6 @@
 #include "bench/QualityTune.h"
 
+#include "scene/JsonReader.h"
 #include "scene/SssTechniques.h"
 
 #include <algorithm>
@@ -76,7 +77,19 @@ QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>&
     return row;
 }
 
-std::string qualityTableMarkdown(const QualityTable& table) {
+Status sortQualityRows(QualityTable& table, const std::string& where) {
+    std::sort(table.rows.begin(), table.rows.end(),
+              [](const QualityRow& a, const QualityRow& b) { return a.pixelsPerMm < b.pixelsPerMm; });
+    for (size_t i = 1; i < table.rows.size(); ++i) {
+        if (table.rows[i].pixelsPerMm <= table.rows[i - 1].pixelsPerMm) {
+            return makeError(where, "two distances give the same scale (" + formatNumberForMessage(table.rows[i].pixelsPerMm) +
+                                        " px/mm): choose distance factors further apart");
+        }
+    }
+    return success();
+}
+
+std::string qualityTableMarkdown(const QualityTable& table, double margin) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "Quality table: error budget %.3g%% (relative RMSE of the diffuse AOV over SSS pixels against the finest "
@@ -93,7 +106,8 @@ std::string qualityTableMarkdown(const QualityTable& table) {
     }
     out += "\nAbove the largest scale a character uses the finest choice (" + describeSssChoice(SssChoice::finest()) +
            "); between two scales, the row of the larger one (docs/quality.md).\n";
-    return out;
+    std::snprintf(line, sizeof line, "\nA candidate qualified when its loss was at most %.3g x the budget (--margin).\n", margin);
+    return out + line;
 }
 
 }  // namespace dermis::bench

@@ -42,7 +42,12 @@ constexpr double kTuneTimingTie = 0.15;
 QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>& measured, double budget,
                           double finestSssMs);
 
-// One line per row: scale, choice, loss, SSS ms, the finest's SSS ms, saving.
-std::string qualityTableMarkdown(const QualityTable& table);
+// Sorts the rows by pixels per mm; errors (naming `where`) when two rows have
+// the same scale (two distances too close together).
+Status sortQualityRows(QualityTable& table, const std::string& where);
+
+// One line per row: scale, choice, loss, SSS ms, the finest's SSS ms, saving;
+// and the margin (dermis tune --margin) a candidate qualified within.
+std::string qualityTableMarkdown(const QualityTable& table, double margin);
 
 }  // namespace dermis::bench

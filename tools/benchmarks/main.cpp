@@ -7,6 +7,7 @@
 #include "GltfDecodeBenchmarks.h"
 #include "LeanBenchmarks.h"
 #include "ParallelLoopBenchmarks.h"
+#include "ProfilingBenchmarks.h"
 #include "QualityBenchmarks.h"
 #include "RayBenchmarks.h"
 #include "TechniqueBenchmarks.h"
@@ -69,5 +70,6 @@ int main(int argc, char** argv) {
     dermis::bench::printQualitySummary();
     dermis::bench::printRaySummary();
     dermis::bench::printParallelLoopSummary();
+    dermis::bench::printProfilingSummary();
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "core/Log.h"
 
 #include "core/Limits.h"
+#include "core/Suggest.h"
 
 #include <cerrno>
 #include <cmath>
@@ -46,23 +47,38 @@ Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::se
             parsed.options[name] = *value;
             parsed.repeated[name].push_back(*value);
         } else {
-            return makeError(arg, "unknown option (see --help)");
+            std::vector<std::string> known;
+            for (const std::string& option : valued) known.push_back("--" + option);
+            for (const std::string& option : switches) known.push_back("--" + option);
+            return makeError(arg, "unknown option" + didYouMean("--" + name, known) + " (see --help)");
         }
     }
     return parsed;
 }
 
-Result<int> parsePositiveInt(const std::string& option, const std::string& text) {
+namespace {
+
+Result<int> parseCount(const std::string& option, const std::string& text, long least, const char* expected) {
     errno = 0;
     char* end = nullptr;
     const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || (errno != 0 && errno != ERANGE) || value <= 0) {
-        return makeError(option, "expected a positive integer, got '" + text + "'");
+    if (text.empty() || *end != '\0' || (errno != 0 && errno != ERANGE) || value < least) {
+        return makeError(option, std::string("expected ") + expected + ", got '" + text + "'");
     }
     if (errno == ERANGE || value > kMaxCountOption) {
         return makeError(option, "at most " + std::to_string(kMaxCountOption) + ", got '" + text + "'");
     }
     return static_cast<int>(value);
+}
+
+}  // namespace
+
+Result<int> parsePositiveInt(const std::string& option, const std::string& text) {
+    return parseCount(option, text, 1, "a positive integer");
+}
+
+Result<int> parseNonNegativeInt(const std::string& option, const std::string& text) {
+    return parseCount(option, text, 0, "a non-negative integer");
 }
 
 Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension) {
@@ -131,7 +147,8 @@ Result<gl::Backend> parseBackend(const std::string& name) {
 
 int failure(const Error& error) {
     log::error(error.message());
-    return 1;
+    // A value given on the command line that the scene refuses (--set PATH=VALUE) is a usage error.
+    return error.where.rfind("--set ", 0) == 0 ? 2 : 1;
 }
 
 int usageError(const Error& error) {

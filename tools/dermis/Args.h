@@ -40,6 +40,7 @@ std::string expectedNames(const EnumTable<E, N>& table) {
 inline constexpr long kMaxCountOption = 1000000;
 
 Result<int> parsePositiveInt(const std::string& option, const std::string& text);
+Result<int> parseNonNegativeInt(const std::string& option, const std::string& text);
 // A finite number in (0, 10000].
 Result<float> parsePositiveFloat(const std::string& option, const std::string& text);
 // A finite number in [low, high].
@@ -54,7 +55,7 @@ Result<std::pair<int, int>> parseSize(const std::string& text, int maxDimension)
 Result<gl::Backend> parseBackend(const std::string& name);
 
 // The exit statuses, after the one error line.
-int failure(const Error& error);     // 1: the input or the run failed
+int failure(const Error& error);     // 1: the input or the run failed; 2 when the error names a --set override
 int usageError(const Error& error);  // 2: the command line is wrong
 
 }  // namespace dermis::cli

@@ -32,7 +32,7 @@ const char* const kHelp =
     "  --out PREFIX        output prefix (required); directories are created\n"
     "  --roughness M       Beckmann roughness below the map's resolution, in [0, 1],\n"
     "                      stored as the base variance (default 0: the material decides)\n"
-    "  --quiet             no progress messages\n"
+    "  --quiet             no progress messages (warnings stay)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the image cannot be read or the maps cannot be\n"

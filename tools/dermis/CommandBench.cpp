@@ -2,8 +2,8 @@
 // modes, times each configuration and measures its error against the CPU
 // reference.
 #include "Args.h"
+#include "BenchFiles.h"
 #include "Commands.h"
-#include "Python.h"
 #include "ReferenceOptions.h"
 
 #include "bench/BenchReport.h"
@@ -18,6 +18,9 @@
 #include "measure/MeasuredRender.h"
 #include "measure/Session.h"
 #include "scene/SceneEnums.h"
+#include "scene/SceneLoader.h"
+#include "shards/BenchShards.h"
+#include "shards/ShardNote.h"
 
 #include <cmath>
 #include <cstdio>
@@ -88,47 +91,19 @@ const char* const kHelp =
     "  --reference FILE   an existing full reference .exr of this scene at --size (skips computing it)\n"
     "REFERENCE_OPTIONS"
     "  --set PATH=VALUE   override a scene value for every configuration; repeatable\n"
+    "  --shard K/N        measure only configurations K, K+N, K+2N, ... (K from 1) of the plan;\n"
+    "                     DIR then holds the references, the error images of the defaults\n"
+    "                     this part measured and bench_shard.json, and `dermis merge` joins\n"
+    "                     the N directories into the files above (docs/shards.md)\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --no-plots         write the CSV and JSON files only (no Python needed; no PNGs, no errors.md)\n"
-    "  --quiet            no progress\n"
+    "  --quiet            no progress (warnings stay)\n"
     "  --help             this text\n"
     "\n"
     "The plots are drawn by tools/plot_bench.py with matplotlib (Debian: python3-matplotlib).\n"
     "Exit status: 0 on success, 1 when the scene, a configuration, the reference, a write or\n"
     "the plotting fails, 2 for bad command-line usage. Every configuration is checked before\n"
     "anything is rendered.\n";
-
-// Draws the plots of `texts` (the CSV and JSON files, by name) in a hidden
-// directory inside outDir, and stages each plot as outDir's file.
-Status stagePlots(const std::filesystem::path& outDir, const std::vector<std::pair<std::string, std::string>>& texts,
-                  OutputFiles& outputs) {
-    namespace fs = std::filesystem;
-    const fs::path drawing = outDir / (".plots.dermis-" + std::to_string(::getpid()));
-    struct RemoveAfter {
-        fs::path dir;
-        ~RemoveAfter() {
-            std::error_code ignored;
-            fs::remove_all(dir, ignored);
-        }
-    } removeAfter{drawing};
-    for (const auto& [name, text] : texts)
-        if (Status written = writeTextFileAtomically((drawing / name).string(), text); !written.ok()) return written;
-    const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_bench.py";
-    const std::string command = pythonInterpreter() + " '" + script + "' '" + drawing.string() + "'";
-    if (std::system(command.c_str()) != 0) {
-        return makeError(script, "plotting failed (it needs python3 with matplotlib: apt-get install python3-matplotlib); "
-                                 "nothing was written, --no-plots skips the plots");
-    }
-    std::error_code error;
-    for (const fs::directory_entry& entry : fs::directory_iterator(drawing, error)) {
-        // What the plot script draws: the PNGs and errors.md (the inputs it read stay behind).
-        if (entry.path().extension() != ".png" && entry.path().filename() != "errors.md") continue;
-        const std::string target = (outDir / entry.path().filename()).string();
-        if (Status staged = outputs.stageFile(target, entry.path()); !staged.ok()) return staged;
-    }
-    if (error) return makeError(drawing.string(), "could not list the plots: " + error.message());
-    return success();
-}
 
 std::string helpText() {
     std::string errorImages;
@@ -152,7 +127,12 @@ struct BenchOptions : MeasureOptions {
     std::vector<bench::PlannedConfig> planned;
     std::string givenReference;  // --reference FILE, or empty
     bool plots = true;
-    BenchSweepSettings sweep() const { return {scenePath, width, height, frames}; }
+    shards::ShardSpec shard;
+    int configurations = 0;  // of the whole job; `planned` holds the shard's
+    shards::ShardStride configurationsOfShard;  // the job's numbers of `planned`
+    BenchSweepSettings sweep() const {
+        return {scenePath, width, height, frames, true, configurationsOfShard.first, configurationsOfShard.step};
+    }
 };
 
 // Every option checked, and every configuration loaded, before anything is rendered.
@@ -172,42 +152,44 @@ Result<BenchOptions> parseBenchOptions(const ParsedArgs& args, bool* usage) {
     options.plots = !args.flags.count("no-plots");
     options.base = kReferenceDefinition;
     for (const std::string& change : args.all("set")) options.base.push_back(change);
+    if (args.has("shard")) {
+        auto shard = shards::parseShardSpec(args.get("shard", ""));
+        if (!shard.ok()) return shard.error();
+        options.shard = *shard;
+    }
     *usage = false;
     auto planned = bench::planConfigs(options.scenePath, options.base, *sweep);
     if (!planned.ok()) return planned.error();
-    options.planned = std::move(*planned);
+    options.configurations = int(planned->size());
+    if (options.shard.count > options.configurations) {
+        *usage = true;
+        return makeError("--shard " + options.shard.text(),
+                         "more shards than configurations (" + std::to_string(options.configurations) + ")");
+    }
+    options.configurationsOfShard = shards::shardStride(options.shard, options.configurations);
+    for (int i = 0; i < options.configurationsOfShard.count; ++i)
+        options.planned.push_back(std::move((*planned)[size_t(options.configurationsOfShard.item(i))]));
     return options;
 }
 
-// Stages results.csv, passes.csv, summary.json, the error images and (unless
-// --no-plots) the plots.
-Status stageBenchOutputs(const BenchOptions& options, const BenchSweepResult& result,
-                         const nlohmann::ordered_json& summary, OutputFiles& outputs) {
-    auto file = [&](const std::string& name) { return (options.outDir / name).string(); };
-    for (const auto& [name, image] : result.errorImages)
-        if (Status saved = outputs.stageImage(file(name), image); !saved.ok()) return saved;
-    const std::vector<std::pair<std::string, std::string>> texts = {{"results.csv", bench::resultsCsv(result.rows)},
-                                                                     {"passes.csv", bench::passesCsv(result.rows)},
-                                                                     {"summary.json", summary.dump(2) + "\n"}};
-    for (const auto& [name, text] : texts)
-        if (Status written = outputs.stageText(file(name), text); !written.ok()) return written;
-    return options.plots ? stagePlots(options.outDir, texts, outputs) : success();
-}
-
-void printDefaults(const nlohmann::ordered_json& summary) {
-    for (const auto& [mode, entry] : summary["modes"].items()) {
-        if (log::quiet() || entry["default"].is_null()) continue;
-        std::printf("%s default: %.1f ms, relative RMSE %.2f%% (scatter %.2f%%)\n", mode.c_str(),
-                    entry["default"]["frame_gpu_ms"].get<double>(), 100.0 * entry["default"]["relative_rmse"].get<double>(),
-                    entry["default"]["scatter_relative_rmse"].is_null()
-                        ? NAN : 100.0 * entry["default"]["scatter_relative_rmse"].get<double>());
-    }
+// Everything the rows depend on but the program and the machine: the scene as
+// loaded with every --set, the size, frames, sweep and the references' settings.
+std::string benchIdentity(const BenchOptions& options, const Scene& scene) {
+    const ReferenceSettings& r = options.reference;
+    std::string text = "bench " + std::to_string(options.width) + "x" + std::to_string(options.height) + " frames " +
+                       std::to_string(options.frames) + " sweep " + options.sweepSpec + " density " +
+                       std::to_string(r.density) + " spp " + std::to_string(r.samplesPerPixel) + " irradiance " +
+                       std::to_string(r.irradianceSizeTexels) + " change spp " + std::to_string(r.changeSamplesPerPixel) +
+                       " target " + std::to_string(r.progressive.targetRelativeRmse) + " passes " +
+                       std::to_string(r.progressive.maxPasses) + " reference " + options.givenReference +
+                       " configurations " + std::to_string(options.configurations);
+    return shards::identityOf(text + "\n" + sceneToJson(scene));
 }
 
 }  // namespace
 
 int runBench(const std::vector<std::string>& rawArgs) {
-    std::set<std::string> valued = {"out", "sweep", "size", "frames", "reference", "set", "backend"};
+    std::set<std::string> valued = {"out", "sweep", "size", "frames", "reference", "set", "backend", "shard"};
     valued.insert(kReferenceOptionNames.begin(), kReferenceOptionNames.end());
     auto args = parseArgs(rawArgs, valued, {"no-plots", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
@@ -228,6 +210,7 @@ int runBench(const std::vector<std::string>& rawArgs) {
     }
     auto session = Session::open(options->scenePath, options->base, options->backend, false);
     if (!session.ok()) return failure(session.error());
+    const std::string identity = benchIdentity(*options, *session->scene);  // before any configuration changes it
     ReferenceImages references(options->outDir, options->reference);
     auto meter = CauseMeter::create(*session, references, std::move(givenReference));
     if (!meter.ok()) return failure(meter.error());
@@ -244,9 +227,22 @@ int runBench(const std::vector<std::string>& rawArgs) {
         options->givenReference.empty() ? (options->outDir / "reference.exr").string() : options->givenReference;
     summary["reference_spp"] = options->reference.samplesPerPixel;
     summary["irradiance_size_texels"] = options->reference.irradianceSizeTexels;
-    if (Status staged = stageBenchOutputs(*options, *result, summary, outputs); !staged.ok()) return failure(staged.error());
+    std::vector<std::string> errorImages;
+    for (const auto& [name, image] : result->errorImages) {
+        if (Status saved = outputs.stageImage((options->outDir / name).string(), image); !saved.ok()) return failure(saved.error());
+        errorImages.push_back(name);
+    }
+    if (options->shard.whole()) {
+        if (Status staged = stageBenchTables(options->outDir, result->rows, summary, options->plots, outputs); !staged.ok())
+            return failure(staged.error());
+    } else {
+        const std::string note = shards::benchShardNoteJson(options->shard, identity,
+                                                            options->configurations, summary, result->rows, errorImages);
+        const std::string notePath = (options->outDir / shards::kBenchShardNoteName).string();
+        if (Status written = outputs.stageText(notePath, note); !written.ok()) return failure(written.error());
+    }
     if (Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
-    printDefaults(summary);
+    if (options->shard.whole()) printBenchDefaults(summary);
     log::info("wrote " + options->outDir.string());
     return 0;
 }

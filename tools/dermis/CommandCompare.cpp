@@ -63,7 +63,7 @@ const char* const kHelp =
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable\n"
     "  --backend NAME      egl or osmesa (default: egl, falling back to osmesa)\n"
     "  --gl-debug          GL debug context; driver errors fail the run\n"
-    "  --quiet             no progress messages\n"
+    "  --quiet             no progress messages (warnings stay)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the scene, the GL context or a write fails,\n"

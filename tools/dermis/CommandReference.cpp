@@ -7,11 +7,11 @@
 #include "measure/ReferenceImages.h"
 #include "measure/Session.h"
 
-#include "core/ContentHash.h"
 #include "core/Image.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
 #include "shards/ReferenceShards.h"
+#include "shards/ShardNote.h"
 #include "raytrace/ParallelFor.h"
 #include "reference/ReferenceRenderer.h"
 #include "scene/SceneLoader.h"
@@ -76,7 +76,7 @@ const char* const kHelp =
     "                      and write FILE.exr.shard.json beside the image; `dermis merge` joins\n"
     "                      the N shards into the image one run makes, bit for bit\n"
     "                      (docs/shards.md). Not with --target-error or --max-passes\n"
-    "  --quiet             no progress bars or summary\n"
+    "  --quiet             no progress bars or summary (warnings stay)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the scene or its content fails to load or the file\n"
@@ -179,9 +179,7 @@ std::string referenceIdentity(const ReferenceCommandOptions& options, const Scen
                        std::to_string(r.quadrature.density) + " spp " + std::to_string(r.samplesPerPixel) + " env " +
                        std::to_string(r.environmentSamples) + " integral env " + std::to_string(r.integralEnvironmentSamples) +
                        " content " + std::to_string(renderer.contentHash()) + "\n" + sceneToJson(scene);
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(text.data(), text.size())));
-    return hex;
+    return shards::identityOf(text);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/OutputFiles.h"
 #include "plan/Aov.h"
 #include "frame/Renderer.h"
+#include "render/TraceEvents.h"
 #include "scene/SceneEnums.h"
 
 #include <chrono>
@@ -25,11 +26,14 @@ const char* const kHelp =
     "usage: dermis render SCENE [options]\n"
     "\n"
     "Renders SCENE (a JSON scene file, see content/scenes/README.md) without a window\n"
-    "and prints a table of per-pass GPU and CPU milliseconds (medians over the frames).\n"
+    "and prints a table of per-pass GPU and CPU milliseconds (medians and 5th-95th\n"
+    "percentiles over the frames after the warm-up).\n"
     "\n"
     "options:\n"
     "  --size WxH          frame size in pixels (default 640x360)\n"
-    "  --frames N          frames to render; timings are medians over them (default 10)\n"
+    "  --frames N          frames to render and time (default 10)\n"
+    "  --warm-up N         frames to render first: in the per-frame timings and the trace,\n"
+    "                      marked warm_up, but not in the medians (default 0)\n"
     "  --out FILE          output image: .png is tone-mapped 8-bit sRGB, .exr is linear\n"
     "                      32-bit float; for the final image an .exr holds the frame before\n"
     "                      exposure and tone mapping (--aov radiance) (default out/<scene name>.png)\n"
@@ -40,7 +44,12 @@ const char* const kHelp =
     "                      screen in its UV layout (the unit square, letterboxed, v up), in\n"
     "                      either mode: in ss mode only their own texture-space passes run;\n"
     "                      black when SSS is off or no SSS character is on screen\n"
-    "  --timings FILE      also write the timings as JSON\n"
+    "  --timings FILE      also write the timings: FILE.json, the summary and every frame's\n"
+    "                      passes (docs/profiling.md), or FILE.csv, one row per pass per frame\n"
+    "  --trace FILE        also write a trace of every frame, FILE.json in the Trace Event\n"
+    "                      format (open it in ui.perfetto.dev or chrome://tracing): a CPU\n"
+    "                      and a GPU thread, a slice per pass per frame, the graph's culled\n"
+    "                      passes as instant events (docs/profiling.md)\n"
     "  --time T            render at time T seconds: each animated character plays its\n"
     "                      clip at animation.time_s + animation.speed x T (default 0)\n"
     "  --sequence S:E:FPS  render an image sequence: one frame at each time S, S + 1/FPS,\n"
@@ -59,7 +68,7 @@ const char* const kHelp =
     "  --backend NAME      egl (GPU through EGL devices, else Mesa surfaceless) or osmesa\n"
     "                      (default: egl, falling back to osmesa)\n"
     "  --gl-debug          GL debug context; driver errors are printed and fail the run\n"
-    "  --quiet             no progress messages and no table\n"
+    "  --quiet             no progress messages and no table (warnings stay)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the scene, its content or the GL context fails,\n"
@@ -81,7 +90,9 @@ struct RenderOptions {
     int frames = 10;                // timed frames, when there is no sequence
     std::vector<float> sequence;    // --sequence: one frame per time, each written
     std::string outPath;
+    int warmUpFrames = 0;           // --warm-up, rendered before `frames`
     std::optional<std::string> timingsPath;  // --timings
+    std::optional<std::string> tracePath;    // --trace
     std::vector<std::string> overrides;
     gl::Backend backend = gl::Backend::Auto;
     bool glDebug = false;
@@ -135,7 +146,23 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
     options.request = FrameRequest{size->first, size->second, (*aov == Aov::Final && extension == ".exr") ? Aov::Radiance : *aov};
     options.request.timeS = *time;
     options.frames = options.sequence.empty() ? *frames : static_cast<int>(options.sequence.size());
-    if (args.has("timings")) options.timingsPath = args.get("timings", "");
+    if (args.has("warm-up")) {
+        if (!options.sequence.empty()) return makeError("--warm-up", "not with --sequence, whose frames are each written");
+        auto warmUp = parseNonNegativeInt("--warm-up", args.get("warm-up", "0"));
+        if (!warmUp.ok()) return warmUp.error();
+        options.warmUpFrames = *warmUp;
+    }
+    if (args.has("timings")) {
+        options.timingsPath = args.get("timings", "");
+        const std::string timingsExtension = std::filesystem::path(*options.timingsPath).extension().string();
+        if (timingsExtension != ".json" && timingsExtension != ".csv")
+            return makeError("--timings " + *options.timingsPath, "the file must end in .json or .csv");
+    }
+    if (args.has("trace")) {
+        options.tracePath = args.get("trace", "");
+        if (std::filesystem::path(*options.tracePath).extension() != ".json")
+            return makeError("--trace " + *options.tracePath, "the file must end in .json (Trace Event format)");
+    }
     options.backend = *backend;
     options.glDebug = args.flags.count("gl-debug") > 0;
     return options;
@@ -146,6 +173,11 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
 Result<double> renderFrames(const RenderOptions& options, Session& session, OutputFiles& outputs) {
     Renderer& renderer = *session.renderer;
     FrameRequest request = options.request;
+    renderer.setWarmUpFrames(size_t(options.warmUpFrames));
+    for (int i = 0; i < options.warmUpFrames; ++i) {
+        if (const Status status = renderer.renderFrame(request); !status.ok()) return status.error();
+    }
+    if (options.warmUpFrames > 0) glFinish();  // the wall clock counts the timed frames only
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < options.frames; ++i) {
         if (!options.sequence.empty()) request.timeS = options.sequence[static_cast<size_t>(i)];
@@ -173,7 +205,8 @@ Result<double> renderFrames(const RenderOptions& options, Session& session, Outp
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"size", "frames", "out", "aov", "timings", "backend", "set", "mode", "variant", "time", "sequence"},
+    auto args = parseArgs(rawArgs, {"size", "frames", "warm-up", "out", "aov", "timings", "trace", "backend", "set", "mode",
+                                    "variant", "time", "sequence"},
                           {"gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
@@ -194,15 +227,22 @@ int runRender(const std::vector<std::string>& rawArgs) {
     auto wallMsPerFrame = renderFrames(*options, *session, outputs);
     if (!wallMsPerFrame.ok()) return failure(wallMsPerFrame.error());
     Renderer& renderer = *session->renderer;
-    RunInfo info = session->runInfo(options->scenePath, options->request.width, options->request.height, options->frames);
+    RunInfo info = session->runInfo(options->scenePath, options->request.width, options->request.height,
+                                    options->warmUpFrames + options->frames);
     info.wallMsPerFrame = *wallMsPerFrame;
     info.characters = renderer.characterReports();
+    const FrameTimings& timings = renderer.timings();
     if (options->timingsPath) {
-        if (const Status staged = outputs.stageText(*options->timingsPath, renderer.timings().toJson(info)); !staged.ok())
+        const bool csv = std::filesystem::path(*options->timingsPath).extension() == ".csv";
+        if (const Status staged = outputs.stageText(*options->timingsPath, csv ? timings.toCsv() : timings.toJson(info)); !staged.ok())
+            return failure(staged.error());
+    }
+    if (options->tracePath) {
+        if (const Status staged = outputs.stageText(*options->tracePath, traceEventsJson(timings, info)); !staged.ok())
             return failure(staged.error());
     }
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
-    if (!log::quiet()) std::printf("%s", renderer.timings().toTable(info).c_str());
+    if (!log::quiet()) std::printf("%s", timings.toTable(info).c_str());
     if (options->sequence.empty()) log::info("wrote " + options->outPath);
     return 0;
 }

@@ -61,7 +61,7 @@ const char* const kHelp =
     "                      KiB (1..16384), to show that a leak fails the run\n"
     "  --no-plot           do not draw soak.png\n"
     "  --backend NAME      egl or osmesa (default: egl, falling back to osmesa)\n"
-    "  --quiet             no progress lines\n"
+    "  --quiet             no progress lines (warnings stay)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 when memory stayed flat in every mode, 1 when it grew (the error\n"

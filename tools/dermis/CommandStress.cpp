@@ -67,7 +67,7 @@ const char* const kHelp =
     "  --shard K/N     run only the K-th of N parts of the cases (K from 1); the\n"
     "                summary says which, and `dermis merge` adds the N summaries up\n"
     "                into the one a single run writes (docs/shards.md)\n"
-    "  --quiet         no progress\n"
+    "  --quiet         no progress (warnings stay)\n"
     "  --help          this text\n"
     "\n"
     "Each case also runs the wrong-image detectors (coverage, energy, black,\n"

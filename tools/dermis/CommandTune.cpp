@@ -2,6 +2,7 @@
 // per on-screen scale, written as a quality table (docs/quality.md).
 #include "Args.h"
 #include "Commands.h"
+#include "QualityTableFiles.h"
 #include "measure/QualityTuning.h"
 #include "measure/Session.h"
 
@@ -11,6 +12,9 @@
 #include "core/OutputFiles.h"
 #include "core/TextFile.h"
 #include "scene/QualityTable.h"
+#include "scene/SceneLoader.h"
+#include "shards/ShardNote.h"
+#include "shards/TuneShards.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,8 +67,11 @@ const char* const kHelp =
     "  --margin M         a candidate qualifies when its loss <= M x the budget, M in (0, 1]\n"
     "                     (default 0.8: the loss on other scenes differs from the tuned one's)\n"
     "  --set PATH=VALUE   override a scene value for every measurement; repeatable\n"
+    "  --shard K/N        tune only the K-th of N parts of the distances (K from 1, N at most\n"
+    "                     the number of distances) and write beside FILE its note\n"
+    "                     FILE.shard.json; `dermis merge` joins the N tables (docs/shards.md)\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
-    "  --quiet            no progress\n"
+    "  --quiet            no progress (warnings stay)\n"
     "  --help             this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the scene, a render or a write fails or no SSS\n"
@@ -93,16 +100,21 @@ Result<std::vector<double>> parseDistances(const std::string& text) {
     return out;
 }
 
-std::string markdownPath(const std::string& jsonPath) {
-    std::filesystem::path path(jsonPath);
-    path.replace_extension(".md");
-    return path.string();
+// Everything a tuned table depends on but the program: the scene as loaded with
+// every override, the size, frames, budget, margin and all of the job's distances.
+std::string tuneIdentity(const TuneSettings& settings, const Scene& scene) {
+    std::string text = "tune " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " frames " +
+                       std::to_string(settings.frames) + " budget " + formatNumberForMessage(settings.budget) + " margin " +
+                       formatNumberForMessage(settings.margin) + " distances";
+    for (double distance : settings.distances) text += " " + formatNumberForMessage(distance);
+    return shards::identityOf(text + "\n" + sceneToJson(scene));
 }
 
 }  // namespace
 
 int runTune(const std::vector<std::string>& rawArgs) {
-    auto args = parseArgs(rawArgs, {"budget", "out", "size", "distances", "frames", "margin", "set", "backend"}, {"quiet", "help"});
+    auto args = parseArgs(rawArgs, {"budget", "out", "size", "distances", "frames", "margin", "set", "backend", "shard"},
+                          {"quiet", "help"});
     if (!args.ok()) return usageError(args.error());
     if (args->flags.count("help")) {
         std::string help = kHelp;
@@ -134,6 +146,16 @@ int runTune(const std::vector<std::string>& rawArgs) {
     if (std::filesystem::path(outPath).extension() != ".json") {
         return usageError(makeError("--out " + outPath, "the quality table must be a .json file"));
     }
+    shards::ShardSpec shard;
+    if (args->has("shard")) {
+        auto parsed = shards::parseShardSpec(args->get("shard", ""));
+        if (!parsed.ok()) return usageError(parsed.error());
+        if (size_t(parsed->count) > distances->size()) {
+            return usageError(makeError("--shard " + parsed->text(),
+                                        "more shards than distances (" + std::to_string(distances->size()) + ")"));
+        }
+        shard = *parsed;
+    }
     log::setQuiet(args->flags.count("quiet") > 0);
     const std::string scenePath = args->positional[0];
     const int width = size->first;
@@ -144,21 +166,20 @@ int runTune(const std::vector<std::string>& rawArgs) {
     auto session = Session::open(scenePath, base, *backend, false);
     if (!session.ok()) return failure(session.error());
     TuneSettings settings{scenePath, width, height, *distances, *frames, *budget, *margin};
+    const std::string identity = tuneIdentity(settings, *session->scene);
+    const shards::ShardRange range = shards::shardRange(shard, int(distances->size()));
+    settings.distances.assign(distances->begin() + range.first, distances->begin() + range.first + range.count);
     auto tuned = tuneQualityTable(*session, settings);
     if (!tuned.ok()) return failure(tuned.error());
-    const QualityTable& table = *tuned;
-    // Written, then read back as a scene would, so a table tune writes always loads.
-    const std::string json = qualityTableJson(table);
-    if (auto check = parseQualityTable(json, outPath); !check.ok()) return failure(check.error());
-    char marginLine[160];
-    std::snprintf(marginLine, sizeof marginLine, "\nA candidate qualified when its loss was at most %.3g x the budget (--margin).\n",
-                  double(*margin));
-    const std::string markdown = bench::qualityTableMarkdown(table) + marginLine;
-    OutputFiles outputs;  // both files, or neither (docs/cli.md, "Outputs")
-    if (Status written = outputs.stageText(outPath, json); !written.ok()) return failure(written.error());
-    if (Status written = outputs.stageText(markdownPath(outPath), markdown); !written.ok())
-        return failure(written.error());
+    OutputFiles outputs;  // every file, or none (docs/cli.md, "Outputs")
+    if (Status staged = stageQualityTable(qualityTableJson(*tuned), *tuned, *margin, outPath, outputs); !staged.ok()) return failure(staged.error());
+    if (!shard.whole()) {
+        const std::string note = shards::tuneShardNoteJson(shard, identity, *distances, *margin);
+        if (Status written = outputs.stageText(shards::tuneShardNotePath(outPath), note); !written.ok())
+            return failure(written.error());
+    }
     if (Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
+    const std::string markdown = bench::qualityTableMarkdown(*tuned, *margin);
     if (!log::quiet()) std::fputs(markdown.c_str(), stdout);
     log::info("wrote " + outPath + " and " + markdownPath(outPath));
     return 0;

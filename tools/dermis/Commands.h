@@ -25,4 +25,8 @@ int runMerge(const std::vector<std::string>& args);
 
 const std::vector<Command>& commands();
 
+// `git describe --always --dirty` of the checkout the program was built from
+// (generated at build time by tools/cmake/GitRevision.cmake).
+const char* gitRevision();
+
 }  // namespace dermis::cli

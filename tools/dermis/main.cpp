@@ -3,6 +3,9 @@
 #include "CommandReference.h"
 #include "Commands.h"
 
+#include "core/Log.h"
+#include "core/Suggest.h"
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,7 +21,7 @@ const std::vector<Command>& commands() {
         {"reference", "CPU reference of the diffuse AOV: the subsurface integral by brute force", runReference},
         {"bench", "run time against error: sweep the quality knobs of both modes against the CPU reference", runBench},
         {"tune", "the cheapest SSS choice within an error budget per on-screen scale: write a quality table", runTune},
-        {"merge", "join the shards of a `reference` or `stress` job run with --shard K/N into what one run writes", runMerge},
+        {"merge", "join the shards of a `reference`, `stress`, `bench` or `tune` job run with --shard K/N into what one run writes", runMerge},
         {"view", "open a window on a scene: live settings, A/B split, AOVs, live GPU profiler", runView},
         {"bake-lean", "bake LEAN maps (bump centre and second moments, full mip chain) from a normal map", runBakeLean},
     };
@@ -34,6 +37,15 @@ void printUsage(std::FILE* out) {
                  "Dermis: real-time skin rendering (screen-space and texture-space subsurface scattering).\n\n"
                  "usage: dermis <command> [options]   (dermis <command> --help for its options)\n\ncommands:\n");
     for (const auto& command : dermis::cli::commands()) std::fprintf(out, "  %-10s %s\n", command.name, command.summary);
+    std::fprintf(out,
+                 "\noptions of every command:\n"
+                 "  --quiet        no progress (warnings still print)\n"
+                 "  --no-warnings  no warnings either (errors always print)\n"
+                 "  --help         the command's options\n"
+                 "\n"
+                 "dermis --version prints the version and the git revision it was built from.\n"
+                 "Exit status: 0 on success, 1 when the work fails (a file, a scene, a render), 2 for bad\n"
+                 "command-line usage.\n");
 }
 
 }  // namespace
@@ -48,9 +60,24 @@ int main(int argc, char** argv) {
         printUsage(stdout);
         return 0;
     }
-    for (const auto& command : dermis::cli::commands()) {
-        if (name == command.name) return command.run(std::vector<std::string>(argv + 2, argv + argc));
+    if (name == "--version" || name == "version") {
+        std::printf("dermis %s (git %s)\n", DERMIS_VERSION, dermis::cli::gitRevision());
+        return 0;
     }
-    std::fprintf(stderr, "error: unknown command '%s' (run 'dermis --help' for the list)\n", name.c_str());
+    std::vector<std::string> arguments;
+    for (int i = 2; i < argc; ++i) {
+        if (std::string(argv[i]) == "--no-warnings") {
+            dermis::log::setWarnings(false);
+        } else {
+            arguments.emplace_back(argv[i]);
+        }
+    }
+    for (const auto& command : dermis::cli::commands()) {
+        if (name == command.name) return command.run(arguments);
+    }
+    std::vector<std::string> names;
+    for (const auto& command : dermis::cli::commands()) names.push_back(command.name);
+    std::fprintf(stderr, "error: unknown command '%s'%s (run 'dermis --help' for the list)\n", name.c_str(),
+                 dermis::didYouMean(name, names).c_str());
     return 2;
 }

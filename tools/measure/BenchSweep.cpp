@@ -83,7 +83,7 @@ Result<BenchSweepResult> measureBenchSweep(Session& session, CauseMeter& meter,
             result.errorImages.emplace_back("error_" + config.sweep.mode + ".png",
                                             differenceHeatmap(reference, diffuse, mask, scaleMax));
         }
-        bench::BenchRow row = rowOf(i, config, *measured, w, h, settings.frames);
+        bench::BenchRow row = rowOf(size_t(settings.firstId) + i * size_t(settings.idStep), config, *measured, w, h, settings.frames);
         row.relativeRmse = error->relativeRmse;
         row.maxAbsDifference = error->maxAbsDifference;
         row.psnrDb = error->psnrDb;

@@ -24,6 +24,9 @@ struct BenchSweepSettings {
     int height = 0;
     int frames = 5;  // timed, after one warm-up (the first configuration warms up longer)
     bool printRows = true;
+    // The ids of the rows: firstId, firstId + idStep, ... (a shard's configurations in the job's plan).
+    int firstId = 0;
+    int idStep = 1;
 };
 
 struct BenchSweepResult {

@@ -96,15 +96,7 @@ Result<QualityTable> tuneQualityTable(Session& session, const TuneSettings& sett
         }
         table.rows.push_back(bench::cheapestWithin(pixelsPerMm, measured, settings.margin * settings.budget, finestSssMs));
     }
-    std::sort(table.rows.begin(), table.rows.end(),
-              [](const QualityRow& a, const QualityRow& b) { return a.pixelsPerMm < b.pixelsPerMm; });
-    for (size_t i = 1; i < table.rows.size(); ++i) {
-        if (table.rows[i].pixelsPerMm <= table.rows[i - 1].pixelsPerMm) {
-            return (makeError(settings.scenePath, "two distances give the same scale (" +
-                                                    formatNumberForMessage(table.rows[i].pixelsPerMm) +
-                                                    " px/mm): choose distance factors further apart"));
-        }
-    }
+    if (Status sorted = bench::sortQualityRows(table, settings.scenePath); !sorted.ok()) return sorted.error();
     return table;
 }
 

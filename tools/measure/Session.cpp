@@ -13,6 +13,7 @@ Result<Session> Session::open(const std::string& scenePath, const std::vector<st
     auto scene = loadScene(scenePath, overrides);
     if (!scene.ok()) return scene.error();
     session.scene = std::make_unique<Scene>(std::move(*scene));
+    if (const std::string unlit = unlitSceneReason(*session.scene); !unlit.empty()) log::warn(scenePath + ": " + unlit);
     auto context = gl::createHeadlessContext({backend, glDebug});
     if (!context.ok()) return context.error();
     session.context = std::move(*context);

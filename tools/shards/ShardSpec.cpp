@@ -36,6 +36,11 @@ ShardRange shardRange(const ShardSpec& shard, int items) {
     return {first, begin(shard.index) - first};
 }
 
+ShardStride shardStride(const ShardSpec& shard, int items) {
+    const int first = shard.index - 1;
+    return {first, shard.count, first < items ? (items - first + shard.count - 1) / shard.count : 0};
+}
+
 Status ShardSet::add(int index, const std::string& path) {
     if (auto [at, added] = mPaths.emplace(index, path); !added) {
         return makeError(path, "shard " + ShardSpec{index, mCount}.text() + " is also " + at->second);

@@ -32,6 +32,17 @@ struct ShardRange {
 };
 ShardRange shardRange(const ShardSpec& shard, int items);
 
+// The items K-1, K-1+N, K-1+2N, ... of `items`, which shard K of N takes where
+// the items differ in cost along their order (bench configurations: one
+// mode's after the other's), so that each shard gets a like mix.
+struct ShardStride {
+    int first = 0;
+    int step = 1;
+    int count = 0;
+    int item(int i) const { return first + i * step; }
+};
+ShardStride shardStride(const ShardSpec& shard, int items);
+
 // The shards a merge was given: each K of N once, all of them.
 class ShardSet {
 public:
