@@ -1,8 +1,33 @@
 #include "gl/FramebufferCache.h"
 
 #include <algorithm>
+#include <string>
 
 namespace dermis::gl {
+namespace {
+
+std::string textureLabel(GLuint texture) {
+    char label[256] = {};
+    GLsizei length = 0;
+    glGetObjectLabel(GL_TEXTURE, texture, sizeof label, &length, label);
+    return length > 0 ? std::string(label, size_t(length)) : "texture " + std::to_string(texture);
+}
+
+// What it draws to first ("framebuffer: gbuffer albedo + gbuffer normal + depth"): pooled
+// textures are named again for each pass that uses them, so later passes may draw other things.
+std::string framebufferLabel(const Attachments& attachments) {
+    std::string label = "framebuffer:";
+    const char* separator = " ";
+    for (GLuint texture : attachments.colour) {
+        if (texture == 0) break;
+        label += separator + textureLabel(texture);
+        separator = " + ";
+    }
+    if (attachments.depth != 0) label += separator + textureLabel(attachments.depth);
+    return label;
+}
+
+}  // namespace
 
 GLuint FramebufferCache::bind(const Attachments& attachments) {
     for (const Entry& entry : mEntries) {
@@ -11,7 +36,7 @@ GLuint FramebufferCache::bind(const Attachments& attachments) {
             return entry.framebuffer.get();
         }
     }
-    Entry entry{attachments, createFramebuffer()};
+    Entry entry{attachments, createFramebuffer(framebufferLabel(attachments))};
     const GLuint fbo = entry.framebuffer.get();
     GLenum drawBuffers[kMaxColourAttachments];
     GLsizei count = 0;

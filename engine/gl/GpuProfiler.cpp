@@ -16,8 +16,7 @@ GLuint GpuProfiler::newQuery(GLenum target) {
         free.pop_back();
         return query;
     }
-    GLuint query = 0;
-    glCreateQueries(target, 1, &query);
+    const GLuint query = createQuery(target, target == GL_TIMESTAMP ? "profiler: timestamp" : "profiler: elapsed time");
     mAllQueries.push_back(query);
     return query;
 }
@@ -33,9 +32,9 @@ void GpuProfiler::beginFrame(uint64_t frame) {
         // 1x1 clear so no pass inherits it.
         GLint previousFramebuffer = 0;
         glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
-        Texture texture = createTexture(GL_TEXTURE_2D);
+        Texture texture = createTexture(GL_TEXTURE_2D, "profiler: first-query clear target");
         glTextureStorage2D(texture.get(), 1, GL_RGBA8, 1, 1);
-        Framebuffer framebuffer = createFramebuffer();
+        Framebuffer framebuffer = createFramebuffer("profiler: first-query clear target");
         glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, texture.get(), 0);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
         const GLuint warmUp = newQuery(GL_TIME_ELAPSED);

@@ -13,7 +13,7 @@ static_assert(sizeof(SanitiseBlock) == 8 * 4, "SanitiseBlock must match std430")
 
 void SanitiseCounters::bind() {
     if (mBuffer.get() == 0) {
-        mBuffer = createBuffer();
+        mBuffer = createBuffer("sanitise counters");
         const SanitiseBlock zero{};
         glNamedBufferStorage(mBuffer.get(), sizeof(SanitiseBlock), &zero, GL_DYNAMIC_STORAGE_BIT);
     }

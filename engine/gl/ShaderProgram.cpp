@@ -61,6 +61,7 @@ Status expandIncludes(const std::string& file, const Result<std::string>& text, 
 
 Result<GLuint> compileStage(GLenum stage, const std::string& file, const std::string& source) {
     const GLuint shader = glCreateShader(stage);
+    labelObject(GL_SHADER, shader, file);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
@@ -121,6 +122,11 @@ Result<Program> buildProgram(const ProgramSource& source) {
         stages.push_back(*shader);
     }
     Program program(glCreateProgram());
+    std::string label;
+    for (const std::string* file : {&source.vertexFile, &source.fragmentFile, &source.computeFile})
+        if (!file->empty()) label += (label.empty() ? "" : " + ") + *file;
+    for (const ShaderDefine& define : source.defines) label += " " + define.name + "=" + define.value;
+    labelObject(GL_PROGRAM, program.get(), label);
     for (GLuint s : stages) glAttachShader(program.get(), s);
     glLinkProgram(program.get());
     cleanup();

@@ -43,8 +43,8 @@ uint64_t textureBytes(const graph::TextureDesc& desc) {
     return uint64_t(desc.width) * desc.height * texelBytes;
 }
 
-Texture createTexture2D(const graph::TextureDesc& desc, int levels) {
-    Texture texture = createTexture(GL_TEXTURE_2D);
+Texture createTexture2D(const graph::TextureDesc& desc, std::string_view label, int levels) {
+    Texture texture = createTexture(GL_TEXTURE_2D, label);
     glTextureStorage2D(texture.get(), levels, internalFormat(desc.format), static_cast<GLsizei>(desc.width),
                        static_cast<GLsizei>(desc.height));
     // Integer textures are incomplete with linear filtering.
@@ -65,7 +65,7 @@ GLuint TexturePool::acquire(const graph::TextureDesc& desc) {
         }
     }
     Entry entry;
-    entry.texture = createTexture2D(desc);
+    entry.texture = createTexture2D(desc, "texture pool (unused)");  // the graph names it for each pass that uses it
     entry.desc = desc;
     entry.inUse = true;
     entry.lastUsedFrame = mFrame;

@@ -16,7 +16,7 @@ uint64_t textureBytes(const graph::TextureDesc& desc);
 
 // Immutable single-level 2-D storage, clamp-to-edge, linear filtering for
 // colour and nearest for depth and integer formats.
-Texture createTexture2D(const graph::TextureDesc& desc, int levels = 1);
+Texture createTexture2D(const graph::TextureDesc& desc, std::string_view label, int levels = 1);
 
 class TexturePool {
 public:

@@ -10,22 +10,22 @@
 namespace dermis {
 namespace {
 
-gl::Texture makeTableTexture(const std::vector<float>& table, int size) {
+gl::Texture makeTableTexture(const std::vector<float>& table, int size, std::string_view label) {
     const auto side = static_cast<uint32_t>(size);
-    gl::Texture texture = gl::createTexture2D({side, side, graph::TextureFormat::R32F});
+    gl::Texture texture = gl::createTexture2D({side, side, graph::TextureFormat::R32F}, label);
     glTextureSubImage2D(texture.get(), 0, 0, 0, size, size, GL_RED, GL_FLOAT, table.data());
     return texture;
 }
 
-gl::Texture makeSolidTexture(float value) {
-    gl::Texture texture = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8});
+gl::Texture makeSolidTexture(float value, std::string_view label) {
+    gl::Texture texture = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8}, label);
     const float texel[4] = {value, value, value, value};
     glTextureSubImage2D(texture.get(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel);
     return texture;
 }
 
-gl::Buffer makeUniformBuffer(size_t bytes) {
-    gl::Buffer buffer = gl::createBuffer();
+gl::Buffer makeUniformBuffer(size_t bytes, std::string_view label) {
+    gl::Buffer buffer = gl::createBuffer(label);
     glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
     return buffer;
 }
@@ -34,18 +34,18 @@ gl::Buffer makeUniformBuffer(size_t bytes) {
 
 FrameResources::FrameResources(const GpuScene& gpuScene, const Programs& programs, gl::FramebufferCache& framebuffers)
     : mGpuScene(gpuScene) {
-    mFrameUniforms = makeUniformBuffer(sizeof(gpu::FrameBlock));
-    mLightUniforms = makeUniformBuffer(sizeof(gpu::LightsBlock));
-    mObjectUniforms = makeUniformBuffer(sizeof(gpu::ObjectBlock));
-    mCharacterUniforms = makeUniformBuffer(sizeof(gpu::CharactersBlock));
-    mProfileUniforms = makeUniformBuffer(sizeof(gpu::ProfilesBlock));
-    mPassUniforms = makeUniformBuffer(kMaxPassBlockBytes);
-    mRegionUniforms = makeUniformBuffer(sizeof(gpu::ScreenRegionsBlock));
-    mEmptyVertexArray = gl::createVertexArray();
-    mBeckmann = makeTableTexture(makeBeckmannTable(kBeckmannTableSize), kBeckmannTableSize);
-    mEnergy = makeTableTexture(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
-    mWhite = makeSolidTexture(1.0f);
-    mBlack = makeSolidTexture(0.0f);
+    mFrameUniforms = makeUniformBuffer(sizeof(gpu::FrameBlock), "frame: FrameBlock");
+    mLightUniforms = makeUniformBuffer(sizeof(gpu::LightsBlock), "frame: LightsBlock");
+    mObjectUniforms = makeUniformBuffer(sizeof(gpu::ObjectBlock), "frame: ObjectBlock");
+    mCharacterUniforms = makeUniformBuffer(sizeof(gpu::CharactersBlock), "frame: CharactersBlock");
+    mProfileUniforms = makeUniformBuffer(sizeof(gpu::ProfilesBlock), "frame: ProfilesBlock");
+    mPassUniforms = makeUniformBuffer(kMaxPassBlockBytes, "frame: pass blocks");
+    mRegionUniforms = makeUniformBuffer(sizeof(gpu::ScreenRegionsBlock), "frame: ScreenRegionsBlock");
+    mEmptyVertexArray = gl::createVertexArray("frame: empty vertex array (full-screen passes)");
+    mBeckmann = makeTableTexture(makeBeckmannTable(kBeckmannTableSize), kBeckmannTableSize, "frame: Beckmann table");
+    mEnergy = makeTableTexture(makeEnergyTable(kEnergyTableSize), kEnergyTableSize, "frame: energy table");
+    mWhite = makeSolidTexture(1.0f, "frame: white");
+    mBlack = makeSolidTexture(0.0f, "frame: black");
 
     mServices.gpuScene = &mGpuScene;
     mServices.programs = &programs;
@@ -168,7 +168,7 @@ void FrameResources::prepareOutput(const FramePlan& plan) {
     const graph::TextureDesc desc = frameOutputDesc(plan);
     if (mOutput.isValid() && desc == mOutputDesc) return;
     if (mOutput.isValid()) mServices.framebuffers->forget(mOutput.get());
-    mOutput = gl::createTexture2D(desc);
+    mOutput = gl::createTexture2D(desc, "frame: output");
     mOutputDesc = desc;
 }
 
@@ -178,7 +178,7 @@ void FrameResources::prepareShadowMaps(const FramePlan& plan) {
         ShadowMap& map = mShadowMaps[slot];
         const graph::TextureDesc& desc = plan.shadows[slot].desc;
         if (map.texture.isValid() && map.desc == desc) continue;
-        map.texture = gl::createTexture2D(desc);
+        map.texture = gl::createTexture2D(desc, "shadow map " + std::to_string(slot));
         // Outside the map means "unoccluded": clamp to a far border.
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -12,10 +12,10 @@ namespace dermis {
 namespace {
 
 // An RGBA16F lat-long texture of `levels` (level 0 first), u repeating, v clamped, trilinear.
-gl::Texture uploadLatLong(const std::vector<Image>& levels) {
+gl::Texture uploadLatLong(const std::vector<Image>& levels, std::string_view label) {
     gl::Texture texture = gl::createTexture2D({static_cast<uint32_t>(levels.front().width),
                                                static_cast<uint32_t>(levels.front().height), graph::TextureFormat::Rgba16F},
-                                              static_cast<int>(levels.size()));
+                                              label, static_cast<int>(levels.size()));
     for (size_t level = 0; level < levels.size(); ++level) {
         glTextureSubImage2D(texture.get(), static_cast<GLint>(level), 0, 0, levels[level].width, levels[level].height,
                             GL_RGBA, GL_FLOAT, levels[level].texels.data());
@@ -48,7 +48,7 @@ std::vector<float> hemisphericalAverageAlbedo(const std::vector<float>& energyTa
 }
 
 GpuEnvironment::GpuEnvironment() {
-    mUniforms = gl::createBuffer();
+    mUniforms = gl::createBuffer("environment: EnvironmentBlock");
     glNamedBufferStorage(mUniforms.get(), sizeof(gpu::EnvironmentBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     mAverageAlbedo = hemisphericalAverageAlbedo(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
 }
@@ -58,12 +58,13 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
     if (plan.enabled()) {
         if (mMapLight != plan.light) {
             const PrefilteredEnvironment prefiltered = PrefilteredEnvironment::build(plan.light->lit());
-            mMap = uploadLatLong(prefiltered.levels());
+            mMap = uploadLatLong(prefiltered.levels(), "environment: prefiltered map");
             mMapLevels = static_cast<int>(prefiltered.levels().size());
             const Image& base = prefiltered.levels().front();
             mBackground = plan.light->extracted.empty()
                               ? gl::Texture()
-                              : uploadLatLong({resampleLatLongByArea(plan.light->map, base.width, base.height)});
+                              : uploadLatLong({resampleLatLongByArea(plan.light->map, base.width, base.height)},
+                                              "environment: background (with its extracted light)");
             mMapLight = plan.light;
         }
         const Environment& environment = scene.environment;
@@ -93,11 +94,11 @@ Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, b
     const std::vector<ShScalar9>& perVertex = loaded->transfer.perVertex;
     const auto bytes = static_cast<GLsizeiptr>(perVertex.size() * sizeof(ShScalar9));
     Transfer& transfer = mTransfers[character];
-    transfer.rest = gl::createBuffer();
+    transfer.rest = gl::createBuffer("environment: SH transfer of character " + std::to_string(character));
     glNamedBufferStorage(transfer.rest.get(), bytes, perVertex.data(), 0);
     if (animated) {
         // The rest pose's until the skinning pass turns it (PoseCache re-skins once the transfer exists).
-        transfer.posed = gl::createBuffer();
+        transfer.posed = gl::createBuffer("environment: posed SH transfer of character " + std::to_string(character));
         glNamedBufferStorage(transfer.posed.get(), bytes, perVertex.data(), 0);
     }
     return success();

@@ -15,20 +15,21 @@
 namespace dermis {
 namespace {
 
-GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, const std::vector<glm::vec4>& colours) {
+GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, const std::vector<glm::vec4>& colours,
+                   const std::string& owner) {
     GpuMesh gpu;
     const std::vector<glm::vec4> white(mesh.vertices.size(), glm::vec4(1.0f));
     const std::vector<glm::vec4>& perVertex = colours.size() == mesh.vertices.size() ? colours : white;
-    gpu.colourBuffer = gl::createBuffer();
+    gpu.colourBuffer = gl::createBuffer(owner + ": vertex colours");
     glNamedBufferStorage(gpu.colourBuffer.get(), static_cast<GLsizeiptr>(perVertex.size() * sizeof(glm::vec4)),
                          perVertex.data(), 0);
-    gpu.vertexBuffer = gl::createBuffer();
+    gpu.vertexBuffer = gl::createBuffer(owner + ": vertices");
     glNamedBufferStorage(gpu.vertexBuffer.get(), static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
                          mesh.vertices.data(), 0);
-    gpu.indexBuffer = gl::createBuffer();
+    gpu.indexBuffer = gl::createBuffer(owner + ": indices (every level of detail)");
     glNamedBufferStorage(gpu.indexBuffer.get(), static_cast<GLsizeiptr>(indices.size() * sizeof(uint32_t)), indices.data(),
                          0);
-    gpu.vertexArray = gl::createVertexArray();
+    gpu.vertexArray = gl::createVertexArray(owner);
     const GLuint vao = gpu.vertexArray.get();
     glVertexArrayVertexBuffer(vao, 0, gpu.vertexBuffer.get(), 0, sizeof(Vertex));
     glVertexArrayVertexBuffer(vao, 1, gpu.colourBuffer.get(), 0, sizeof(glm::vec4));
@@ -58,8 +59,8 @@ GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, c
 static_assert(sizeof(Vertex) == DERMIS_VERTEX_FLOATS * sizeof(float), "shaders/skinning.comp writes Vertex as floats");
 
 template <typename T>
-gl::Buffer uploadBuffer(const std::vector<T>& data, GLbitfield flags = 0) {
-    gl::Buffer buffer = gl::createBuffer();
+gl::Buffer uploadBuffer(const std::vector<T>& data, const std::string& label, GLbitfield flags = 0) {
+    gl::Buffer buffer = gl::createBuffer(label);
     const std::vector<T> one(1);  // GL buffers cannot be empty
     const std::vector<T>& contents = data.empty() ? one : data;
     glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(contents.size() * sizeof(T)), contents.data(), flags);
@@ -78,7 +79,7 @@ struct SkinInfluenceGpu {
     glm::vec4 weights;
 };
 
-GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
+GpuRig uploadRig(const Rig& rig, const MeshData& mesh, const std::string& owner) {
     GpuRig gpu;
     if (rig.empty()) return gpu;
     const size_t count = mesh.vertices.size();
@@ -103,12 +104,14 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
                     deltas[(s * count + v) * DERMIS_MORPH_DELTA_FLOATS + a * 3 + static_cast<size_t>(c)] = (*attributes[a])[v][c];
         }
     }
-    gpu.source = uploadBuffer(source);
-    gpu.influences = uploadBuffer(influences);
-    gpu.morphDeltas = uploadBuffer(deltas);
-    gpu.palette = uploadBuffer(std::vector<glm::mat4>(rig.palette.size(), glm::mat4(1.0f)), GL_DYNAMIC_STORAGE_BIT);
-    gpu.morphWeights = uploadBuffer(std::vector<float>(rig.morphSlots.size(), 0.0f), GL_DYNAMIC_STORAGE_BIT);
-    gpu.derivatives = uploadBuffer(std::vector<float>(count * DERMIS_SKIN_DERIVATIVE_FLOATS, 0.0f));
+    gpu.source = uploadBuffer(source, owner + ": skinning bind pose");
+    gpu.influences = uploadBuffer(influences, owner + ": skinning influences");
+    gpu.morphDeltas = uploadBuffer(deltas, owner + ": morph deltas");
+    gpu.palette = uploadBuffer(std::vector<glm::mat4>(rig.palette.size(), glm::mat4(1.0f)), owner + ": joint palette",
+                               GL_DYNAMIC_STORAGE_BIT);
+    gpu.morphWeights = uploadBuffer(std::vector<float>(rig.morphSlots.size(), 0.0f), owner + ": morph weights",
+                                    GL_DYNAMIC_STORAGE_BIT);
+    gpu.derivatives = uploadBuffer(std::vector<float>(count * DERMIS_SKIN_DERIVATIVE_FLOATS, 0.0f), owner + ": skinned dP/du, dP/dv");
     gpu.vertexCount = static_cast<GLsizei>(count);
     gpu.paletteEntries = static_cast<GLsizei>(rig.palette.size());
     gpu.morphSlots = static_cast<GLsizei>(rig.morphSlots.size());
@@ -116,8 +119,8 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh) {
 }
 
 // Trilinear filtering and wrapping, as glTF samplers default to.
-gl::Texture createMipmappedTexture(GLsizei levels, GLenum internalFormat, int width, int height) {
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+gl::Texture createMipmappedTexture(GLsizei levels, GLenum internalFormat, int width, int height, const std::string& label) {
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D, label);
     glTextureStorage2D(texture.get(), levels, internalFormat, width, height);
     glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -156,13 +159,17 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
                                                           {&material.specularMap, &gpu.specularMap},
                                                           {&material.scatterMap, &gpu.scatterMap},
                                                           {&material.thicknessMap, &gpu.thicknessMap}};
-    for (const auto& [image, texture] : maps)
-        if (!image->empty()) *texture = uploadImage(*image);
+    const std::string owner = material.name.empty() ? "material (unnamed)" : "material '" + material.name + "'";
+    const char* const mapNames[] = {"albedo", "normal", "metallic-roughness", "roughness", "specular", "scatter", "thickness"};
+    for (size_t i = 0; i < std::size(maps); ++i)
+        if (!maps[i].first->empty()) *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
     if (!material.normalMap.empty()) {
         const Image& normals = material.normalMap;
         const GLsizei levels = static_cast<GLsizei>(leanMipLevelCount(normals.width, normals.height));
-        gpu.leanMap1 = createMipmappedTexture(levels, GL_RGBA16F, normals.width, normals.height);
-        gpu.leanMap2 = createMipmappedTexture(levels, GL_RG16F, normals.width, normals.height);
+        gpu.leanMap1 = createMipmappedTexture(levels, GL_RGBA16F, normals.width, normals.height,
+                                              owner + ": LEAN map 1 (B, M.xx, M.yy)");
+        gpu.leanMap2 = createMipmappedTexture(levels, GL_RG16F, normals.width, normals.height,
+                                              owner + ": LEAN map 2 (M.xy)");
         // Each band and level goes to the GPU as it is made (lean/LeanBake.h).
         const Status baked =
             bakeLeanLevels(normals, 0.0f, [&](int level, int firstRow, const Image& lean1, const Image& lean2) {
@@ -193,14 +200,14 @@ bool GpuCharacter::hasLeanMaps() const {
     return std::any_of(materials->begin(), materials->end(), [](const GpuMaterial& m) { return m.leanMap1.isValid(); });
 }
 
-gl::Texture uploadImage(const Image& image) {
+gl::Texture uploadImage(const Image& image, const std::string& label) {
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
     // Colour as sRGB 8-bit. Data maps stay half floats even from an 8-bit
     // file: filtered as RGBA8, llvmpipe interpolates in 8-bit steps, and the
     // scan's texture-space irradiance error (SSS off on both sides, 320x180)
     // rose from 2.21% to 4.31% against the reference (docs/testing.md "Memory").
     const GLenum format = image.colourSpace == ColourSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
-    gl::Texture texture = createMipmappedTexture(levels, format, image.width, image.height);
+    gl::Texture texture = createMipmappedTexture(levels, format, image.width, image.height, label);
     uploadLevel(texture, 0, image);
     glGenerateTextureMipmap(texture.get());
     return texture;
@@ -273,9 +280,9 @@ Result<GpuScene> GpuScene::create(const Scene& scene, const SceneModels& models)
         GpuCharacter gpu;
         gpu.name = character.name;
         // Its own buffers: the skinning pass writes an animated character's vertices.
-        gpu.mesh = uploadMesh(model.mesh, shared.indices, model.colours);
+        gpu.mesh = uploadMesh(model.mesh, shared.indices, model.colours, "character '" + character.name + "'");
         gpu.closedOutward = shared.closedOutward;
-        gpu.rig = uploadRig(model.rig, model.mesh);
+        gpu.rig = uploadRig(model.rig, model.mesh, "character '" + character.name + "'");
         gpu.materials = shared.materials;
         gpu.submeshes = shared.submeshes;
         gpu.lods = shared.lods;

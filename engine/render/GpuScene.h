@@ -125,6 +125,6 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material);
 
 // Uploads with a full mip chain; sRGB images get an sRGB 8-bit format, data
 // maps RGBA16F.
-gl::Texture uploadImage(const Image& image);
+gl::Texture uploadImage(const Image& image, const std::string& label);
 
 }  // namespace dermis

@@ -56,7 +56,7 @@ bool LightingTables::prepare(const SssPlan& plan) {
         if (lighting.glslFile == nullptr) continue;
         any = true;
         if (!mTexture.isValid()) {
-            mTexture = gl::createTexture(GL_TEXTURE_2D);
+            mTexture = gl::createTexture(GL_TEXTURE_2D, "lighting scatter tables");
             glTextureStorage2D(mTexture.get(), 1, GL_RGBA16F, layout.columns, layout.slotRows * (DERMIS_MAX_PROFILES + 1));
             glTextureParameteri(mTexture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTextureParameteri(mTexture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);

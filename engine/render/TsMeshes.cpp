@@ -23,11 +23,11 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
     TsMesh out;
     out.sourceVertexBuffer = character.mesh.vertexBuffer.get();
     out.indexCount = character.mesh.indexCount;
-    out.layoutBuffer = gl::createBuffer();
+    out.layoutBuffer = gl::createBuffer("texture space: " + character.name + " UV layout");
     glNamedBufferStorage(out.layoutBuffer.get(), static_cast<GLsizeiptr>(std::max<size_t>(vertices.size(), 1) * sizeof(LayoutVertex)),
                          vertices.empty() ? nullptr : vertices.data(), 0);
 
-    out.vertexArray = gl::createVertexArray();
+    out.vertexArray = gl::createVertexArray("texture space: " + character.name);
     const GLuint vao = out.vertexArray.get();
     glVertexArrayVertexBuffer(vao, 0, character.mesh.vertexBuffer.get(), 0, sizeof(Vertex));
     glVertexArrayVertexBuffer(vao, 1, out.layoutBuffer.get(), 0, sizeof(LayoutVertex));

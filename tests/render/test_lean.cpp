@@ -225,7 +225,7 @@ gl::Texture hostileLeanTexture(bool first) {
             texels[static_cast<size_t>(y * kSize + x)] = first ? cells1[cell] : cells2[cell];
         }
     }
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D, "test: LEAN input");
     glTextureStorage2D(texture.get(), 1, GL_RGBA32F, kSize, kSize);
     glTextureSubImage2D(texture.get(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, texels.data());
     glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -77,8 +77,8 @@ protected:
         mObjectUniforms = makeBuffer(sizeof(gpu::ObjectBlock));
         mCharacterUniforms = makeBuffer(sizeof(gpu::CharactersBlock));
         mPassUniforms = makeBuffer(kMaxPassBlockBytes);
-        mEmptyVertexArray = gl::createVertexArray();
-        mWhite = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8});
+        mEmptyVertexArray = gl::createVertexArray("test: empty vertex array");
+        mWhite = gl::createTexture2D({1, 1, graph::TextureFormat::Rgba8}, "test: white");
         const unsigned char white[4] = {255, 255, 255, 255};
         glTextureSubImage2D(mWhite.get(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
         mBackend = std::make_unique<gl::GlGraphBackend>(mProfiler);
@@ -102,7 +102,7 @@ protected:
     }
 
     static gl::Buffer makeBuffer(size_t bytes) {
-        gl::Buffer buffer = gl::createBuffer();
+        gl::Buffer buffer = gl::createBuffer("test: uniforms");
         glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
         return buffer;
     }

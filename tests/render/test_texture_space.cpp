@@ -36,7 +36,7 @@ namespace {
 class TextureSpace : public test::RenderFixture {};
 
 gl::Buffer uniformBuffer(size_t bytes) {
-    gl::Buffer buffer = gl::createBuffer();
+    gl::Buffer buffer = gl::createBuffer("test: buffer");
     glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
     return buffer;
 }

@@ -42,9 +42,9 @@ GLint internalFormat(const gl::Texture& texture) {
 // 300 rows span five upload bands: a band written to the wrong rows would
 // put a ramp value where another belongs.
 TEST_F(TextureUpload, ColourIsSrgb8AndDataHalfFloatEveryBandInItsRows) {
-    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Srgb))), GL_SRGB8_ALPHA8);
+    EXPECT_EQ(internalFormat(uploadImage(greyRamp(16, 16, ColourSpace::Srgb), "test: ramp")), GL_SRGB8_ALPHA8);
     const Image ramp = greyRamp(3, 300, ColourSpace::Linear);
-    const gl::Texture texture = uploadImage(ramp);
+    const gl::Texture texture = uploadImage(ramp, "test: ramp");
     EXPECT_EQ(internalFormat(texture), GL_RGBA16F);
     std::vector<glm::vec4> back(ramp.texels.size());
     glGetTextureImage(texture.get(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(back.size() * sizeof(glm::vec4)),

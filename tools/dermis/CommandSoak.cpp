@@ -101,7 +101,7 @@ struct SoakOptions {
 // A GL texture created, cleared (so that its pages are resident) and kept.
 void plantLeak(int kib, std::vector<gl::Texture>& kept) {
     const graph::TextureDesc desc{64, static_cast<uint32_t>(kib), graph::TextureFormat::Rgba32F};
-    kept.push_back(gl::createTexture2D(desc));
+    kept.push_back(gl::createTexture2D(desc, "soak: planted leak"));
     const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearTexImage(kept.back().get(), 0, GL_RGBA, GL_FLOAT, one);
 }

@@ -96,7 +96,7 @@ Result<SplitView> SplitView::create() {
     GLint linked = GL_FALSE;
     glGetProgramiv(view.mProgram.get(), GL_LINK_STATUS, &linked);
     if (linked != GL_TRUE) return makeError("viewer shader", "the display program did not link");
-    view.mVertexArray = gl::createVertexArray();
+    view.mVertexArray = gl::createVertexArray("viewer: split view");
     return view;
 }
 
