@@ -106,6 +106,7 @@ void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
     frame.ambient = glm::vec4(settings.ambient, 0.0f);
     frame.background = glm::vec4(scene.background.colour, 1.0f);
     frame.exposure = settings.exposure;
+    frame.toneMap = static_cast<int>(settings.toneMap);
     frame.mixRatio = settings.sss.mix;
     frame.lightCount = int(plan.lights.lightCount);
     frame.aov = int(plan.aov);

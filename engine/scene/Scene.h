@@ -234,6 +234,7 @@ struct LodSettings {
 struct RenderSettings {
     SssMode mode = SssMode::ScreenSpace;  // kSssModes
     float exposure = 1.0f;
+    ToneMap toneMap = ToneMap::Aces;  // of the final image (shaders/tonemap.frag)
     glm::vec3 ambient{0.03f};  // uniform ambient irradiance (linear RGB); SSAO darkens it
     bool energyConservation = true;  // Chappuis 2011 §2.6: diffuse x (1 - rho_s rho_dt) in and out
     // The G-buffer culls the back faces of closed meshes seen from outside

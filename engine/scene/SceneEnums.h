@@ -119,6 +119,16 @@ inline constexpr EnumTable<EnvironmentLightExtraction, 2> kEnvironmentLightExtra
       {EnvironmentLightExtraction::Auto, "auto",
        "the brightest compact region becomes a sized directional light with a shadow, when the map has one"}}}};
 
+// How the final image maps radiance to display values (shaders/tonemap.frag).
+enum class ToneMap { Aces = DERMIS_TONE_MAP_ACES, PbrNeutral = DERMIS_TONE_MAP_PBR_NEUTRAL, Agx = DERMIS_TONE_MAP_AGX, None = DERMIS_TONE_MAP_NONE };
+
+inline constexpr EnumTable<ToneMap, 4> kToneMaps{
+    "tone map",
+    {{{ToneMap::Aces, "aces", "Narkowicz's fit of the ACES filmic curve: contrasty, hues shift toward white"},
+      {ToneMap::PbrNeutral, "pbr-neutral", "Khronos PBR Neutral: base colours kept up to 0.8, only highlights compressed"},
+      {ToneMap::Agx, "agx", "AgX: a gentle log curve that desaturates highlights evenly"},
+      {ToneMap::None, "none", "linear, clamped to [0, 1]: what a display shows of the radiance as it is"}}}};
+
 static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne() &&
                   kEnvironmentLightExtractions.isOneToOne(),
               "every value and every name appears once");

@@ -90,6 +90,7 @@ void visitLodFields(S& s, V& v) {
 template <typename S, typename V>
 void visitSettingsFields(S& s, V& v) {
     v.number("exposure", s.exposure, Range::leftOpen(0.0, kMaxExposure));
+    v.choice("tone_map", kToneMaps, s.toneMap);
     v.vec3("ambient", s.ambient, Range::closed(0.0, kMaxLightRadiance));
     v.boolean("energy_conservation", s.energyConservation);
     v.boolean("cull_back_faces", s.cullBackFaces);

@@ -80,6 +80,12 @@
 #define DERMIS_AOV_RADIANCE 13             // the composited frame before exposure and tone mapping
 #define DERMIS_AOV_SCATTER 14              // the G-buffer's scattering share s and volume thickness (docs/materials.md)
 
+// The tone map of the final image (shaders/tonemap.frag, settings.tone_map).
+#define DERMIS_TONE_MAP_ACES 0          // Narkowicz 2016's fit of the ACES reference rendering transform
+#define DERMIS_TONE_MAP_PBR_NEUTRAL 1   // Khronos PBR Neutral (Khronos 2024)
+#define DERMIS_TONE_MAP_AGX 2           // AgX (Sobotka 2022), Wrensch 2023's polynomial fit
+#define DERMIS_TONE_MAP_NONE 3          // clamped to [0, 1]
+
 // The shader storage binding of the sanitise counters (include/Sanitise.glsl).
 #define DERMIS_BINDING_SANITISE_COUNTERS 0
 

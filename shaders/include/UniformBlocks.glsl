@@ -57,7 +57,7 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     vec2 pixelSizeUv;       // 1/width, 1/height
     float nearM;
     float farM;
-    float unused0;
+    int toneMap;            // DERMIS_TONE_MAP_*
     float unused1;
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance

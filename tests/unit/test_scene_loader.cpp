@@ -817,7 +817,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
               "/characters/0/ssao/radius: unknown key \"radius\": did you mean \"radius_m\"? (known: radius_m and samples)");
     // The flat shadow keys of the first format are gone.
     EXPECT_EQ(errorOf(R"({"settings": {"shadow_map_size": 2048}})"),
-              "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, ambient, "
+              "/settings/shadow_map_size: unknown key \"shadow_map_size\" (known: exposure, tone_map, ambient, "
               "energy_conservation, cull_back_faces, mode, shadow, sss, transmittance, ssao, ts, quality and lod)");
 }
 

@@ -26,8 +26,8 @@ void sectionLabel(const char* text) {
 }
 
 // The keys of "settings" that have a typed panel of their own.
-const std::vector<std::string> kTypedSettingsKeys = {"exposure", "ambient", "energy_conservation", "cull_back_faces",
-                                                     "shadow", "sss", "transmittance", "ssao"};
+const std::vector<std::string> kTypedSettingsKeys = {"exposure", "tone_map", "mode", "ambient", "energy_conservation",
+                                                     "cull_back_faces", "shadow", "sss", "transmittance", "ssao"};
 
 std::vector<std::string> profileChoices() {
     std::vector<std::string> names = profileNames();
@@ -52,6 +52,9 @@ bool shadowPanel(Scene& scene, std::string& error) {
 bool sssPanel(Scene& scene, const std::vector<CharacterReport>& reports, std::string& error) {
     bool changed = false;
     changed |= ImGui::Checkbox("enabled", &scene.settings.sss.enabled);
+    changed |= widgets::comboEnum("technique", kSssTechniques, scene.settings.sss.technique);
+    widgets::help("The screen-space scattering technique (docs/screen-space.md); each has its own sample count below.");
+    changed |= widgets::comboEnum("variant", kSssVariants, scene.settings.sss.variant);
     changed |= jsonChoice(scene, "/settings/sss/blur", "blur", error);
     widgets::help("bilateral: taps weighted by their depth difference to the centre (Vila Verde 2015 4.3.2); control: "
                   "Jimenez's lerp towards the centre (Vila Verde 2015 3.2.2); fetch-only: the same fetches, unweighted "
@@ -72,7 +75,7 @@ bool sssPanel(Scene& scene, const std::vector<CharacterReport>& reports, std::st
     widgets::help("A Gaussian narrower than this (std dev, pixels) at the nearest SSS pixel is skipped.");
     changed |= ImGui::SliderFloat("mix", &sss.mix, 0.0f, 1.0f, "%.2f", kClamp);
     widgets::help("Pre-/post-scatter albedo: albedo^mix before the blur, albedo^(1 - mix) after (Chappuis 2011 2.2.4).");
-    static const std::vector<std::string> kTyped = {"enabled", "blur", "taps", "bilateral_depth_mm",
+    static const std::vector<std::string> kTyped = {"enabled", "technique", "variant", "blur", "taps", "bilateral_depth_mm",
                                                     "control_depth_scale_per_mm", "gaussians", "width_scale",
                                                     "min_width_px", "mix"};
     changed |= jsonFields(scene, "/settings/sss", kTyped, error);  // e.g. the LEAN variant, when the format has it
@@ -139,7 +142,9 @@ bool hasOtherSettings(const Scene& scene) { return !jsonFieldKeys(scene, "/setti
 bool framePanel(Scene& scene) {
     RenderSettings& settings = scene.settings;
     bool changed = false;
+    changed |= widgets::comboEnum("mode", kSssModes, settings.mode);
     changed |= ImGui::SliderFloat("exposure", &settings.exposure, 0.01f, 16.0f, "%.3f", kLogClamp);
+    changed |= widgets::comboEnum("tone map", kToneMaps, settings.toneMap);
     changed |= widgets::colourLinear("ambient", settings.ambient, true);
     widgets::help("Uniform ambient irradiance (linear RGB); SSAO darkens it.");
     changed |= widgets::colourLinear("background", scene.background.colour, true);
