@@ -177,6 +177,38 @@ Status writeImageFile(const std::string& path, const std::string& extension, con
     return success();
 }
 
+Status writeLayeredExr(const std::string& path, const std::vector<ImageLayer>& layers) {
+    if (layers.empty()) return makeError(path, "no layers to write");
+    const int width = layers.front().image.width;
+    const int height = layers.front().image.height;
+    for (const ImageLayer& layer : layers) {
+        if (layer.image.width != width || layer.image.height != height ||
+            layer.image.texels.size() != size_t(width) * size_t(height)) {
+            return makeError(path, "layer '" + layer.name + "' is not " + std::to_string(width) + "x" + std::to_string(height));
+        }
+    }
+    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+    if (!output) return makeError(path, condense(OIIO::geterror(), "no image writer for this format"));
+    const int channels = 4 * static_cast<int>(layers.size());
+    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    for (const ImageLayer& layer : layers)
+        for (const char* channel : {"R", "G", "B", "A"})
+            spec.channelnames.push_back(layer.name.empty() ? channel : layer.name + "." + channel);
+    spec.alpha_channel = layers.front().name.empty() ? 3 : -1;
+    spec.attribute("compression", "zip");
+    std::vector<float> interleaved(size_t(width) * size_t(height) * size_t(channels));
+    for (size_t texel = 0; texel < size_t(width) * size_t(height); ++texel)
+        for (size_t layer = 0; layer < layers.size(); ++layer)
+            for (int c = 0; c < 4; ++c) interleaved[texel * size_t(channels) + layer * 4 + size_t(c)] = layers[layer].image.texels[texel][c];
+    if (!output->open(path, spec)) return makeError(path, condense(output->geterror(), "could not open for writing"));
+    const bool written = output->write_image(OIIO::TypeDesc::FLOAT, interleaved.data());
+    const bool closed = output->close();
+    if (!written || !closed || output->has_error())
+        return makeError(path, condense(output->geterror(), "could not write the image"));
+    return success();
+}
+
 Result<Image> loadImage(const std::string& path, ColourSpace colourSpace, int* sanitisedTexels) {
     std::error_code error;
     if (!fs::exists(path, error)) return makeError(path, "file not found");

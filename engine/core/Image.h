@@ -58,6 +58,16 @@ Status saveImage(const std::string& path, const Image& image);
 // Writes `path` itself, in the format of `extension` (".png" or ".exr"): for
 // OutputFiles, whose temporaries carry the destination's extension.
 Status writeImageFile(const std::string& path, const std::string& extension, const Image& image);
+
+// One layer of a multi-layer EXR: its name and its RGBA image (all of one size).
+struct ImageLayer {
+    std::string name;  // empty: the default layer (channels R, G, B, A), which viewers show first
+    Image image;
+};
+// Writes `path` itself as one OpenEXR part of 32-bit float channels named
+// "LAYER.R", "LAYER.G", "LAYER.B", "LAYER.A" per layer (the OpenEXR convention
+// for layers that EXR viewers and compositors list), zip-compressed.
+Status writeLayeredExr(const std::string& path, const std::vector<ImageLayer>& layers);
 // The path's extension, lower case, with its dot ("x.PNG" -> ".png").
 std::string lowerExtension(const std::string& path);
 

@@ -74,6 +74,15 @@ Status OutputFiles::stageImage(const std::string& path, const Image& image) {
     return success();
 }
 
+Status OutputFiles::stageLayeredExr(const std::string& path, const std::vector<ImageLayer>& layers) {
+    if (lowerExtension(path) != ".exr") return makeError(path, "layers are written to an .exr file only");
+    auto temporary = temporaryFor(path);
+    if (!temporary) return temporary.error();
+    mStaged.push_back({*temporary, fs::path(path)});
+    if (Status written = writeLayeredExr(temporary->string(), layers); !written) return makeError(path, written.error().what);
+    return success();
+}
+
 Status OutputFiles::stageText(const std::string& path, const std::string& text) {
     auto temporary = temporaryFor(path);
     if (!temporary) return temporary.error();

@@ -32,6 +32,8 @@ public:
     // `.png` (8-bit, values as given) or `.exr` (32-bit float), by the path's extension.
     Status stageImage(const std::string& path, const Image& image);
     Status stageText(const std::string& path, const std::string& text);
+    // An `.exr` of several named layers (core/Image.h, writeLayeredExr).
+    Status stageLayeredExr(const std::string& path, const std::vector<ImageLayer>& layers);
     // A file another program wrote (`written`, on the same file system): moved
     // to `path`'s temporary now, into place at the commit.
     Status stageFile(const std::string& path, const std::filesystem::path& written);

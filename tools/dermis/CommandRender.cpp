@@ -44,6 +44,10 @@ const char* const kHelp =
     "                      screen in its UV layout (the unit square, letterboxed, v up), in\n"
     "                      either mode: in ss mode only their own texture-space passes run;\n"
     "                      black when SSS is off or no SSS character is on screen\n"
+    "  --aov all           every AOV above but final as a layer of one .exr (--out FILE.exr):\n"
+    "                      the radiance as its default layer (R, G, B, A), the others as\n"
+    "                      NAME.R, NAME.G, NAME.B, NAME.A; each rendered once after the\n"
+    "                      timed frames\n"
     "  --timings FILE      also write the timings: FILE.json, the summary and every frame's\n"
     "                      passes (docs/profiling.md), or FILE.csv, one row per pass per frame\n"
     "  --trace FILE        also write a trace of every frame, FILE.json in the Trace Event\n"
@@ -91,6 +95,7 @@ struct RenderOptions {
     std::vector<float> sequence;    // --sequence: one frame per time, each written
     std::string outPath;
     int warmUpFrames = 0;           // --warm-up, rendered before `frames`
+    bool allAovs = false;           // --aov all: every AOV a layer of one EXR
     std::optional<std::string> timingsPath;  // --timings
     std::optional<std::string> tracePath;    // --trace
     std::vector<std::string> overrides;
@@ -123,12 +128,16 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
     if (!size.ok()) return size.error();
     auto frames = parsePositiveInt("--frames", args.get("frames", "10"));
     if (!frames.ok()) return frames.error();
-    auto aov = kAovs.parse(args.get("aov", "final"));
-    if (!aov) return makeError("--aov " + args.get("aov", ""), "expected one of " + kAovs.list());
+    options.allAovs = args.get("aov", "") == "all";
+    auto aov = options.allAovs ? std::optional<Aov>(Aov::Radiance) : kAovs.parse(args.get("aov", "final"));
+    if (!aov) return makeError("--aov " + args.get("aov", ""), "expected one of " + kAovs.list() + " or all");
     const std::string defaultOut = "out/" + std::filesystem::path(options.scenePath).stem().string() + ".png";
     options.outPath = args.get("out", defaultOut);
     const std::string extension = std::filesystem::path(options.outPath).extension().string();
     if (extension != ".png" && extension != ".exr") return makeError("--out " + options.outPath, "the file must end in .png or .exr");
+    if (options.allAovs && extension != ".exr")
+        return makeError("--aov all", "writes a multi-layer .exr: give --out FILE.exr, not " + options.outPath);
+    if (options.allAovs && args.has("sequence")) return makeError("--aov all", "not with --sequence");
     auto backend = parseBackend(args.get("backend", "auto"));
     if (!backend.ok()) return backend.error();
     auto time = parseFloatIn("--time", args.get("time", "0"), -kMaxAnimationTimeS, kMaxAnimationTimeS);
@@ -194,12 +203,30 @@ Result<double> renderFrames(const RenderOptions& options, Session& session, Outp
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     renderer.finishTimings();
     if (const Status gl = session.checkGlErrors(); !gl.ok()) return gl.error();
-    if (options.sequence.empty()) {
+    if (options.sequence.empty() && !options.allAovs) {
         auto image = renderer.readOutput();
         if (!image.ok()) return image.error();
         if (const Status saved = outputs.stageImage(options.outPath, *image); !saved.ok()) return saved.error();
     }
     return wallMs / options.frames;
+}
+
+// --aov all: one frame per AOV (but the final image), after the timed ones, as the layers of one EXR.
+Status stageAllAovs(const RenderOptions& options, Renderer& renderer, OutputFiles& outputs) {
+    std::vector<ImageLayer> layers;
+    FrameRequest request = options.request;
+    for (const EnumEntry<Aov>& aov : kAovs) {
+        if (aov.value == Aov::Final) continue;
+        request.aov = aov.value;
+        if (const Status status = renderer.renderFrame(request); !status.ok()) return status;
+        auto image = renderer.readOutput();
+        if (!image.ok()) return image.error();
+        ImageLayer layer{aov.value == Aov::Radiance ? "" : std::string(aov.name), std::move(*image)};
+        // The radiance first: viewers show the first, unnamed layer.
+        layers.insert(aov.value == Aov::Radiance ? layers.begin() : layers.end(), std::move(layer));
+    }
+    log::info("--aov all: " + std::to_string(layers.size()) + " layers in " + options.outPath);
+    return outputs.stageLayeredExr(options.outPath, layers);
 }
 
 }  // namespace
@@ -241,8 +268,12 @@ int runRender(const std::vector<std::string>& rawArgs) {
         if (const Status staged = outputs.stageText(*options->tracePath, traceEventsJson(timings, info)); !staged.ok())
             return failure(staged.error());
     }
+    const std::string table = timings.toTable(info);  // before --aov all's frames join the timings
+    if (options->allAovs) {
+        if (const Status staged = stageAllAovs(*options, renderer, outputs); !staged.ok()) return failure(staged.error());
+    }
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
-    if (!log::quiet()) std::printf("%s", timings.toTable(info).c_str());
+    if (!log::quiet()) std::printf("%s", table.c_str());
     if (options->sequence.empty()) log::info("wrote " + options->outPath);
     return 0;
 }
