@@ -56,16 +56,18 @@ FrameRecord* FrameTimings::record(uint64_t frame) {
     return found == mFrameIndex.end() ? nullptr : &mFrames[found->second];
 }
 
+FrameRecord& FrameTimings::recordFor(uint64_t frame) {
+    if (FrameRecord* existing = record(frame)) return *existing;
+    mFrameIndex[frame] = mFrames.size();
+    FrameRecord added;
+    added.frame = frame;
+    added.warmUp = mFrames.size() < mWarmUpFrames;
+    mFrames.push_back(std::move(added));
+    return mFrames.back();
+}
+
 void FrameTimings::addPassReports(uint64_t frame, const std::vector<graph::PassReport>& reports) {
-    FrameRecord* existing = record(frame);
-    if (!existing) {
-        mFrameIndex[frame] = mFrames.size();
-        FrameRecord added;
-        added.frame = frame;
-        added.warmUp = mFrames.size() < mWarmUpFrames;
-        mFrames.push_back(std::move(added));
-        existing = &mFrames.back();
-    }
+    FrameRecord* existing = &recordFor(frame);
     for (const graph::PassReport& report : reports) {
         if (!report.executed) existing->culled.emplace_back(report.name, describeCull(report));
         if (existing->warmUp) continue;
@@ -81,10 +83,9 @@ void FrameTimings::addPassReports(uint64_t frame, const std::vector<graph::PassR
 }
 
 void FrameTimings::addTimings(const std::vector<gl::PassTiming>& timings) {
-    for (const gl::PassTiming& t : timings) {
-        // A frame's timers without its report (a capture, not a frame) are not recorded.
-        if (FrameRecord* frame = record(t.frame)) frame->passes.push_back(t);
-    }
+    // A frame's timers arrive a few frames after it: after a reset (the viewer
+    // resets every frame) its report is gone, and its timers make a record of their own.
+    for (const gl::PassTiming& t : timings) recordFor(t.frame).passes.push_back(t);
 }
 
 std::vector<PassSummary> FrameTimings::summary() const {

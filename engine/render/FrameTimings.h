@@ -127,6 +127,7 @@ public:
 
 private:
     FrameRecord* record(uint64_t frame);
+    FrameRecord& recordFor(uint64_t frame);  // made when first seen
     std::vector<double> frameSums(double (FrameRecord::*sum)() const) const;
 
     size_t mWarmUpFrames = 0;

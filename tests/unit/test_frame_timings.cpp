@@ -82,6 +82,19 @@ TEST(FrameTimings, WarmUpFramesAreKeptButNotSummarised) {
     EXPECT_NE(csv.find("\n4,0,lighting,4,0.25,45,41\n"), std::string::npos) << csv;
 }
 
+// The viewer resets its timings after every frame, and a frame's timers
+// arrive frames later: they must still count, or its profiler shows zeros
+// (it did, for a while, when timers without their frame's report were dropped).
+TEST(FrameTimings, TimersThatArriveAfterAResetStillCount) {
+    FrameTimings timings;
+    timings.addPassReports(7, {{"lighting", true, graph::CullReason::None, ""}});
+    timings.addTimings({timing(5, "lighting", 2.5, 0.5, 50.0, 50.0)});  // frame 5's, reported before the reset
+    const std::vector<PassSummary> summary = timings.summary();
+    ASSERT_EQ(summary.size(), 1u);
+    EXPECT_EQ(summary[0].samples, 1u);
+    EXPECT_DOUBLE_EQ(summary[0].gpuMs, 2.5);
+}
+
 TEST(TraceEvents, SlicesAreTheSamplesAndNestOnTheirThread) {
     FrameTimings timings = fourFramesAfterAWarmUp();
     // A GPU stamp inside the previous pass (llvmpipe stamps when it bins): frame 5's
