@@ -52,7 +52,9 @@ def main(csv_path, png_path, top):
     labels = shown + ["other"]
 
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), dpi=100, gridspec_kw={"width_ratios": [3, 2]})
-    left.stackplot(xs, layers, labels=labels, alpha=0.85)
+    # tab20 for the passes (tab10 repeats its first colour at the 11th layer), grey for "other".
+    colours = [plt.get_cmap("tab20")(i % 20) for i in range(len(shown))] + ["0.6"]
+    left.stackplot(xs, layers, labels=labels, colors=colours, alpha=0.85)
     left.plot(xs, [sum(frames[f].values()) for f in xs], color="black", lw=1, label="frame (sum)")
     for f in warm_up:
         left.axvspan(f - 0.5, f + 0.5, color="grey", alpha=0.25, lw=0)

@@ -30,13 +30,31 @@ std::string describeCull(const graph::PassReport& report) {
     return "";
 }
 
-double percentile(std::vector<double> values, double p) {
+namespace {
+
+double percentileOfSorted(const std::vector<double>& values, double p) {
     if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
     const double position = std::clamp(p, 0.0, 100.0) / 100.0 * double(values.size() - 1);
     const size_t below = static_cast<size_t>(std::floor(position));
     const size_t above = std::min(below + 1, values.size() - 1);
     return values[below] + (position - double(below)) * (values[above] - values[below]);
+}
+
+}  // namespace
+
+double percentile(std::vector<double> values, double p) {
+    std::sort(values.begin(), values.end());
+    return percentileOfSorted(values, p);
+}
+
+Distribution distributionOf(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const size_t middle = values.size() / 2;
+    // As median(): the middle value, or the mean of the two middle ones.
+    const double centre = values.empty()         ? 0.0
+                          : values.size() % 2 == 1 ? values[middle]
+                                                   : 0.5 * (values[middle - 1] + values[middle]);
+    return {centre, percentileOfSorted(values, 5.0), percentileOfSorted(values, 95.0)};
 }
 
 double FrameRecord::gpuMs() const {
@@ -108,12 +126,14 @@ std::vector<PassSummary> FrameTimings::summary() const {
         s.culledBecause = record.lastCull;
         if (auto it = samples.find(name); it != samples.end()) {
             const auto& [gpu, cpu] = it->second;
-            s.gpuMs = median(gpu);
-            s.gpuP5Ms = percentile(gpu, 5.0);
-            s.gpuP95Ms = percentile(gpu, 95.0);
-            s.cpuMs = median(cpu);
-            s.cpuP5Ms = percentile(cpu, 5.0);
-            s.cpuP95Ms = percentile(cpu, 95.0);
+            const Distribution gpuMs = distributionOf(gpu);
+            const Distribution cpuMs = distributionOf(cpu);
+            s.gpuMs = gpuMs.median;
+            s.gpuP5Ms = gpuMs.p5;
+            s.gpuP95Ms = gpuMs.p95;
+            s.cpuMs = cpuMs.median;
+            s.cpuP5Ms = cpuMs.p5;
+            s.cpuP95Ms = cpuMs.p95;
             s.samples = gpu.size();
         }
         out.push_back(std::move(s));
@@ -121,23 +141,22 @@ std::vector<PassSummary> FrameTimings::summary() const {
     return out;
 }
 
-std::vector<double> FrameTimings::frameSums(double (FrameRecord::*sum)() const) const {
+Distribution FrameTimings::frameDistribution(double (FrameRecord::*sum)() const) const {
     std::vector<double> values;
     for (const FrameRecord& frame : mFrames) {
         if (!frame.warmUp && !frame.passes.empty()) values.push_back((frame.*sum)());
     }
-    return values;
+    return distributionOf(std::move(values));
 }
 
-double FrameTimings::frameGpuMs() const { return median(frameSums(&FrameRecord::gpuMs)); }
+double FrameTimings::frameGpuMs() const { return frameDistribution(&FrameRecord::gpuMs).median; }
 
-double FrameTimings::frameCpuMs() const { return median(frameSums(&FrameRecord::cpuMs)); }
+double FrameTimings::frameCpuMs() const { return frameDistribution(&FrameRecord::cpuMs).median; }
 
 namespace {
 
 nlohmann::ordered_json finiteOrNull(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); }
 
-double spread(double p5, double p95, double median) { return median > 0.0 ? (p95 - p5) / median : 0.0; }
 
 }  // namespace
 
@@ -161,18 +180,18 @@ std::string FrameTimings::toJson(const RunInfo& info) const {
         p["gpu_ms"] = s.gpuMs;
         p["gpu_p5_ms"] = s.gpuP5Ms;
         p["gpu_p95_ms"] = s.gpuP95Ms;
-        p["gpu_spread"] = spread(s.gpuP5Ms, s.gpuP95Ms, s.gpuMs);
+        p["gpu_spread"] = Distribution{s.gpuMs, s.gpuP5Ms, s.gpuP95Ms}.spread();
         p["cpu_ms"] = s.cpuMs;
         p["cpu_p5_ms"] = s.cpuP5Ms;
         p["cpu_p95_ms"] = s.cpuP95Ms;
         p["samples"] = s.samples;
         j["passes"].push_back(p);
     }
-    const std::vector<double> frameGpu = frameSums(&FrameRecord::gpuMs);
-    j["frame"] = {{"gpu_ms", median(frameGpu)},
-                  {"gpu_p5_ms", percentile(frameGpu, 5.0)},
-                  {"gpu_p95_ms", percentile(frameGpu, 95.0)},
-                  {"gpu_spread", spread(percentile(frameGpu, 5.0), percentile(frameGpu, 95.0), median(frameGpu))},
+    const Distribution frameGpu = frameDistribution(&FrameRecord::gpuMs);
+    j["frame"] = {{"gpu_ms", frameGpu.median},
+                  {"gpu_p5_ms", frameGpu.p5},
+                  {"gpu_p95_ms", frameGpu.p95},
+                  {"gpu_spread", frameGpu.spread()},
                   {"cpu_ms", frameCpuMs()},
                   {"wall_ms", info.wallMsPerFrame}};
     if (!info.characters.empty()) {
@@ -265,10 +284,10 @@ std::string FrameTimings::toTable(const RunInfo& info) const {
         }
         out += line;
     }
-    const std::vector<double> frameGpu = frameSums(&FrameRecord::gpuMs);
+    const Distribution frameGpu = frameDistribution(&FrameRecord::gpuMs);
     char frameRange[64];
-    std::snprintf(frameRange, sizeof frameRange, "%8.3f-%-8.3f", percentile(frameGpu, 5.0), percentile(frameGpu, 95.0));
-    std::snprintf(line, sizeof line, "%-28s %10.3f %19s %10.3f\n", "frame (sum of passes)", median(frameGpu), frameRange,
+    std::snprintf(frameRange, sizeof frameRange, "%8.3f-%-8.3f", frameGpu.p5, frameGpu.p95);
+    std::snprintf(line, sizeof line, "%-28s %10.3f %19s %10.3f\n", "frame (sum of passes)", frameGpu.median, frameRange,
                   frameCpuMs());
     out += line;
     std::snprintf(line, sizeof line, "%-28s %10.3f\n", "frame wall clock", info.wallMsPerFrame);

@@ -99,6 +99,15 @@ double median(std::vector<double> values);
 // The p-th percentile (p in [0, 100]), linear between order statistics (as
 // numpy.percentile's default); 0 for no values.
 double percentile(std::vector<double> values, double p);
+
+// A set of samples summarised as the timings report them (one sort).
+struct Distribution {
+    double median = 0.0;
+    double p5 = 0.0;
+    double p95 = 0.0;
+    double spread() const { return median > 0.0 ? (p95 - p5) / median : 0.0; }  // (p95 - p5) / median
+};
+Distribution distributionOf(std::vector<double> values);
 // "near: separable samples=7, 3.21 px/mm (table row <= 4 px/mm)": one character's
 // screen-space SSS choice as the viewer's panel and the render's table print it;
 // empty when it has no SSS.
@@ -128,7 +137,8 @@ public:
 private:
     FrameRecord* record(uint64_t frame);
     FrameRecord& recordFor(uint64_t frame);  // made when first seen
-    std::vector<double> frameSums(double (FrameRecord::*sum)() const) const;
+    // Over the frames after the warm-up that have timers.
+    Distribution frameDistribution(double (FrameRecord::*sum)() const) const;
 
     size_t mWarmUpFrames = 0;
     std::vector<std::string> mOrder;  // pass names in declaration order, as first seen

@@ -32,6 +32,12 @@ TEST(FrameTimings, PercentilesInterpolateBetweenOrderStatistics) {
     EXPECT_DOUBLE_EQ(percentile({4, 1, 3, 2}, 50.0), median({4, 1, 3, 2}));
     EXPECT_DOUBLE_EQ(percentile({7.0}, 5.0), 7.0);
     EXPECT_DOUBLE_EQ(percentile({}, 50.0), 0.0);
+    const Distribution d = distributionOf({4, 1, 3, 2});
+    EXPECT_DOUBLE_EQ(d.median, 2.5);
+    EXPECT_DOUBLE_EQ(d.p5, 1.15);
+    EXPECT_DOUBLE_EQ(d.p95, 3.85);
+    EXPECT_DOUBLE_EQ(d.spread(), (3.85 - 1.15) / 2.5);
+    EXPECT_DOUBLE_EQ(distributionOf({7.0, 1.0, 4.0}).median, 4.0);
 }
 
 // Frame 0 is a warm-up with an 8 ms pass; frames 1-4 take 1, 2, 3, 4 ms in
