@@ -38,6 +38,7 @@ packages=(
   libosmesa6-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev libtbb-dev libmeshoptimizer-dev gltfpack libdraco-dev draco
   xvfb xauth python3-matplotlib parallel
+  dpkg-dev file  # cpack: the .deb's dependencies (dpkg-shlibdeps)
 )
 
 missing=()

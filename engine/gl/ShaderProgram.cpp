@@ -1,6 +1,7 @@
 #include "gl/ShaderProgram.h"
 
-#include <cstdlib>
+#include "core/DataDirectory.h"
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -81,10 +82,7 @@ Result<GLuint> compileStage(GLenum stage, const std::string& file, const std::st
 
 }  // namespace
 
-std::string shaderDirectory() {
-    if (const char* dir = std::getenv("DERMIS_SHADER_DIR")) return dir;
-    return DERMIS_SOURCE_SHADER_DIR;
-}
+std::string shaderDirectory() { return dataDirectory(DataKind::Shaders); }
 
 Result<std::string> loadShaderSource(const std::string& file, const std::vector<ShaderDefine>& defines,
                                      const std::vector<GeneratedInclude>& generatedIncludes) {

@@ -5,9 +5,8 @@
 // lighting pass's dispatch over the SSS techniques), and callers may prepend
 // #defines (Jimenez-style configurable headers).
 //
-// The shader folder is $DERMIS_SHADER_DIR when set, else the source tree's
-// shaders/ (compiled in), so an installed binary and the viewer's hot reload
-// read the same files.
+// The shader folder is core/DataDirectory.h's: $DERMIS_SHADER_DIR when set,
+// an installed tree's share/dermis/shaders, else the source tree's shaders/.
 
 #include "core/Result.h"
 #include "gl/GlObjects.h"

@@ -22,10 +22,15 @@ const std::string kTiny = " --size 32x18 --frames 1";
 
 }  // namespace
 
-TEST(CliConduct, VersionNamesTheReleaseAndTheGitRevision) {
+TEST(CliConduct, VersionNamesTheReleaseTheGitRevisionAndTheDataFolders) {
     const ProcessResult r = runProcess(kDermis + " --version");
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(^dermis \d+\.\d+\.\d+ \(git [^)\s]+\)\n$)"))) << r.out;
+    // The build tree's program reads the source tree's folders
+    // (core/DataDirectory.h); tests/install/ checks an installed one.
+    const std::string source = DERMIS_SOURCE_DIR;
+    EXPECT_EQ(r.out.substr(r.out.find('\n') + 1),
+              "shaders: " + source + "/shaders\ncontent: " + source + "/content\ntools:   " + source + "/tools\n");
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(^dermis \d+\.\d+\.\d+ \(git [^)\s]+\)\n)"))) << r.out;
 }
 
 TEST(CliConduct, MistypedNamesGetASuggestion) {

@@ -51,22 +51,6 @@ Stats channelStats(const Image& image) {
     return s;
 }
 
-// Points the shader folder (gl/ShaderProgram.h) elsewhere for one test.
-class ShaderDirectoryOverride {
-public:
-    explicit ShaderDirectoryOverride(const std::string& directory) {
-        if (const char* previous = std::getenv(kVariable)) mPrevious = previous;
-        setenv(kVariable, directory.c_str(), 1);
-    }
-    ~ShaderDirectoryOverride() {
-        if (mPrevious.empty()) unsetenv(kVariable);
-        else setenv(kVariable, mPrevious.c_str(), 1);
-    }
-
-private:
-    static constexpr const char* kVariable = "DERMIS_SHADER_DIR";
-    std::string mPrevious;
-};
 
 }  // namespace
 
@@ -153,7 +137,7 @@ TEST_F(HeadlessRender, ShaderReloadKeepsThePreviousProgramsOnACompileError) {
     test::TempDir dir;
     const std::filesystem::path shaders = dir.file("shaders");
     std::filesystem::copy(gl::shaderDirectory(), shaders, std::filesystem::copy_options::recursive);
-    const ShaderDirectoryOverride override(shaders.string());
+    const test::ScopedEnvironmentVariable override("DERMIS_SHADER_DIR", shaders.c_str());
     load("default.json");
     const Image before = render(Aov::Albedo);
 

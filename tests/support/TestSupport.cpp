@@ -28,6 +28,26 @@ TempDir::~TempDir() {
     std::filesystem::remove_all(mPath, ec);
 }
 
+ScopedEnvironmentVariable::ScopedEnvironmentVariable(std::string name, const char* value) : mName(std::move(name)) {
+    if (const char* previous = std::getenv(mName.c_str())) {
+        mPrevious = previous;
+        mHadPrevious = true;
+    }
+    if (value) {
+        ::setenv(mName.c_str(), value, 1);
+    } else {
+        ::unsetenv(mName.c_str());
+    }
+}
+
+ScopedEnvironmentVariable::~ScopedEnvironmentVariable() {
+    if (mHadPrevious) {
+        ::setenv(mName.c_str(), mPrevious.c_str(), 1);
+    } else {
+        ::unsetenv(mName.c_str());
+    }
+}
+
 ProcessResult runProcess(const std::string& command) {
     TempDir dir;
     const std::string outFile = dir.file("stdout");

@@ -27,6 +27,21 @@ private:
     std::filesystem::path mPath;
 };
 
+// Sets an environment variable (unsets it for nullptr) until destruction,
+// then restores what it was.
+class ScopedEnvironmentVariable {
+public:
+    ScopedEnvironmentVariable(std::string name, const char* value);
+    ~ScopedEnvironmentVariable();
+    ScopedEnvironmentVariable(const ScopedEnvironmentVariable&) = delete;
+    ScopedEnvironmentVariable& operator=(const ScopedEnvironmentVariable&) = delete;
+
+private:
+    std::string mName;
+    std::string mPrevious;
+    bool mHadPrevious = false;
+};
+
 struct ProcessResult {
     int exitCode = -1;
     std::string out;

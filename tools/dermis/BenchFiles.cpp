@@ -29,7 +29,7 @@ Status stagePlots(const std::filesystem::path& outDir, const std::vector<std::pa
     } removeAfter{drawing};
     for (const auto& [name, text] : texts)
         if (Status written = writeTextFileAtomically((drawing / name).string(), text); !written.ok()) return written;
-    const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_bench.py";
+    const std::string script = toolScript("plot_bench.py");
     const std::string command = pythonInterpreter() + " '" + script + "' '" + drawing.string() + "'";
     if (std::system(command.c_str()) != 0) {
         return makeError(script, "plotting failed (it needs python3 with matplotlib: apt-get install python3-matplotlib); "

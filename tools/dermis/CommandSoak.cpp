@@ -9,6 +9,7 @@
 #include "SoakGrowth.h"
 #include "SoakMotion.h"
 
+#include "core/DataDirectory.h"
 #include "core/Log.h"
 #include "core/TextFile.h"
 #include "frame/Renderer.h"
@@ -193,7 +194,7 @@ std::string growthFailure(const std::string& mode, const SoakGrowth& g) {
 }
 
 Status drawPlot(const std::filesystem::path& outDir) {
-    const std::string script = std::string(DERMIS_TOOLS_DIR) + "/plot_soak.py";
+    const std::string script = toolScript("plot_soak.py");
     const std::string command = pythonInterpreter() + " '" + script + "' '" + outDir.string() + "'";
     if (std::system(command.c_str()) != 0) {
         return makeError(script, "plotting failed (it needs python3 with matplotlib: apt-get install python3-matplotlib)");
@@ -204,7 +205,7 @@ Status drawPlot(const std::filesystem::path& outDir) {
 Result<SoakOptions> parseSoakOptions(const ParsedArgs& args) {
     SoakOptions o;
     if (args.positional.size() > 1) return makeError("soak", "expected at most one SCENE file");
-    o.scenePath = args.positional.empty() ? std::string(DERMIS_SOURCE_CONTENT_DIR) + "/scenes/default.json"
+    o.scenePath = args.positional.empty() ? dataDirectory(DataKind::Content) + "/scenes/default.json"
                                           : args.positional[0];
     o.overrides = args.all("set");
     auto size = parseSize(args.get("size", "128x72"), kMaxFrameDimension);

@@ -1,5 +1,7 @@
 #include "Python.h"
 
+#include "core/DataDirectory.h"
+
 #include <filesystem>
 
 namespace dermis::cli {
@@ -9,5 +11,7 @@ std::string pythonInterpreter() {
     // (pyenv, a virtualenv) may not.
     return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
 }
+
+std::string toolScript(const std::string& fileName) { return dataDirectory(DataKind::Tools) + "/" + fileName; }
 
 }  // namespace dermis::cli

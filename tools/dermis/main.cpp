@@ -3,6 +3,7 @@
 #include "CommandReference.h"
 #include "Commands.h"
 
+#include "core/DataDirectory.h"
 #include "core/Log.h"
 #include "core/Suggest.h"
 
@@ -43,7 +44,8 @@ void printUsage(std::FILE* out) {
                  "  --no-warnings  no warnings either (errors always print)\n"
                  "  --help         the command's options\n"
                  "\n"
-                 "dermis --version prints the version and the git revision it was built from.\n"
+                 "dermis --version prints the version, the git revision it was built from and the\n"
+                 "folders it reads its shaders, content and plot scripts from (docs/install.md).\n"
                  "Exit status: 0 on success, 1 when the work fails (a file, a scene, a render), 2 for bad\n"
                  "command-line usage.\n");
 }
@@ -62,6 +64,9 @@ int main(int argc, char** argv) {
     }
     if (name == "--version" || name == "version") {
         std::printf("dermis %s (git %s)\n", DERMIS_VERSION, dermis::cli::gitRevision());
+        using dermis::DataKind;
+        std::printf("shaders: %s\ncontent: %s\ntools:   %s\n", dermis::dataDirectory(DataKind::Shaders).c_str(),
+                    dermis::dataDirectory(DataKind::Content).c_str(), dermis::dataDirectory(DataKind::Tools).c_str());
         return 0;
     }
     std::vector<std::string> arguments;
