@@ -80,10 +80,10 @@ TEST(View, BatchScreenshotUnderXvfb) {
     const RegionStats whole = stats(*image, 0, 0, 960, 540);
     EXPECT_GT(whole.lumaMax - whole.lumaMin, 0.3f) << "the screenshot is (nearly) uniform";
     // The settings column is the left 380 pixels; the scene area to its right
-    // holds the head (the profiler floats at its top right, so the strip
-    // compared is the scene area's lower left).
+    // holds the head, above the profiler docked along the bottom 205 pixels
+    // (tools/viewer/ScreenLayout.h: 38% of 540).
     const RegionStats panel = stats(*image, 0, 0, 360, 540);
-    const RegionStats scene = stats(*image, 400, 300, 560, 540);
+    const RegionStats scene = stats(*image, 400, 0, 960, 320);
     EXPECT_GT(panel.lumaMax - panel.lumaMin, 0.3f) << "the panel column shows no text or widgets";
     EXPECT_GT(scene.lumaMax, 0.3f) << "the scene area shows no lit head";
     EXPECT_GT(glm::length(panel.mean - scene.mean), 0.05f) << "the panel and scene areas look the same";

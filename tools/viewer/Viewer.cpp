@@ -10,6 +10,7 @@
 #include "viewer/Panels.h"
 #include "viewer/ProfilerPanel.h"
 #include "viewer/SceneJson.h"
+#include "viewer/ScreenLayout.h"
 #include "viewer/Screenshot.h"
 #include "viewer/ShaderWatcher.h"
 #include "viewer/Variant.h"
@@ -24,12 +25,6 @@
 
 namespace dermis::viewer {
 namespace {
-
-constexpr float kPanelWidth = 380.0f;  // the settings column, in ImGui units
-constexpr float kProfilerMargin = 8.0f;
-constexpr float kProfilerWidth = 420.0f;
-constexpr float kProfilerMinWidth = 320.0f;
-constexpr float kProfilerHeight = 430.0f;
 
 class Viewer {
 public:
@@ -58,10 +53,10 @@ public:
 private:
     bool batch() const { return mFrames > 0; }
     Scene& panelScene() { return mState.comparing() && mState.editTarget == EditTarget::B ? mB.edited() : mA.edited(); }
-    UiRect sceneArea() const;
-    void buildUi(const UiRect& area);
-    void settingsWindow();
-    void profilerWindow(const UiRect& area);
+    ScreenLayout layout() const;
+    void buildUi(const ScreenLayout& layout);
+    void settingsWindow(const UiRect& column);
+    void profilerWindow(const ScreenLayout& layout);
     void shaderErrorWindow(const UiRect& area);
     void carryOutRequests();
     void reloadShaders();
@@ -88,18 +83,17 @@ private:
     bool mGlDebug = false;
     double mWallMs = 0.0;
     double mLastTime = 0.0;
+    bool mProfilerDocked = false;  // last frame's layout (ScreenLayout.h)
 };
 
-UiRect Viewer::sceneArea() const {
+ScreenLayout Viewer::layout() const {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float left = mState.showPanels ? std::min(kPanelWidth, display.x) : 0.0f;
-    return {left, 0.0f, std::max(display.x - left, 0.0f), display.y};
+    return layoutScreen(display.x, display.y, mState.showPanels, mState.showProfiler);
 }
 
-void Viewer::settingsWindow() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(std::min(kPanelWidth, display.x), display.y), ImGuiCond_Always);
+void Viewer::settingsWindow(const UiRect& column) {
+    ImGui::SetNextWindowPos(ImVec2(column.x, column.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(column.width, column.height), ImGuiCond_Always);
     const std::string title = "Dermis  " + std::filesystem::path(mA.edited().path).filename().string() + "###settings";
     ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.52f);
@@ -153,15 +147,19 @@ void Viewer::settingsWindow() {
     ImGui::End();
 }
 
-void Viewer::profilerWindow(const UiRect& area) {
-    // At most half the scene area's width, so that the scene stays in view in a small window.
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float width = std::clamp(area.width * 0.5f, kProfilerMinWidth, kProfilerWidth);
-    const float height = std::min(kProfilerHeight, display.y * 0.6f);
-    ImGui::SetNextWindowPos(ImVec2(display.x - kProfilerMargin, kProfilerMargin), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    if (ImGui::Begin("Profiler (GPU ms)", &mState.showProfiler)) {
+void Viewer::profilerWindow(const ScreenLayout& layout) {
+    const UiRect& pane = layout.profiler;
+    // Docked, it is a pane of the window (ScreenLayout.h); floating, the user
+    // may move it, and it is placed again only when it stops being docked.
+    const bool place = layout.profilerDocked || layout.profilerDocked != mProfilerDocked;
+    mProfilerDocked = layout.profilerDocked;
+    const ImGuiCond cond = place ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    ImGui::SetNextWindowPos(ImVec2(pane.x, pane.y), cond);
+    ImGui::SetNextWindowSize(ImVec2(pane.width, pane.height), cond);
+    ImGui::SetNextWindowBgAlpha(layout.profilerDocked ? 1.0f : 0.8f);
+    const ImGuiWindowFlags flags =
+        layout.profilerDocked ? ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : 0;
+    if (ImGui::Begin("Profiler (GPU ms)", &mState.showProfiler, flags)) {
         std::vector<ProfiledSide> sides{{"A", &mA.history()}};
         if (mState.comparing() && mB.hasRenderer()) sides.push_back({"B", &mB.history()});
         profilerPanel(sides, mRendererName, mFrameSize.x, mFrameSize.y, mWallMs, mState.requests.clearTimings);
@@ -169,10 +167,11 @@ void Viewer::profilerWindow(const UiRect& area) {
     ImGui::End();
 }
 
-void Viewer::buildUi(const UiRect& area) {
+void Viewer::buildUi(const ScreenLayout& layout) {
+    const UiRect& area = layout.scene;
     if (mState.showPanels) {
-        settingsWindow();
-        if (mState.showProfiler) profilerWindow(area);
+        settingsWindow(layout.settings);
+        if (mState.showProfiler) profilerWindow(layout);
     }
     if (!mState.shaderError.empty()) shaderErrorWindow(area);
     drawOverlay(area, mState, mDifferences);
@@ -280,12 +279,13 @@ Status Viewer::run() {
     mLastTime = mWindow->time();
     for (int frame = 0; !mWindow->closeRequested() && !mState.requests.quit; ++frame) {
         mWindow->beginFrame();
-        const UiRect area = sceneArea();
+        const ScreenLayout screen = layout();
+        const UiRect& area = screen.scene;
         std::vector<Scene*> scenes{&mA.edited(), &mB.edited()};
         handleKeys(mWindow->takeKeyPresses(), mState, mView, scenes);
         mInput.update(area, mView.verticalFovDeg, mOrbit, mState);
         mDifferences = mState.comparing() ? diffScenes(mA.edited(), mB.edited()) : std::vector<SceneDifference>{};
-        buildUi(area);
+        buildUi(screen);
         carryOutRequests();
         mOrbit.applyTo(mView);
         mA.edited().camera = mView;
