@@ -1,5 +1,6 @@
 #include "viewer/JsonFields.h"
 
+#include "viewer/ChoiceFields.h"
 #include "viewer/PanelWidgets.h"
 #include "viewer/SceneJson.h"
 
@@ -16,15 +17,7 @@ namespace {
 using nlohmann::json;
 
 // String keys whose values are one of a few words: a combo rather than a text field.
-const std::map<std::string, std::vector<std::string>>& knownChoices() {
-    static const std::map<std::string, std::vector<std::string>> kChoices = {
-        {"/settings/mode", kSssModes.names()},
-        {"/settings/sss/variant", kSssVariants.names()},
-        {"/settings/sss/blur", kSssBlurs.names()},
-        {"/settings/shadow/filter", kShadowFilters.names()},
-    };
-    return kChoices;
-}
+const std::map<std::string, std::vector<std::string>>& knownChoices() { return settingsChoices(); }
 
 bool isVector3(const json& value) {
     return value.is_array() && value.size() == 3 &&
