@@ -8,8 +8,12 @@
 // and the frame with SSS on minus the frame with it off. llvmpipe rasterises a
 // pass's draws when its framebuffer changes, so some of the work of the passes
 // before (the 32 G-buffer draws) can land in the first SSS timers; the
-// difference of whole frames does not depend on where it lands. The four
-// renderers take turns within each iteration.
+// difference of whole frames does not depend on where it lands.
+//
+// What animation itself costs the SSS: the same scenes frozen (speed 0: each
+// character keeps one pose, skinned once, plan/PoseCache.h)
+// beside the animated ones. The eight renderers (1 and 32, animated and
+// frozen, SSS on and off) take turns within each iteration.
 #include "AnimatedCrowdBenchmarks.h"
 #include "BenchContext.h"
 
@@ -37,7 +41,7 @@ std::string cylinderPath() {
     return std::string(DERMIS_SOURCE_CONTENT_DIR) + "/../out/content/bending_cylinder.gltf";
 }
 
-Scene crowdScene(int count) {
+Scene crowdScene(int count, bool animated) {
     Scene scene = contentScene("default.json");  // lights and settings
     scene.camera.positionM = glm::vec3(0.0f, 0.4f, 1.6f);
     scene.camera.targetM = glm::vec3(0.0f, 0.4f, 0.0f);
@@ -46,7 +50,11 @@ Scene crowdScene(int count) {
     cylinder.mesh.gltfPath = cylinderPath();
     cylinder.material.profile = "skin";
     cylinder.animation.clip = "bend";
+    cylinder.animation.speed = animated ? 1.0f : 0.0f;
     if (count == 1) {
+        // Frozen at the middle of the times the animated one is drawn at
+        // (0.05 to 0.45 s), so that both cover about the same pixels.
+        if (!animated) cylinder.animation.timeS = 0.25f;
         cylinder.name = "cylinder";
         cylinder.transform.scale = kSingleScale;
         scene.characters.push_back(cylinder);
@@ -79,6 +87,7 @@ void animatedCrowd(benchmark::State& state) {
     }
     struct Case {
         int count;
+        bool animated;
         bool sss;
         std::unique_ptr<Scene> scene;
         std::unique_ptr<Renderer> renderer;
@@ -86,8 +95,9 @@ void animatedCrowd(benchmark::State& state) {
     };
     std::vector<Case> cases;
     for (int count : {1, kColumns * kRows})
+    for (bool animated : {true, false})
     for (bool sss : {true, false}) {
-        Case c{count, sss, std::make_unique<Scene>(crowdScene(count)), nullptr, {}, {}, {}};
+        Case c{count, animated, sss, std::make_unique<Scene>(crowdScene(count, animated)), nullptr, {}, {}, {}};
         c.scene->settings.sss.enabled = sss;
         auto renderer = Renderer::create(*c.scene);
         if (!renderer.ok()) {
@@ -95,7 +105,7 @@ void animatedCrowd(benchmark::State& state) {
             return;
         }
         c.renderer = std::move(*renderer);
-        if (sss) recorded()["animated/" + std::to_string(count) + "/pixels"] = double(skinPixels(*c.renderer));
+        if (sss && animated) recorded()["animated/" + std::to_string(count) + "/pixels"] = double(skinPixels(*c.renderer));
         cases.push_back(std::move(c));
     }
     float timeS = 0.0f;
@@ -112,7 +122,8 @@ void animatedCrowd(benchmark::State& state) {
         state.SetIterationTime(total * 1e-3);
     }
     for (Case& c : cases) {
-        const std::string key = "animated/" + std::to_string(c.count) + (c.sss ? "" : "/no sss");
+        const std::string key =
+            std::string(c.animated ? "animated/" : "frozen/") + std::to_string(c.count) + (c.sss ? "" : "/no sss");
         recorded()[key + "/sss"] = median(c.sssPasses);
         recorded()[key + "/skin per character"] = median(c.skin) / c.count;
         recorded()[key + "/frame"] = median(c.frame);
@@ -143,6 +154,22 @@ void printAnimatedCrowdSummary() {
     const double frames = difference(kColumns * kRows) / difference(1);
     std::printf("32 animated / 1, SSS: passes %.3fx, frames on - off %.3fx%s\n", passes, frames,
                 frames <= 1.1 ? " (within 1.1x)" : " (OVER 1.1x)");
+    // The same characters frozen: what animation itself adds to the SSS.
+    auto frozenDifference = [&](int count) {
+        const std::string key = "frozen/" + std::to_string(count);
+        return r.at(key + "/frame") - r.at(key + "/no sss/frame");
+    };
+    std::printf("\nThe same scenes frozen (speed 0, skinned once):\n"
+                "| characters | SSS passes animated | frozen | animated / frozen | SSS on - off animated | frozen | "
+                "animated / frozen | frame animated | frozen |\n"
+                "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    for (int count : {1, kColumns * kRows}) {
+        const std::string animated = "animated/" + std::to_string(count), frozen = "frozen/" + std::to_string(count);
+        std::printf("| %d | %.2f | %.2f | %.3f | %.2f | %.2f | %.3f | %.1f | %.1f |\n", count, r.at(animated + "/sss"),
+                    r.at(frozen + "/sss"), r.at(animated + "/sss") / r.at(frozen + "/sss"), difference(count),
+                    frozenDifference(count), difference(count) / frozenDifference(count), r.at(animated + "/frame"),
+                    r.at(frozen + "/frame"));
+    }
 }
 
 BENCHMARK(animatedCrowd)->UseManualTime()->Iterations(9)->Unit(benchmark::kMillisecond);
