@@ -1,5 +1,6 @@
 #include "graph/RenderGraph.h"
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -75,8 +76,16 @@ const TextureDesc& PassResources::desc(TextureHandle texture) const {
 // ---- RenderGraph -----------------------------------------------------------
 
 uint32_t RenderGraph::addPassNode(const std::string& name, std::unique_ptr<PassBase> pass) {
+    // Timings, traces and cull reports key passes by name, and two passes of
+    // one name merged their samples (two SSS slots of one profile read as one
+    // pass, at the median of both): a repeated name gets "#2", "#3" ...
+    auto taken = [&](const std::string& candidate) {
+        return std::any_of(mPasses.begin(), mPasses.end(), [&](const PassNode& p) { return p.name == candidate; });
+    };
+    std::string unique = name;
+    for (int n = 2; taken(unique); ++n) unique = name + "#" + std::to_string(n);
     PassNode node;
-    node.name = name;
+    node.name = unique;
     node.pass = std::move(pass);
     mPasses.push_back(std::move(node));
     return static_cast<uint32_t>(mPasses.size() - 1);

@@ -48,7 +48,7 @@ SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const 
         Result<DiskKernel> kernel = makeDiskKernel(*slot.profile, slot.choice.diskSamples, slot.widthScale);
         const gpu::DiskSssBlock block = kernel.ok() ? diskBlock(settings, *kernel, slot.slot) : gpu::DiskSssBlock{};
         const DiskData& disk = graph.addPass<DiskData>(
-            "sss " + slot.profile->name() + " disk",
+            "sss " + slot.name + " disk",
             [&](graph::PassBuilder& builder, DiskData& d) {
                 d.colour = builder.read(start.chain);
                 d.depthKey = builder.read(gbuffer.depthKey);

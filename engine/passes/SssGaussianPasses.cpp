@@ -124,7 +124,7 @@ SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& fram
         for (size_t i = 0; i < slot.steps.size(); ++i) {
             const SssGaussianStep& step = slot.steps[i];
             BlurStep blur;
-            blur.name = "sss " + slot.profile->name() + " g" + std::to_string(step.gaussian);
+            blur.name = "sss " + slot.name + " g" + std::to_string(step.gaussian);
             blur.slot = &slot;
             blur.step = step;
             blur.packed = start.packed && i <= cut.lastStep;

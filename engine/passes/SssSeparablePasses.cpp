@@ -43,7 +43,7 @@ const SeparableData& addSeparablePass(graph::RenderGraph& graph, const FrameCont
                                       const std::string& skipReason, const SssStart& start, graph::TextureHandle in,
                                       const SssChain& chain) {
     const bool horizontal = block.isVertical == 0;
-    const std::string passName = "sss " + slot.profile->name() + " separable" + (horizontal ? " h" : " v");
+    const std::string passName = "sss " + slot.name + " separable" + (horizontal ? " h" : " v");
     return graph.addPass<SeparableData>(
         passName,
         [&](graph::PassBuilder& builder, SeparableData& d) {

@@ -192,6 +192,10 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
                 slot.slot = static_cast<int>(plan.slots.size()) + 1;
                 slot.profile = submesh.profile;
                 slot.widthScale = submesh.widthScale;
+                const auto sameProfile = std::count_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
+                    return s.profile == submesh.profile;
+                });
+                slot.name = submesh.profile->name() + (sameProfile > 0 ? "#" + std::to_string(sameProfile + 1) : "");
                 if (Status set = setChoice(slot, ranked.choice); !set.ok()) return set.error();
                 plan.slots.push_back(slot);
                 slotRanks.push_back(ranked.rank);

@@ -41,6 +41,9 @@ struct SssGaussianStep {
 
 struct SssSlotPlan {
     int slot = 0;  // 1..DERMIS_MAX_PROFILES
+    // For pass names: the profile's name, with "#2", "#3" ... on the second
+    // and later slots of one profile.
+    std::string name;
     const DiffusionProfile* profile = nullptr;
     float widthScale = 1.0f;  // settings.sss.widthScale x the material's width_scale
     SssChoice choice;

@@ -234,6 +234,25 @@ TEST(RenderGraph, MisuseIsAnErrorValue) {
     EXPECT_NE(status.error().message().find("invalid texture handle"), std::string::npos);
 }
 
+// Timings and traces key passes by name: a repeated name is numbered, so
+// that two passes never share one row (two SSS slots of one profile did).
+TEST(RenderGraph, ARepeatedPassNameIsNumbered) {
+    RenderGraph graph;
+    for (int i = 0; i < 3; ++i) {
+        const One& a = graph.addPass<One>(
+            "twin", [](PassBuilder& b, One& d) { d.out = b.create("x", kColour); },
+            [](const PassResources&, const One&) {});
+        graph.markOutput(a.out);
+    }
+    ASSERT_TRUE(graph.compile().ok());
+    TestBackend backend;
+    graph.execute(backend);
+    std::vector<std::string> begun;
+    for (const std::string& event : backend.events)
+        if (event.rfind("begin ", 0) == 0) begun.push_back(event);
+    EXPECT_EQ(begun, (std::vector<std::string>{"begin twin", "begin twin#2", "begin twin#3"}));
+}
+
 TEST(RenderGraph, WritingAnOldVersionIsAnError) {
     RenderGraph graph;
     const One& a = graph.addPass<One>(
