@@ -71,6 +71,21 @@ struct RankedChoice {
     const char* source = "settings";
 };
 
+// How many of a character's Gaussians (the chain's, from the narrowest) are
+// narrower than min_width_px at its own nearest pixel; planSteps skips them
+// for a slot at the slot's nearest depth.
+int narrowGaussians(const DiffusionProfile& profile, float widthScale, const SssChoice& choice, float pixelsPerMm,
+                    float minWidthPx) {
+    if (choice.technique != SssTechnique::Gaussians) return 0;
+    const auto& gaussians = profile.gaussians();
+    const int used = std::clamp(choice.gaussians, 1, static_cast<int>(gaussians.size()));
+    int narrow = 0;
+    while (narrow < used &&
+           std::sqrt(gaussians[static_cast<size_t>(narrow)].varianceMm2) * widthScale * pixelsPerMm < minWidthPx)
+        ++narrow;
+    return narrow;
+}
+
 RankedChoice chooseFromSettingsOrTable(const Scene& scene, float pixelsPerMm) {
     const QualitySettings& quality = scene.settings.quality;
     if (quality.errorBudget <= 0.0f || quality.loaded.empty()) {
@@ -159,9 +174,20 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
             auto sameScattering = [&](const SssSlotPlan& s) {
                 return s.profile == submesh.profile && s.widthScale == submesh.widthScale;
             };
+            // Under a budget the table's rows give characters at different
+            // scales slots of their own already.
+            const int narrow = budgeted ? 0
+                                        : narrowGaussians(*submesh.profile, submesh.widthScale, ranked.choice,
+                                                          pixelsPerMm, scene.settings.sss.minWidthPx);
+            auto sameChoice = [&](const SssSlotPlan& s) { return sameScattering(s) && s.choice == ranked.choice; };
             auto existing = std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
-                return sameScattering(s) && s.choice == ranked.choice;
+                return sameChoice(s) && (s.narrowGaussians == narrow || !fp.visible);
             });
+            // With every slot taken, one whose characters are at another scale:
+            // it skips only what its nearest character may (planSteps).
+            if (existing == plan.slots.end() && plan.slots.size() >= DERMIS_MAX_PROFILES) {
+                existing = std::find_if(plan.slots.begin(), plan.slots.end(), sameChoice);
+            }
             // Under a budget an unseen character may share any slot of its scattering: it covers no pixel.
             if (existing == plan.slots.end() && budgeted && !fp.visible) {
                 existing = std::find_if(plan.slots.begin(), plan.slots.end(), sameScattering);
@@ -192,6 +218,7 @@ Result<SssPlan> planSss(const Scene& scene, const std::vector<Bounds>& character
                 slot.slot = static_cast<int>(plan.slots.size()) + 1;
                 slot.profile = submesh.profile;
                 slot.widthScale = submesh.widthScale;
+                slot.narrowGaussians = narrow;
                 const auto sameProfile = std::count_if(plan.slots.begin(), plan.slots.end(), [&](const SssSlotPlan& s) {
                     return s.profile == submesh.profile;
                 });

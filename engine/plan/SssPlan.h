@@ -45,6 +45,12 @@ struct SssSlotPlan {
     // and later slots of one profile.
     std::string name;
     const DiffusionProfile* profile = nullptr;
+    // How many of the chain's Gaussians are narrower than min_width_px at
+    // the nearest pixel of the character that made the slot. Without an
+    // error budget, characters at scales that skip different numbers take
+    // different slots, so that a far head is not blurred by Gaussians only a
+    // near one needs (planSss; docs/crowds.md).
+    int narrowGaussians = 0;
     float widthScale = 1.0f;  // settings.sss.widthScale x the material's width_scale
     SssChoice choice;
     BlurKernel gaussianKernel;  // gaussians: the unit kernel of choice.taps taps

@@ -209,13 +209,57 @@ TEST(QualityTable, TwoCharactersAtDifferentScalesGetTheirRowsInTheirOwnSlots) {
     report.hasSss = false;
     EXPECT_EQ(describeCharacterSss(report), "");
 
-    // Without a budget both use settings.sss in one slot.
+    // Without a budget both use settings.sss, each in a slot of its own
+    // scale (SssSlotPlan::narrowGaussians), so that the far head skips the
+    // Gaussians narrower than min_width_px at its own scale, not the near one's.
     Scene off = scene;
     off.settings.quality.errorBudget = 0.0f;
     auto plain = planSss(off, {headAtDepth(0.5f), headAtDepth(2.0f)}, frontView());
     ASSERT_TRUE(plain.ok());
-    EXPECT_EQ(plain->slots.size(), 1u);
-    EXPECT_EQ(plain->slots[0].choice, SssChoice::fromSettings(off.settings.sss));
+    ASSERT_EQ(plain->slots.size(), 2u);
+    // The skin profile's standard deviations, the square roots of d'Eon &
+    // Luebke 2007's variances (0.0064 ... 7.41 mm^2).
+    const float sigmasMm[] = {0.08f, 0.22f, 0.4324f, 0.753f, 1.4107f, 2.7221f};
+    for (size_t head = 0; head < 2; ++head) {
+        const SssSlotPlan& slot = plain->slots[size_t(plain->slotOf(head, 0) - 1)];
+        EXPECT_EQ(slot.choice, SssChoice::fromSettings(off.settings.sss));
+        const float scale = head == 0 ? nearScale : farScale;
+        int narrow = 0;
+        for (float sigma : sigmasMm) narrow += sigma * scale < off.settings.sss.minWidthPx ? 1 : 0;
+        int skipped = 0;
+        for (const SssGaussianStep& step : slot.steps) skipped += step.skipped ? 1 : 0;
+        EXPECT_EQ(skipped, narrow) << "head " << head << " at " << scale << " px/mm";
+    }
+}
+
+// Heads of two profiles at more scales than there are slots: the plan still
+// fits, every head is in a slot of its own profile, and no slot skips a
+// Gaussian that one of its heads needs (a slot skips by its nearest head).
+TEST(QualityTable, HeadsAtMoreScalesThanSlotsShareSlotsThatSkipNoMoreThanTheNearestNeeds) {
+    Scene scene;
+    std::vector<Bounds> bounds;
+    for (int i = 0; i < 16; ++i) {
+        Character head;
+        head.name = "head " + std::to_string(i);
+        head.mesh.procedural = "head";
+        head.material.profile = i % 2 == 0 ? "skin" : "marble";
+        scene.characters.push_back(head);
+        bounds.push_back(headAtDepth(0.3f + 0.45f * float(i / 2)));
+    }
+    auto plan = planSss(scene, bounds, frontView());
+    ASSERT_TRUE(plan.ok()) << plan.error().message();
+    EXPECT_LE(plan->slots.size(), size_t(DERMIS_MAX_PROFILES));
+    for (size_t c = 0; c < scene.characters.size(); ++c) {
+        const SssSlotPlan& slot = plan->slots[size_t(plan->slotOf(c, 0) - 1)];
+        EXPECT_EQ(slot.profile->name(), scene.characters[c].material.profile);
+        const float scale = plan->characterChoices[c].pixelsPerMm;
+        for (const SssGaussianStep& step : slot.steps) {
+            const float widthPx = std::sqrt(slot.profile->gaussians()[size_t(step.gaussian)].varianceMm2) * scale;
+            if (widthPx >= scene.settings.sss.minWidthPx) {
+                EXPECT_FALSE(step.skipped) << "head " << c << ", Gaussian " << step.gaussian;
+            }
+        }
+    }
 }
 
 // More distinct choices than slots: nobody gets a coarser choice than its
