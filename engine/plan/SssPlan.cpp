@@ -24,10 +24,20 @@ glm::ivec4 unionRect(const glm::ivec4& a, const glm::ivec4& b) {
     return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
 }
 
+// How many of the profile's Gaussians a choice uses.
+int usedGaussians(const DiffusionProfile& profile, const SssChoice& choice) {
+    return std::clamp(choice.gaussians, 1, static_cast<int>(profile.gaussians().size()));
+}
+
+// A Gaussian's standard deviation in pixels at a scale: what min_width_px is compared with.
+float gaussianWidthPx(float varianceMm2, float widthScale, float pixelsPerMm) {
+    return std::sqrt(varianceMm2 * (widthScale * widthScale)) * pixelsPerMm;
+}
+
 void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMetreAtUnitDepth) {
     const float widthScale2 = plan.widthScale * plan.widthScale;
     const auto& gaussians = plan.profile->gaussians();
-    const int used = std::clamp(plan.choice.gaussians, 1, static_cast<int>(gaussians.size()));
+    const int used = usedGaussians(*plan.profile, plan.choice);
     std::vector<glm::vec3> weights;
     for (int i = 0; i < used; ++i) weights.push_back(gaussians[static_cast<size_t>(i)].weight);
     for (size_t i = static_cast<size_t>(used); i < gaussians.size(); ++i) weights.back() += gaussians[i].weight;
@@ -46,7 +56,7 @@ void planSteps(SssSlotPlan& plan, const SssSettings& settings, float pixelsPerMe
         step.gaussian = i;
         const float variance = gaussians[static_cast<size_t>(i)].varianceMm2 * widthScale2;
         step.weight = weights[static_cast<size_t>(i)];
-        step.widthPxAtNearest = std::sqrt(variance) * pixelsPerMm;
+        step.widthPxAtNearest = gaussianWidthPx(gaussians[static_cast<size_t>(i)].varianceMm2, plan.widthScale, pixelsPerMm);
         step.skipped = !plan.visible || step.widthPxAtNearest < settings.minWidthPx;
         // Only a prefix can be skipped for width (variances increase), so a
         // skipped Gaussian counts as the identity and its weight starts the
@@ -78,10 +88,10 @@ int narrowGaussians(const DiffusionProfile& profile, float widthScale, const Sss
                     float minWidthPx) {
     if (choice.technique != SssTechnique::Gaussians) return 0;
     const auto& gaussians = profile.gaussians();
-    const int used = std::clamp(choice.gaussians, 1, static_cast<int>(gaussians.size()));
+    const int used = usedGaussians(profile, choice);
     int narrow = 0;
     while (narrow < used &&
-           std::sqrt(gaussians[static_cast<size_t>(narrow)].varianceMm2) * widthScale * pixelsPerMm < minWidthPx)
+           gaussianWidthPx(gaussians[static_cast<size_t>(narrow)].varianceMm2, widthScale, pixelsPerMm) < minWidthPx)
         ++narrow;
     return narrow;
 }

@@ -16,9 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-// String keys whose values are one of a few words: a combo rather than a text field.
-const std::map<std::string, std::vector<std::string>>& knownChoices() { return settingsChoices(); }
-
 bool isVector3(const json& value) {
     return value.is_array() && value.size() == 3 &&
            std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_number(); });
@@ -44,8 +41,9 @@ void field(const std::string& key, const std::string& pointer, const json& value
         if (ImGui::DragFloat(label, &v, speed, 0.0f, 0.0f, "%.4g")) commit(v);
     } else if (value.is_string()) {
         std::string v = value.get<std::string>();
-        const auto choices = knownChoices().find(pointer);
-        const bool changed = choices != knownChoices().end()
+        // A closed set is a list, not a text field (viewer/ChoiceFields.h).
+        const auto choices = settingsChoices().find(pointer);
+        const bool changed = choices != settingsChoices().end()
                                  ? widgets::comboString(label, v, choices->second)
                                  : ImGui::InputText(label, &v, ImGuiInputTextFlags_EnterReturnsTrue);
         if (changed) commit(v);
@@ -94,8 +92,8 @@ bool jsonFields(Scene& scene, const std::string& pointer, const std::vector<std:
 }
 
 bool jsonChoice(Scene& scene, const std::string& pointer, const char* label, std::string& error) {
-    const auto known = knownChoices().find(pointer);
-    const std::vector<std::string> choices = known != knownChoices().end() ? known->second : std::vector<std::string>{};
+    const auto known = settingsChoices().find(pointer);
+    const std::vector<std::string> choices = known != settingsChoices().end() ? known->second : std::vector<std::string>{};
     const json document = sceneDocument(scene);
     const json::json_pointer at(pointer);
     if (!document.contains(at) || !document.at(at).is_string()) return false;
