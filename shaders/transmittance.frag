@@ -1,10 +1,9 @@
-// With the thickness AOV it writes, instead, the thickness in mm seen
-// through the first back light (0 where there is none, or where the point is
-// the surface nearest that light): a check of step 2.
-//
-// Adds back-normal transmittance (include/Transmittance.glsl) from every
-// shadowed back light into the diffuse irradiance, for SSS pixels only (the
-// stencil test keeps the rest). Output is blended additively. Positions come
+// Adds the light every shadowed back light carries through thin regions
+// (include/Transmittance.glsl) into the diffuse light, for SSS pixels only
+// (the stencil test keeps the rest). Output is blended additively.
+// With the thickness AOV it writes, instead, the thickness in mm along the
+// first back light's ray (0 where there is none, or where the point is the
+// surface nearest that light): a check of thicknessMm. Positions come
 // from the depth key: the depth buffer is attached for the stencil test, so
 // sampling it would be a feedback loop.
 #include "Common.glsl"
@@ -41,6 +40,7 @@ void main() {
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(texelFetch(uNormalMaterial, pixel, 0).xy),
                            vec3(0.0, 1.0, 0.0));
     float shrinkMm = uProfiles.transmittanceShrinkMm;
+    float pixelsPerMm = uFrame.pixelsPerMetreAtUnitDepth / max(viewDepthFromKey(key), kTiny) * 1e-3;
 
     bool writeThickness = uFrame.aov == DERMIS_AOV_THICKNESS;
     vec3 transmitted = vec3(0.0);
@@ -57,8 +57,13 @@ void main() {
             return;
         }
         if (sMm < 0.0) continue;
-        if (scatter.g > 0.0) sMm = scatter.g;  // KHR_materials_volume: the file's thickness, where the light is behind
-        transmitted += radiance * profileTransmittance(uProfiles.profiles[slot], sMm) * backLightFactor(N, L);
+        ProfileParams profile = uProfiles.profiles[slot];
+        if (scatter.g > 0.0) {  // KHR_materials_volume: a slab of the file's thickness, where the light is behind
+            transmitted += radiance * profileTransmittance(profile, scatter.g) * backLightFactor(N, L);
+        } else {
+            transmitted += radiance * thinRegionTransmittance(uShadowMaps[shadowSlot], light, profile, worldPositionM, N, L,
+                                                              sMm, pixelsPerMm);
+        }
     }
     float mixRatio = uFrame.mixRatio;
     oTransmitted = vec4(sanitizeColour(transmitted * scatter.r * uProfiles.transmittanceStrength * albedoPower(albedo, mixRatio)),

@@ -30,18 +30,28 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
     const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion, gbuffer.hasLean());
 
     if (aovReadsSss(aov, gbuffer.hasLean())) {
-        const graph::TextureHandle irradiance =
-            addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
         graph::TextureHandle diffuse;
         LeanShading lean;
         if (plan.textureSpace) {
             // Characters texture space cannot run (plan/TsPlan.h) get the
             // screen-space chain, whose result the accumulation starts from.
+            // The transmitted light goes into the gathered light, unblurred
+            // (include/Transmittance.glsl), unless the TSM carries it; then
+            // only the chain's characters take it, before their blur.
+            const bool tsmTransmits = plan.scene->settings.ts.tsm;
             graph::TextureHandle base = lighting.irradiance;
-            if (plan.ts.anyVisibleFallback()) base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets()).diffuse;
+            if (plan.ts.anyVisibleFallback()) {
+                const graph::TextureHandle irradiance =
+                    tsmTransmits ? addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black)
+                                 : lighting.irradiance;
+                base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets()).diffuse;
+            }
             diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance, base,
                                             black);
+            if (!tsmTransmits) diffuse = addTransmittancePass(graph, frame, gbuffer, shadowMaps, diffuse, black);
         } else {
+            const graph::TextureHandle irradiance =
+                addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
             const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());
             diffuse = chain.diffuse;
             if (gbuffer.hasLean()) lean = {chain.extras[0], chain.diffuse, lighting.visibility};

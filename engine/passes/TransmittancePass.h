@@ -1,6 +1,7 @@
 #pragma once
-// Back-normal transmittance (Papanikolaou 2013 §4.3; shaders/include/Transmittance.glsl),
-// added into `target` by blending, before the SSS blur so it is softened too.
+// Light carried through thin regions from the lit surface behind them
+// (shaders/include/Transmittance.glsl), added into `target` by blending:
+// screen space adds it before the SSS blur, texture space into its gathered light.
 // Runs on SSS pixels only (stencil) inside the SSS scissor. Skipped by
 // predicate when no shadowed light is behind any visible SSS character.
 

@@ -179,10 +179,10 @@ struct SssSettings {
     float leanMomentWidthMm = 0.6f;      // lcb/lbb: LEAN moments ride through the Gaussians up to this std dev (0 = all; plan/SssVariant.h)
 };
 
-// Back-normal transmittance through thin regions (Papanikolaou 2013 §4.3, Jimenez 2010).
+// Light carried through thin regions from the lit surface behind them (shaders/include/Transmittance.glsl).
 struct TransmittanceSettings {
     bool enabled = true;
-    float shrinkMm = 0.0f;   // the surface point moves this far inwards along -N before the shadow-map lookup
+    float shrinkMm = 0.0f;   // the surface point moves this far inwards along -N before its thickness is read
     float strength = 1.0f;   // multiplies the transmitted light
 };
 
@@ -207,7 +207,8 @@ struct TextureSpaceSettings {
     int taps = 7;              // taps per 1-D blur pass (Chappuis 2011 §2.2.4 uses seven), odd, kMinBlurTaps..kMaxBlurTaps
     int minSize = 256;         // irradiance texture side in texels, a power of two: the screen coverage
     int maxSize = 2048;        // picks a power of two within [minSize, maxSize]
-    bool tsm = true;           // modified translucent shadow map: light through thin regions (Chappuis 2011 §2.5)
+    bool tsm = false;          // the modified translucent shadow map carries light through thin regions (Chappuis 2011 §2.5)
+                               // instead of the transmittance both modes share (include/Transmittance.glsl)
     float tsmStrength = 1.0f;  // multiplies the TSM's global-scattering terms (1 = as the profile predicts)
     float seamBlend = 2.0f;    // a Gaussian gives way to local diffuse where a UV chart border is nearer than
                                // this many of its standard deviations (0 = never)

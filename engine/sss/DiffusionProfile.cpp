@@ -76,15 +76,6 @@ glm::vec3 DiffusionProfile::edgeResponse(float xMm) const {
     return glm::vec3(sum);
 }
 
-glm::vec3 DiffusionProfile::transmittance(float thicknessMm) const {
-    // Jimenez 2010 (Papanikolaou 2013 §4.3). fmax also maps a NaN thickness to 0, so the result is always finite.
-    const double s = std::fmax(double(thicknessMm), 0.0);
-    const double s2 = s * s;
-    glm::dvec3 sum(0.0);
-    for (const ProfileGaussian& g : mGaussians) sum += glm::dvec3(g.weight) * std::exp(-s2 / double(g.varianceMm2));
-    return glm::vec3(sum);
-}
-
 float DiffusionProfile::largestStdDevMm() const {
     // The widest Gaussian that carries weight in some channel: an all-zero one is never blurred.
     for (auto it = mGaussians.rbegin(); it != mGaussians.rend(); ++it)

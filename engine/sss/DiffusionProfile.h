@@ -44,9 +44,6 @@ public:
     // Response across a straight edge between unlit (x < 0) and unit-lit
     // (x > 0) half-planes: sum_i w_i Phi(x / sqrt(v_i)) (docs/reference.md).
     glm::vec3 edgeResponse(float xMm) const;
-    // Back-lit transmittance through thickness s (Jimenez 2010, Papanikolaou 2013 §4.3):
-    // T(s) = sum_i w_i exp(-s^2 / v_i).
-    glm::vec3 transmittance(float thicknessMm) const;
     float largestStdDevMm() const;
 
     // The Burley parameters the Gaussians were fitted to (sss/BurleyProfile.h,

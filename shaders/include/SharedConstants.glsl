@@ -62,6 +62,15 @@
 // much; at the light's silhouette a point can even be in front of it (or the
 // texel empty). Thin parts (ears, 2-5 mm) lie well above it.
 #define DERMIS_SELF_THICKNESS_MM 0.25
+// The transmittance's integral over the lit surface behind a point
+// (include/Transmittance.glsl): its centre disc, in units of the widest
+// Gaussian's sigma, is the slab at the point's own thickness; a tap whose
+// surface lies less than DERMIS_SELF_THICKNESS_MM behind the point's tangent
+// plane is the point's own surface, and up to this many mm it counts in part.
+#define DERMIS_TRANSMITTANCE_CENTRE_DISC_SIGMAS 0.1
+#define DERMIS_OWN_SURFACE_RAMP_END_MM 0.75
+// Where the widest Gaussian spans fewer pixels, the slab's closed form stands in for the integral.
+#define DERMIS_TRANSMITTANCE_SLAB_BELOW_PX 1.0
 
 // Outputs of the aov pass (FrameBlock::aov); C++: Aov.
 #define DERMIS_AOV_FINAL 0

@@ -1,30 +1,45 @@
-// Back-normal transmittance through thin regions (Jimenez et al. 2010,
-// "Real-Time Realistic Skin Translucency", as Papanikolaou 2013 §4.3 describes it).
+// Transmittance through thin regions: light that enters where a shadowed
+// light meets the character and leaves at a point x behind it (an ear, the
+// rim of a nostril). Both modes use it: screen space adds it into the
+// irradiance before the SSS blur, texture space into its gathered diffuse
+// light (docs/screen-space.md, "Transmittance").
 //
-// For a pixel on an SSS surface and a light behind it:
-//   1. Shrink the surface point inwards along its normal by `shrinkMm`
-//      (Papanikolaou 2013 §4.3; default 0: see the calibration below).
-//   2. Thickness s = (light-space depth of the shrunk point) - (depth stored
-//      in the shadow map: the surface nearest the light), in mm. Where s is
-//      below DERMIS_SELF_THICKNESS_MM the point is that nearest surface (or
-//      lies in front of it, at the light's silhouette, where the map's texel
-//      may be empty): it is lit directly, its neighbours' light reaches it
-//      through the blur, and it takes no transmitted light. Clamping s to 0
-//      there instead gave T = 1 and added up to 1.6 (more than the direct
-//      irradiance) along the scan's shoulders, which a back light grazes.
-//   3. T(s) = sum_i w_i exp(-s^2 / v_i), with the pixel's profile.
-//   4. E = saturate(dot(-N, L)): the cosine at the back face, whose normal
-//      is about -N. Jimenez et al. 2010 add a 0.3 wrap here.
-// Calibration against the CPU reference (docs/screen-space.md, "Transmittance
-// against the reference"): the reference carries light through thin parts by
-// the profile over 3-D distance, with the back face's own cosine. The 0.3
-// wrap and a 1 mm shrink (the old defaults) both add light the reference does
-// not have: on default.json at 320x180 the ear's relative RMSE was 130%;
-// without the wrap and with no shrink it is 20%, below the texture-space
-// TSM's 25%. Without the wrap, a surface facing the light gets E = 0, so no
-// shrink is needed to keep it from reading its own depth as zero thickness.
-// The caller adds radiance x T(s) x E into the diffuse irradiance before the
-// SSS blur, which then softens it like any other light.
+// THE MODEL (d'Eon & Luebke 2007's translucent shadow maps, carried out over
+// the light's shadow map instead of one texel of it)
+//   The reference carries light through a thin part by the profile over 3-D
+//   distance: x receives R(|x - y|) E(y) dA from every point y the light
+//   meets, E(y) = radiance cos(theta_y). Over the plane perpendicular to the
+//   light ray through x, dA cos(theta_y) is that plane's area element, so the
+//   cosine cancels:
+//     T(x) = radiance x integral over the plane of R(|x - y(p)|) dA_p,
+//   y(p) the first surface the light meets along the ray through p, which is
+//   what the shadow map stores. With R = sum_i w_i G(v_i, r),
+//   G(v, r) = exp(-r^2 / 2v) / (2 pi v) (d'Eon & Luebke 2007) and
+//   |x - y|^2 = delta^2 + rho^2 (delta along the ray, rho across it):
+//     T(x) = radiance x sum_i w_i integral exp(-delta(p)^2 / 2v_i) G2(v_i, rho) dA_p.
+//   For a flat slab of thickness s facing the light this is
+//   sum_i w_i exp(-s^2 / 2v_i) (profileTransmittance, the closed form).
+//
+// QUADRATURE
+//   Rings around x, their radii in units of the widest Gaussian's sigma
+//   (kBackRingEdges). A ring's radial mass for Gaussian i,
+//   exp(-a^2 / 2v_i) - exp(-b^2 / 2v_i), is exact, so a Gaussian much narrower
+//   than the ring spacing is still integrated right; its kBackTapsPerRing taps
+//   each read delta from the shadow map. The last ring reaches to infinity,
+//   so a flat slab comes out exact.
+//   - The centre disc is the slab at x's own thickness s, facing as x's surface
+//     does: its share carries saturate(-N.L), as the back-normal
+//     transmittance of Jimenez et al. 2010 does for the whole plane. Without
+//     it, a point beside a shadow terminator, whose map texel holds its own
+//     surface a fraction of a millimetre away, took light at full strength.
+//   - A ring tap whose y lies less than DERMIS_SELF_THICKNESS_MM behind x's
+//     tangent plane is x's own surface, whose light the SSS blur already
+//     carries; from there to DERMIS_OWN_SURFACE_RAMP_END_MM it counts in part
+//     (smoothstep). The shading normal's tilt spreads its own surface over
+//     a few tenths of a millimetre at the outer rings.
+//   Calibration (default.json and the head scan, `dermis compare --errors`
+//   at 320x180, scatter error ss): ramp end 0.5 mm: 1.97% / 1.23%; 0.75 mm:
+//   1.96% / 1.16%; 1.0 mm: 2.06% / 1.14%. docs/screen-space.md has the table.
 #ifndef DERMIS_TRANSMITTANCE_GLSL
 #define DERMIS_TRANSMITTANCE_GLSL
 
@@ -37,7 +52,12 @@ float shadowMapDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM) 
     return texture(shadowMap, uv).r;
 }
 
-// Thickness in mm (step 2), or -1 where the point is the surface nearest the light.
+// Thickness in mm along the light ray, or -1 where the point is the surface
+// nearest the light (less than DERMIS_SELF_THICKNESS_MM behind it, in front
+// of it at the light's silhouette, or outside the map): that point is lit
+// directly, its neighbours' light reaches it through the blur, and it takes
+// no transmitted light. `shrinkMm` moves the point inwards along N first
+// (Papanikolaou 2013 §4.3; default 0).
 float thicknessMm(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3 N, float shrinkMm) {
     vec3 shrunkM = worldPositionM - N * (shrinkMm * 1e-3);
     float occluderM = shadowMapDepthM(shadowMap, light, shrunkM);
@@ -45,16 +65,104 @@ float thicknessMm(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, vec3
     return sMm < DERMIS_SELF_THICKNESS_MM ? -1.0 : sMm;
 }
 
+// A flat slab of thickness sMm facing the light: sum_i w_i exp(-s^2 / 2v_i),
+// the plane integral above in closed form. For KHR_materials_volume, whose
+// thickness the file gives, and for characters too small on screen for the
+// rings (thinRegionTransmittance).
 vec3 profileTransmittance(ProfileParams profile, float sMm) {
     vec3 t = vec3(0.0);
     int count = profile.gaussianCount;
     for (int i = 0; i < count; ++i) {
         float varianceMm2 = max(profile.gaussians[i].a, 1e-6);
-        t += profile.gaussians[i].rgb * exp(-sMm * sMm / varianceMm2);
+        t += profile.gaussians[i].rgb * exp(-sMm * sMm / (2.0 * varianceMm2));
     }
     return t;
 }
 
 float backLightFactor(vec3 N, vec3 L) { return clamp(dot(-N, L), 0.0, 1.0); }
+
+const int kBackRings = 6;
+const int kBackTapsPerRing = 6;
+// Ring edges and tap radii in units of the widest Gaussian's sigma; ring 0 is the centre disc.
+const float kBackRingEdges[kBackRings + 1] =
+    float[](0.0, DERMIS_TRANSMITTANCE_CENTRE_DISC_SIGMAS, 0.25, 0.5, 1.0, 2.0, 1e6);
+const float kBackRingRadii[kBackRings] = float[](0.0, 0.175, 0.375, 0.75, 1.5, 2.6);
+// A Gaussian with less of its mass in a ring is left out there (the narrow ones in the outer rings).
+const float kNegligibleMass = 1e-5;
+
+// Light-space depth (m) of the first surface over worldPositionM; false
+// outside the map, where nothing is known to be lit.
+bool firstSurfaceDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, out float depthM) {
+    vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
+    if (clip.w <= kTiny) return false;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
+    depthM = texture(shadowMap, uv).r;
+    return true;
+}
+
+// T(x) / radiance (the model above) for x at thickness centreMm (thicknessMm,
+// not -1), N its shading normal, towardsLight the unit vector to the light.
+vec3 backSurfaceTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams profile, vec3 x, vec3 N,
+                              vec3 towardsLight, float centreMm) {
+    int count = profile.gaussianCount;
+    float sigmaMaxMm = sqrt(max(profile.gaussians[max(count - 1, 0)].a, 1e-6));
+    vec3 ray = -towardsLight;
+    vec3 across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    vec3 across2 = cross(ray, across1);
+    // Light-space depth runs along the light's axis (2-D maps) or the ray (cube maps).
+    float depthPerRayM = isCubeShadow(light) ? 1.0 : max(dot(ray, light.direction), 0.05);
+    vec3 t = vec3(0.0);
+    for (int ring = 0; ring < kBackRings; ++ring) {
+        int taps = ring == 0 ? 1 : kBackTapsPerRing;
+        float innerMm = kBackRingEdges[ring] * sigmaMaxMm;
+        float outerMm = kBackRingEdges[ring + 1] * sigmaMaxMm;
+        float radiusMm = kBackRingRadii[ring] * sigmaMaxMm;
+        // Each Gaussian's radial mass in the ring, shared by its taps.
+        float massPerTap[DERMIS_MAX_PROFILE_GAUSSIANS];
+        for (int i = 0; i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
+            if (i >= count) break;
+            float twoVarianceMm2 = 2.0 * max(profile.gaussians[i].a, 1e-6);
+            massPerTap[i] = (exp(-innerMm * innerMm / twoVarianceMm2) - exp(-outerMm * outerMm / twoVarianceMm2)) / float(taps);
+        }
+        for (int k = 0; k < taps; ++k) {
+            float deltaMm = centreMm;
+            float share = backLightFactor(N, towardsLight);
+            if (ring > 0) {
+                // Every other ring turned by half a tap, so that taps do not line up radially.
+                float angle = (float(k) + 0.5 * float(ring & 1)) * (6.2831853 / float(taps));
+                vec3 p = x + (across1 * cos(angle) + across2 * sin(angle)) * (radiusMm * 1e-3);
+                float depthM;
+                if (!firstSurfaceDepthM(shadowMap, light, p, depthM)) continue;
+                deltaMm = (lightLinearDepth(light, p) - depthM) / depthPerRayM * 1000.0;
+                vec3 y = p - ray * (deltaMm * 1e-3);
+                share = smoothstep(DERMIS_SELF_THICKNESS_MM, DERMIS_OWN_SURFACE_RAMP_END_MM, dot(x - y, N) * 1000.0);
+            }
+            if (share <= 0.0) continue;
+            vec3 tap = vec3(0.0);
+            for (int i = 0; i < DERMIS_MAX_PROFILE_GAUSSIANS; ++i) {
+                if (i >= count) break;
+                if (massPerTap[i] < kNegligibleMass) continue;
+                float twoVarianceMm2 = 2.0 * max(profile.gaussians[i].a, 1e-6);
+                tap += profile.gaussians[i].rgb * (exp(-deltaMm * deltaMm / twoVarianceMm2) * massPerTap[i]);
+            }
+            t += tap * share;
+        }
+    }
+    return t;
+}
+
+// T(x) / radiance where x's thickness along the ray is centreMm (not -1):
+// the integral above, or the slab's closed form where the widest Gaussian is
+// under DERMIS_TRANSMITTANCE_SLAB_BELOW_PX pixels (pixelsPerMm at x), so that
+// the rings would resolve nothing the pixel can show.
+vec3 thinRegionTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams profile, vec3 x, vec3 N,
+                             vec3 towardsLight, float centreMm, float pixelsPerMm) {
+    float sigmaMaxMm = sqrt(max(profile.gaussians[max(profile.gaussianCount - 1, 0)].a, 1e-6));
+    if (sigmaMaxMm * pixelsPerMm < DERMIS_TRANSMITTANCE_SLAB_BELOW_PX) {
+        return profileTransmittance(profile, centreMm) * backLightFactor(N, towardsLight);
+    }
+    return backSurfaceTransmittance(shadowMap, light, profile, x, N, towardsLight, centreMm);
+}
 
 #endif

@@ -221,18 +221,27 @@ TEST_F(TextureSpace, EdgeSceneAgreesWithScreenSpace) {
 TEST_F(TextureSpace, EarsTransmitABackLight) {
     // The default head seen from its left, with the default's spot light
     // behind the left ear: the ear's outer face is in the light's shadow, and
-    // only the translucent shadow map brings light through.
+    // only the transmittance brings light through: the one both modes share
+    // (the default) or the translucent shadow map (ts.tsm).
     const std::vector<std::string> view = {"mode=ts", "camera.position_m=[-0.36,0.02,0.34]", "camera.target_m=[-0.06,0,0]",
                                            "ts.max_size=512"};
-    std::vector<std::string> withTsm = view;
-    load("default.json", withTsm);
-    const Image lit = render(Aov::Diffuse, 320, 180);
-    EXPECT_TRUE(pass("ts head tsm")->executed);
-    std::vector<std::string> withoutTsm = view;
-    withoutTsm.push_back("ts.tsm=false");
-    load("default.json", withoutTsm);
-    const Image unlit = render(Aov::Diffuse, 320, 180);
-    ASSERT_EQ(test::countNonFinite(lit), 0u);
+    const auto renderWith = [&](const std::string& setting) {
+        std::vector<std::string> overrides = view;
+        overrides.push_back(setting);
+        load("default.json", overrides);
+        return render(Aov::Diffuse, 320, 180);
+    };
+    // A pass that was not declared did not run either.
+    const auto ran = [&](const char* name) { return pass(name) != nullptr && pass(name)->executed; };
+    const Image withTsm = renderWith("ts.tsm=true");
+    EXPECT_TRUE(ran("ts head tsm"));
+    EXPECT_FALSE(ran("transmittance"));
+    const Image shared = renderWith("ts.tsm=false");
+    EXPECT_TRUE(ran("transmittance"));
+    EXPECT_FALSE(ran("ts head tsm"));
+    const Image unlit = renderWith("transmittance.enabled=false");
+    ASSERT_EQ(test::countNonFinite(withTsm), 0u);
+    ASSERT_EQ(test::countNonFinite(shared), 0u);
 
     // The ear's screen box: the left ear plate's centre, projected.
     const glm::vec3 earM(-0.087f, 0.002f, -0.016f);
@@ -240,27 +249,29 @@ TEST_F(TextureSpace, EarsTransmitABackLight) {
     const glm::vec4 clip = v.clipFromView * v.viewFromWorld * glm::vec4(earM, 1.0f);
     const int cx = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * 320.0f);
     const int cy = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * 180.0f);
-    double earWith = 0.0;
-    double earWithout = 0.0;
-    double elsewhereChange = 0.0;
-    int earPixels = 0;
-    for (int y = 0; y < 180; ++y) {
-        for (int x = 0; x < 320; ++x) {
-            const double with = lit.at(x, y).r;
-            const double without = unlit.at(x, y).r;
-            if (std::abs(x - cx) <= 12 && std::abs(y - cy) <= 16) {
-                earWith += with;
-                earWithout += without;
-                ++earPixels;
-            } else if (std::abs(x - cx) > 40) {
-                elsewhereChange = std::max(elsewhereChange, with - without);
+    for (const auto& [name, lit] : {std::pair<const char*, const Image*>{"the TSM", &withTsm}, {"the shared model", &shared}}) {
+        double earWith = 0.0;
+        double earWithout = 0.0;
+        double elsewhereChange = 0.0;
+        int earPixels = 0;
+        for (int y = 0; y < 180; ++y) {
+            for (int x = 0; x < 320; ++x) {
+                const double with = lit->at(x, y).r;
+                const double without = unlit.at(x, y).r;
+                if (std::abs(x - cx) <= 12 && std::abs(y - cy) <= 16) {
+                    earWith += with;
+                    earWithout += without;
+                    ++earPixels;
+                } else if (std::abs(x - cx) > 40) {
+                    elsewhereChange = std::max(elsewhereChange, with - without);
+                }
             }
         }
+        std::printf("ear box (%d px around %d,%d): red %.4f with %s, %.4f without (x%.2f); elsewhere at most +%.4f\n",
+                    earPixels, cx, cy, earWith / earPixels, name, earWithout / earPixels,
+                    earWith / std::max(earWithout, 1e-9), elsewhereChange);
+        EXPECT_GT(earWith, 1.5 * earWithout) << name;
     }
-    std::printf("ear box (%d px around %d,%d): red %.4f with the TSM, %.4f without (x%.2f); elsewhere at most +%.4f\n",
-                earPixels, cx, cy, earWith / earPixels, earWithout / earPixels, earWith / std::max(earWithout, 1e-9),
-                elsewhereChange);
-    EXPECT_GT(earWith, 1.5 * earWithout);
 }
 
 TEST_F(TextureSpace, OffScreenCharacterRunsNoTextureSpacePass) {
@@ -285,7 +296,13 @@ TEST_F(TextureSpace, ScreenSpaceModeRunsNoTextureSpacePassAndViceVersa) {
     render(Aov::Final, 160, 90);
     EXPECT_EQ(executedWithPrefix(summary(), "sss "), 0);
     EXPECT_GT(executedWithPrefix(summary(), "ts head"), 8);
-    EXPECT_FALSE(pass("transmittance")->executed) << "the TSM replaces the screen-space transmittance";
+    // Both modes share the transmittance (include/Transmittance.glsl); the TSM takes its place when asked for.
+    EXPECT_EQ(executedWithPrefix(summary(), "transmittance"), 1) << "texture space adds the shared transmittance";
+    EXPECT_EQ(executedWithPrefix(summary(), "ts head tsm"), 0);
+    load("default.json", {"mode=ts", "ts.tsm=true"});
+    render(Aov::Final, 160, 90);
+    EXPECT_EQ(executedWithPrefix(summary(), "transmittance"), 0) << "the TSM replaces the shared transmittance";
+    EXPECT_EQ(executedWithPrefix(summary(), "ts head tsm"), 1);
 }
 
 namespace {

@@ -162,28 +162,6 @@ TEST(DiffusionProfile, EdgeResponseIsTheHalfPlaneIntegralOfR) {
                     << profile->name() << " x " << x << " channel " << c;
 }
 
-TEST(DiffusionProfile, TransmittanceIsOneAtZeroThenFallsAndStaysFinite) {
-    for (const DiffusionProfile* profile : {&skinProfile(), &marbleProfile()}) {
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(profile->transmittance(0.0f)[c], 1.0f, 1e-6f);
-        glm::vec3 previous = profile->transmittance(0.0f);
-        for (float s = 0.01f; s < 50.0f; s += 0.01f) {
-            const glm::vec3 t = profile->transmittance(s);
-            for (int c = 0; c < 3; ++c) {
-                ASSERT_LE(t[c], previous[c]) << profile->name() << " s " << s;
-                ASSERT_GE(t[c], 0.0f);
-            }
-            previous = t;
-        }
-        for (float s : {1e6f, 3e38f, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(), -1.0f}) {
-            const glm::vec3 t = profile->transmittance(s);
-            for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(t[c])) << s;
-        }
-        EXPECT_EQ(profile->transmittance(1e6f), glm::vec3(0.0f));
-    }
-    // At s = sqrt(7.41) mm, skin's widest red Gaussian passes exp(-1) of its weight.
-    EXPECT_NEAR(skinProfile().transmittance(std::sqrt(7.41f)).r, 0.078f * std::exp(-1.0f) + 0.358f * std::exp(-7.41f / 1.99f), 1e-3f);
-}
-
 TEST(DiffusionProfile, LargestStdDevIsTheWidestWeightedGaussian) {
     EXPECT_FLOAT_EQ(skinProfile().largestStdDevMm(), std::sqrt(7.41f));
     EXPECT_NEAR(marbleProfile().largestStdDevMm(), std::sqrt(0.036 * std::pow(4.1, 5)), 1e-4);

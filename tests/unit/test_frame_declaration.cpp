@@ -251,7 +251,12 @@ TEST(FrameDeclaration, OffScreenTextureSpaceCharacterRunsNoTextureSpacePass) {
     for (const char* step : {"stretch", "irradiance", "dilate", "gather"}) {
         EXPECT_TRUE(onScreen.executed(std::string("ts head ") + step)) << step << "\n" << onScreen.listing();
     }
-    EXPECT_EQ(onScreen.culledBecause("transmittance"), "nothing reads its output");
+    // Texture space adds the transmittance both modes share to its gathered light, unless the TSM carries it.
+    EXPECT_TRUE(onScreen.executed("transmittance")) << onScreen.listing();
+    DeclaredFrames withTsm("default.json", {"mode=ts", "ts.tsm=true"});
+    ASSERT_TRUE(withTsm.declare());
+    EXPECT_TRUE(withTsm.executed("ts head tsm")) << withTsm.listing();
+    EXPECT_EQ(withTsm.declaredWithPrefix("transmittance"), 0) << withTsm.listing();
 }
 
 TEST(FrameDeclaration, GaussiansUnderTheMinimumWidthAreSkipped) {

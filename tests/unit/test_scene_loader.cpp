@@ -57,7 +57,7 @@ constexpr const char* kFullScene = R"({
                "transmittance": {"enabled": false, "shrink_mm": 0.5, "strength": 2},
                "ssao": {"enabled": false, "samples": 32, "radius_m": 0.05, "strength": 0.8, "blur": false},
                "mode": "ts",
-               "ts": {"taps": 9, "min_size": 128, "max_size": 1024, "tsm": false, "tsm_strength": 0.5,
+               "ts": {"taps": 9, "min_size": 128, "max_size": 1024, "tsm": true, "tsm_strength": 0.5,
                       "seam_blend": 1.5}}
 })";
 

@@ -164,7 +164,7 @@ TEST(TsPlan, CloseUpsBlurGaussianZeroToo) {
 
 TEST(TsPlan, TranslucentShadowMapUsesTheShadowedBackLight) {
     // default.json: light 0 lights the face, light 1 (a shadowed spot) is behind the head.
-    TsPlan p = plan(defaultScene());
+    TsPlan p = plan(defaultScene({"ts.tsm=true"}));
     EXPECT_EQ(p.characters[0].tsmLight, 1);
     EXPECT_GE(p.characters[0].tsmSize, kMinTsmSize);
     EXPECT_LE(p.characters[0].tsmSize, kMaxTsmSize);
@@ -174,10 +174,11 @@ TEST(TsPlan, TranslucentShadowMapUsesTheShadowedBackLight) {
     EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-4f);
     EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-4f);
     EXPECT_EQ(plan(defaultScene({"ts.tsm=false"})).characters[0].tsmLight, -1);
-    EXPECT_EQ(plan(defaultScene({"transmittance.enabled=false"})).characters[0].tsmLight, -1);
-    EXPECT_EQ(plan(defaultScene({"lights.1.shadow=false"})).characters[0].tsmLight, -1);
+    EXPECT_EQ(plan(defaultScene()).characters[0].tsmLight, -1) << "the TSM is off by default";
+    EXPECT_EQ(plan(defaultScene({"ts.tsm=true", "transmittance.enabled=false"})).characters[0].tsmLight, -1);
+    EXPECT_EQ(plan(defaultScene({"ts.tsm=true", "lights.1.shadow=false"})).characters[0].tsmLight, -1);
     // Seen from behind, the key light is the back light.
-    EXPECT_EQ(plan(defaultScene({"camera.position_m=[-0.3,0.1,-0.5]"})).characters[0].tsmLight, 0);
+    EXPECT_EQ(plan(defaultScene({"ts.tsm=true", "camera.position_m=[-0.3,0.1,-0.5]"})).characters[0].tsmLight, 0);
 }
 
 TEST(TsPlan, OpaqueCharactersHaveNoPlanAndLabelsAreUnique) {
