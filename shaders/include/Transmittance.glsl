@@ -2,7 +2,7 @@
 // light meets the character and leaves at a point x behind it (an ear, the
 // rim of a nostril). Both modes use it: screen space adds it into the
 // irradiance before the SSS blur, texture space into its gathered diffuse
-// light (docs/screen-space.md, "Transmittance").
+// light (docs/screen-space.md, "Transmittance against the reference").
 //
 // THE MODEL (d'Eon & Luebke 2007's translucent shadow maps, carried out over
 // the light's shadow map instead of one texel of it)
