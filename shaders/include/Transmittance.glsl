@@ -43,13 +43,22 @@
 #ifndef DERMIS_TRANSMITTANCE_GLSL
 #define DERMIS_TRANSMITTANCE_GLSL
 
-// Stored depth of the first surface along the light ray through worldPositionM.
-float shadowMapDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM) {
+// Light-space depth (m) of the first surface over worldPositionM; false
+// outside the map, where nothing is known to be lit.
+bool firstSurfaceDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, out float depthM) {
     vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
-    if (clip.w <= kTiny) return lightLinearDepth(light, worldPositionM);
+    if (clip.w <= kTiny) return false;
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return lightLinearDepth(light, worldPositionM);
-    return texture(shadowMap, uv).r;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
+    depthM = texture(shadowMap, uv).r;
+    return true;
+}
+
+// Stored depth of the first surface along the light ray through
+// worldPositionM; outside the map, the point's own depth (it is the surface).
+float shadowMapDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM) {
+    float depthM;
+    return firstSurfaceDepthM(shadowMap, light, worldPositionM, depthM) ? depthM : lightLinearDepth(light, worldPositionM);
 }
 
 // Thickness in mm along the light ray, or -1 where the point is the surface
@@ -90,23 +99,15 @@ const float kBackRingRadii[kBackRings] = float[](0.0, 0.175, 0.375, 0.75, 1.5, 2
 // A Gaussian with less of its mass in a ring is left out there (the narrow ones in the outer rings).
 const float kNegligibleMass = 1e-5;
 
-// Light-space depth (m) of the first surface over worldPositionM; false
-// outside the map, where nothing is known to be lit.
-bool firstSurfaceDepthM(sampler2D shadowMap, GpuLight light, vec3 worldPositionM, out float depthM) {
-    vec4 clip = light.shadowClipFromWorld * vec4(worldPositionM, 1.0);
-    if (clip.w <= kTiny) return false;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
-    depthM = texture(shadowMap, uv).r;
-    return true;
-}
+// The profile's widest Gaussian's sigma (mm): variances increase.
+float widestSigmaMm(ProfileParams profile) { return sqrt(max(profile.gaussians[max(profile.gaussianCount - 1, 0)].a, 1e-6)); }
 
 // T(x) / radiance (the model above) for x at thickness centreMm (thicknessMm,
-// not -1), N its shading normal, towardsLight the unit vector to the light.
+// not -1), N its shading normal, towardsLight the unit vector to the light,
+// sigmaMaxMm = widestSigmaMm(profile).
 vec3 backSurfaceTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams profile, vec3 x, vec3 N,
-                              vec3 towardsLight, float centreMm) {
+                              vec3 towardsLight, float centreMm, float sigmaMaxMm) {
     int count = profile.gaussianCount;
-    float sigmaMaxMm = sqrt(max(profile.gaussians[max(count - 1, 0)].a, 1e-6));
     vec3 ray = -towardsLight;
     vec3 across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
     vec3 across2 = cross(ray, across1);
@@ -158,11 +159,11 @@ vec3 backSurfaceTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams
 // the rings would resolve nothing the pixel can show.
 vec3 thinRegionTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams profile, vec3 x, vec3 N,
                              vec3 towardsLight, float centreMm, float pixelsPerMm) {
-    float sigmaMaxMm = sqrt(max(profile.gaussians[max(profile.gaussianCount - 1, 0)].a, 1e-6));
+    float sigmaMaxMm = widestSigmaMm(profile);
     if (sigmaMaxMm * pixelsPerMm < DERMIS_TRANSMITTANCE_SLAB_BELOW_PX) {
         return profileTransmittance(profile, centreMm) * backLightFactor(N, towardsLight);
     }
-    return backSurfaceTransmittance(shadowMap, light, profile, x, N, towardsLight, centreMm);
+    return backSurfaceTransmittance(shadowMap, light, profile, x, N, towardsLight, centreMm, sigmaMaxMm);
 }
 
 #endif

@@ -191,6 +191,20 @@ struct SlabRow {
 // value is a hundred times the float noise of the passes.
 constexpr double kMeasurableT = 0.01;
 
+// The wedge of ProceduralShapes.h scaled by `scale`: the slope of each face,
+// and its thickness (y from -t/2 to +t/2) over x mm.
+constexpr double kWedgeFaceSlope = 0.5 * (kWedgeThickMm - kWedgeThinMm) / (1000.0 * kWedgeLengthM);
+double wedgeThicknessMm(double scale, double xMm) {
+    return scale * kWedgeThinMm + (kWedgeThickMm - kWedgeThinMm) * xMm / (1000.0 * kWedgeLengthM);
+}
+
+// A flat slab h mm thick facing the light: sum_i w_i exp(-h^2 / 2v_i).
+glm::dvec3 slabTransmittance(const DiffusionProfile& profile, double hMm) {
+    glm::dvec3 t(0.0);
+    for (const ProfileGaussian& g : profile.gaussians()) t += glm::dvec3(g.weight) * std::exp(-hMm * hMm / (2.0 * g.varianceMm2));
+    return t;
+}
+
 double smoothstep(double edge0, double edge1, double x) {
     const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
@@ -208,9 +222,9 @@ double smoothstep(double edge0, double edge1, double x) {
 glm::dvec3 wedgeTransmittanceModel(const DiffusionProfile& skin, double scale, double xMm, double centreMm) {
     const double lengthMm = 1000.0 * kWedgeLengthM * scale;
     const double halfDepthMm = 500.0 * kWedgeDepthM * scale;
-    const double slope = 0.5 * (kWedgeThickMm - kWedgeThinMm) / (1000.0 * kWedgeLengthM);  // of each face
-    const double normalLength = std::sqrt(1.0 + slope * slope);                               // top normal (-slope, 1, 0)
-    const auto thicknessMm = [&](double at) { return scale * kWedgeThinMm + (kWedgeThickMm - kWedgeThinMm) * at / lengthMm * scale; };
+    const double slope = kWedgeFaceSlope;
+    const double normalLength = std::sqrt(1.0 + slope * slope);  // top normal (-slope, 1, 0)
+    const auto thicknessMm = [&](double at) { return wedgeThicknessMm(scale, at); };
     const auto& gaussians = skin.gaussians();
     const double sigmaMaxMm = std::sqrt(double(gaussians.back().varianceMm2));
     const double centreDiscMm = DERMIS_TRANSMITTANCE_CENTRE_DISC_SIGMAS * sigmaMaxMm;
@@ -272,7 +286,6 @@ protected:
         const glm::vec3 radiance = mScene->lights[1].colour * mScene->lights[1].intensity;
         const glm::vec3 albedoRoot = glm::sqrt(mScene->characters[0].material.albedo);
         const double lengthM = kWedgeLengthM * scale;
-        const double slope = 0.5 * (kWedgeThickMm - kWedgeThinMm) / (1000.0 * kWedgeLengthM);
         SlabRow r;
         const int row = height / 2;
         for (int x = 0; x < width; ++x) {
@@ -280,7 +293,7 @@ protected:
             if (viewDepthM <= 0.0 || viewDepthM > camera.positionM.y) continue;  // background
             const double xM = camera.positionM.x + (x + 0.5 - width / 2.0) * 2.0 * viewDepthM * tanHalf / height;
             if (xM < 0.025 * lengthM || xM > 0.975 * lengthM) continue;  // away from the ends
-            const double trueMm = scale * (kWedgeThinMm + (kWedgeThickMm - kWedgeThinMm) * xM / lengthM);
+            const double trueMm = wedgeThicknessMm(scale, 1000.0 * xM);
             // Thinner than the self rule's distance, a point counts as the surface the light
             // meets and takes nothing (include/Transmittance.glsl); within 10% of it the map's
             // texels and depth filtering may put the point on either side, so it is not checked.
@@ -300,11 +313,8 @@ protected:
                 // Every tap lies well behind the tangent plane: the model is a tilted flat back
                 // face, sum_i w_i exp(-h^2 / 2v_i) cos(theta), h the distance from the point
                 // to that plane (measuredMm cos(theta) across it), theta its tilt.
-                const double cosTilt = 1.0 / std::sqrt(1.0 + slope * slope);
-                const double h = measuredMm * cosTilt;
-                glm::dvec3 closed(0.0);
-                for (const ProfileGaussian& g : skin.gaussians())
-                    closed += glm::dvec3(g.weight) * std::exp(-h * h / (2.0 * g.varianceMm2)) * cosTilt;
+                const double cosTilt = 1.0 / std::sqrt(1.0 + kWedgeFaceSlope * kWedgeFaceSlope);
+                const glm::dvec3 closed = slabTransmittance(skin, measuredMm * cosTilt) * cosTilt;
                 for (int c = 0; c < 3; ++c)
                     if (closed[c] >= kMeasurableT) r.worstClosedForm = std::max(r.worstClosedForm, std::abs(t[c] - closed[c]) / closed[c]);
             }
@@ -419,8 +429,7 @@ TEST_F(SssSlab, TwoPlanesTransmitTheClosedFormOfTheModel) {
     const Image far = render(Aov::Transmittance, 160, 90);
     const glm::vec3 radiance = mScene->lights[0].colour * mScene->lights[0].intensity;
     const glm::dvec3 albedoRoot = glm::sqrt(glm::dvec3(mScene->characters[0].material.albedo));
-    glm::dvec3 slab(0.0);
-    for (const ProfileGaussian& g : skin.gaussians()) slab += glm::dvec3(g.weight) * std::exp(-tMm * tMm / (2.0 * g.varianceMm2));
+    const glm::dvec3 slab = slabTransmittance(skin, tMm);
     const glm::vec4 centre = far.at(80, 45);
     for (int c = 0; c < 3; ++c) {
         const double expected = double(radiance[c]) * slab[c] * albedoRoot[c];
