@@ -15,7 +15,9 @@
 //      specular occlusion.
 //   Where a pixel's profile slot uses a technique that scatters in this pass
 //   (the pre-integrated one), each light's N.L is that technique's falloff and
-//   its shadow the one the profile scatters (engine/render/LightingScatter.h).
+//   its shadow the one the profile scatters (engine/render/LightingScatter.h);
+//   that code is compiled only with LIGHTING_SCATTER 1, for frames where some
+//   slot does (a CPU driver would run it under a mask for every pixel).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the
@@ -97,7 +99,11 @@ void main() {
         if (keepSpecular) specular += environmentSpecular(uEnergy, N, V, roughness, rhoS) * environmentVisibility;
     }
     // s.technique != 0: the pixel's technique scatters in this pass.
+#if LIGHTING_SCATTER
     LightingScatterSurface s = lightingScatterSurface(pixel);
+#else
+    const LightingScatterSurface s = LightingScatterSurface(0, 0, 0.0, 0.0);  // no slot of the frame scatters here
+#endif
     bool scatterShadows = s.technique != 0 && lightingScatterShadowShows(s, -viewPositionM.z);
     vec4 shadowed = vec4(0.0);
     int lightCount = uFrame.lightCount;

@@ -1,6 +1,7 @@
 #include "gl/ShaderProgram.h"
 
 #include "core/DataDirectory.h"
+#include "core/Log.h"
 
 #include <fstream>
 #include <set>
@@ -139,6 +140,20 @@ Result<Program> buildProgram(const ProgramSource& source) {
                          "link error: " + log);
     }
     return program;
+}
+
+GLuint LazyProgram::get() const {
+    if (!mHasSource) return 0;
+    if (!mTried) {
+        mTried = true;
+        auto program = buildProgram(mSource);
+        if (program.ok()) {
+            mProgram = std::move(*program);
+        } else {
+            log::error(program.error().message() + " (falling back to the variant built at start)");
+        }
+    }
+    return mProgram.get();
 }
 
 }  // namespace dermis::gl

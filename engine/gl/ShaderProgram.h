@@ -45,4 +45,21 @@ Result<std::string> loadShaderSource(const std::string& file, const std::vector<
 // Compiles and links; errors carry the file name and the driver's log.
 Result<Program> buildProgram(const ProgramSource& source);
 
+// A program compiled on its first get(): for variants most frames never draw
+// with, whose compiling would slow every start. get() returns 0 where there is
+// no source (default-constructed) or the build failed (logged once, with the
+// driver's log): the caller then falls back to a program it built up front.
+class LazyProgram {
+public:
+    LazyProgram() = default;
+    explicit LazyProgram(ProgramSource source) : mSource(std::move(source)), mHasSource(true) {}
+    GLuint get() const;
+
+private:
+    ProgramSource mSource;
+    bool mHasSource = false;
+    mutable Program mProgram;
+    mutable bool mTried = false;
+};
+
 }  // namespace dermis::gl

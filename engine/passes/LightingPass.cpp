@@ -49,7 +49,9 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 const bool lean = d.leanCross.isValid();
                 const Programs& programs = *frame.gl->programs;
                 beginFullscreenPass(frame, resources, {{d.out.irradiance, d.out.specular, d.out.visibility}},
-                                    (lean ? programs.lightingLean : programs.lighting).get(frame.plan.environment.enabled()),
+                                    (lean ? programs.lightingLean : programs.lighting)
+                                        .get(frame.plan.environment.enabled(), frame.plan.lights.shadowCode,
+                                             frame.plan.sss.anyScattersInLighting()),
                                     {d.gbuffer.depthStencil, d.gbuffer.albedo, d.gbuffer.normalMaterial,
                                      d.ambientOcclusion});
                 bindShadowMaps(frame, resources, d.shadowMaps);

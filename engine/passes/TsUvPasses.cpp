@@ -180,7 +180,7 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameCon
             },
             [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
-                glUseProgram(frame.gl->programs->tsIrradiance.get(frame.plan.environment.enabled()));
+                glUseProgram(frame.gl->programs->tsIrradiance.get(frame.plan.environment.enabled(), frame.plan.lights.shadowCode));
                 glBindTextureUnit(2, resources.texture(d.tsm));
                 glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
                 bindShadowMaps(frame, resources, d.shadowMaps);

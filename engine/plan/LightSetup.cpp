@@ -69,6 +69,12 @@ LightSetup setupLights(const std::vector<Light>& lights, const Bounds& receivers
         g.shadowFilter = float(shadows.filter);
         g.shadowSlot = float(setup.shadowedLights.size());
         setup.shadowedLights.push_back(i);
+        const bool delta = !(g.size > 0.0f);
+        const ShadowCode needs = shadows.filter != ShadowFilter::Pcss        ? ShadowCode::EveryFilter
+                                 : delta && type == DERMIS_LIGHT_POINT ? ShadowCode::EveryFilter
+                                 : delta                               ? ShadowCode::HardEdges
+                                                                       : ShadowCode::SoftEdges;
+        setup.shadowCode = std::max(setup.shadowCode, needs);
         if (type == DERMIS_LIGHT_POINT) {
             // Cube faces: every caster lies beyond the nearer of the receivers' sphere and
             // the casters' box, and a face's axial depth is at least 1/sqrt(3) of the distance.

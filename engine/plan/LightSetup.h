@@ -19,11 +19,22 @@
 
 namespace dermis {
 
+// Which shadow filters the programs that read the frame's shadow maps compile
+// (DERMIS_SHADOW_CODE, shaders/include/Shadows.glsl): the least that covers
+// every shadowed light, since a CPU driver runs the code of filters no light
+// uses as well (docs/shadows.md, "Only the filters a frame uses").
+enum class ShadowCode {
+    HardEdges = DERMIS_SHADOW_CODE_HARD_EDGES,      // delta lights with 2-D maps under the PCSS filter
+    SoftEdges = DERMIS_SHADOW_CODE_SOFT_EDGES,      // those, and lights with a size under the PCSS filter
+    EveryFilter = DERMIS_SHADOW_CODE_EVERY_FILTER,  // PCF 4x4, Poisson, delta point lights
+};
+
 struct LightSetup {
     gpu::LightsBlock block{};
     int lightCount = 0;
     std::vector<Light> sources;  // the lights set up, one per block entry (the frame's lights, plan/FramePlan.h)
     std::vector<int> shadowedLights;  // light index per shadow slot
+    ShadowCode shadowCode = ShadowCode::HardEdges;
 };
 
 // A point light's cube faces are half the map size, so that its 3x2 atlas holds

@@ -10,16 +10,20 @@
 
 namespace dermis {
 
-Result<Programs> Programs::build() {
+Result<Programs> Programs::build(bool specialize) {
     Programs programs;
     // Every program as (where it goes, its source), built in one loop below.
     std::vector<std::pair<gl::Program*, gl::ProgramSource>> builds;
     const std::vector<gl::GeneratedInclude> generated = {lightingTechniquesGlsl()};
-    auto add = [&builds, &generated](gl::Program& into, const char* vertex, const char* fragment,
-                         const std::vector<gl::ShaderDefine>& extra = {}, const char* compute = "") {
+    auto source = [&generated](const char* vertex, const char* fragment, const std::vector<gl::ShaderDefine>& extra,
+                               const char* compute = "") {
         std::vector<gl::ShaderDefine> defines = {{"DERMIS_BECKMANN_SIZE", std::to_string(kBeckmannTableSize)}};
         defines.insert(defines.end(), extra.begin(), extra.end());
-        builds.push_back({&into, {vertex, fragment, std::move(defines), compute, generated}});
+        return gl::ProgramSource{vertex, fragment, std::move(defines), compute, generated};
+    };
+    auto add = [&builds, &source](gl::Program& into, const char* vertex, const char* fragment,
+                                  const std::vector<gl::ShaderDefine>& extra = {}, const char* compute = "") {
+        builds.push_back({&into, source(vertex, fragment, extra, compute)});
     };
     // The programs that light with the environment, with its code (DERMIS_ENVIRONMENT 1)
     // and without it (0), for frames with no environment.
@@ -29,6 +33,29 @@ Result<Programs> Programs::build() {
         add(into.lit, vertex, fragment, extra);
         extra.back().value = "0";
         add(into.unlit, vertex, fragment, extra);
+    };
+
+    auto addShadowed = [&addBothEnvironments, &source, specialize](
+                           ShadowedPrograms& into, const char* vertex, const char* fragment,
+                           std::vector<gl::ShaderDefine> extra = {}) {
+        extra.push_back({"DERMIS_SHADOW_CODE", std::to_string(int(ShadowCode::EveryFilter))});
+        addBothEnvironments(into.everyFilter, vertex, fragment, extra);
+        if (!specialize) return;
+        for (size_t code = 0; code < into.specialized.size(); ++code) {
+            extra.back().value = std::to_string(code);
+            for (int lit = 0; lit < 2; ++lit) {
+                std::vector<gl::ShaderDefine> defines = extra;
+                defines.push_back({"DERMIS_ENVIRONMENT", std::to_string(lit)});
+                into.specialized[code][size_t(lit)] = gl::LazyProgram(source(vertex, fragment, defines));
+            }
+        }
+    };
+    auto addLighting = [&addShadowed, specialize](LightingPrograms& into, std::vector<gl::ShaderDefine> extra) {
+        into.specialized = specialize;
+        extra.push_back({"LIGHTING_SCATTER", "0"});
+        addShadowed(into.plain, "fullscreen.vert", "lighting.frag", extra);
+        extra.back().value = "1";
+        addShadowed(into.scatter, "fullscreen.vert", "lighting.frag", extra);
     };
 
     add(programs.shadow, "shadow.vert", "shadow.frag");
@@ -74,11 +101,11 @@ Result<Programs> Programs::build() {
     add(programs.sssSeparableLeanV, "fullscreen.vert", "sss_separable.frag",
         {{"SSS_EXTRA_TARGETS", leanTargets}, {"SEPARABLE_SSS_LAST", "1"}});
 
-    addBothEnvironments(programs.lighting, "fullscreen.vert", "lighting.frag");
-    addBothEnvironments(programs.lightingLean, "fullscreen.vert", "lighting.frag", {{"LIGHTING_LEAN", "1"}});
+    addLighting(programs.lighting, {});
+    addLighting(programs.lightingLean, {{"LIGHTING_LEAN", "1"}});
     addBothEnvironments(programs.leanSpecular, "fullscreen.vert", "lean_specular.frag");
     addBothEnvironments(programs.compositeLean, "fullscreen.vert", "composite.frag", {{"COMPOSITE_LEAN", "1"}});
-    addBothEnvironments(programs.tsIrradiance, "ts_uv.vert", "ts_irradiance.frag");
+    addShadowed(programs.tsIrradiance, "ts_uv.vert", "ts_irradiance.frag");
 
     for (auto& [into, source] : builds) {
         auto program = gl::buildProgram(source);

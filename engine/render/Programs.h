@@ -4,6 +4,9 @@
 
 #include "core/Result.h"
 #include "gl/ShaderProgram.h"
+#include "plan/LightSetup.h"
+
+#include <array>
 
 namespace dermis {
 
@@ -15,10 +18,38 @@ struct EnvironmentPrograms {
     GLuint get(bool environmentLit) const { return (environmentLit ? lit : unlit).get(); }
 };
 
+// A program that filters shadow maps (include/Shadows.glsl), with and
+// without the environment: built up front with every filter's code, and on
+// first use with only the filters a frame's ShadowCode needs
+// (plan/LightSetup.h), which draws the same image faster on CPU drivers.
+struct ShadowedPrograms {
+    static_assert(size_t(ShadowCode::HardEdges) == 0 && size_t(ShadowCode::SoftEdges) == 1, "specialized's index");
+    EnvironmentPrograms everyFilter;
+    // [code][environment lit]; for HardEdges and SoftEdges
+    std::array<std::array<gl::LazyProgram, 2>, size_t(ShadowCode::EveryFilter)> specialized;
+    GLuint get(bool environmentLit, ShadowCode code) const {
+        if (code != ShadowCode::EveryFilter) {
+            if (GLuint program = specialized[size_t(code)][environmentLit ? 1 : 0].get()) return program;
+        }
+        return everyFilter.get(environmentLit);
+    }
+};
+
+// The lighting pass's programs: with the code of the techniques that scatter
+// in it (LIGHTING_SCATTER 1, for frames where some profile slot does) and without.
+struct LightingPrograms {
+    ShadowedPrograms plain;
+    ShadowedPrograms scatter;
+    bool specialized = true;  // false: the scatter code in every frame (Programs::build)
+    GLuint get(bool environmentLit, ShadowCode code, bool scatters) const {
+        return (scatters || !specialized ? scatter : plain).get(environmentLit, code);
+    }
+};
+
 struct Programs {
     gl::Program shadow;
     gl::Program gbuffer;
-    EnvironmentPrograms lighting;
+    LightingPrograms lighting;
     gl::Program composite;
     gl::Program tonemap;
     gl::Program aov;
@@ -36,7 +67,7 @@ struct Programs {
     gl::Program sssDisk;        // passes/SssDiskPass.cpp
     gl::Program tsTsm;         // passes/TextureSpacePasses.cpp
     gl::Program tsStretch;
-    EnvironmentPrograms tsIrradiance;
+    ShadowedPrograms tsIrradiance;
     gl::Program tsDilate;
     gl::Program tsBlur;
     gl::Program tsGather;
@@ -44,7 +75,7 @@ struct Programs {
     gl::Program transferRotate;  // passes/SkinningPass.cpp: the environment transfer turned with the skinning (compute)
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
-    EnvironmentPrograms lightingLean;  // lighting that passes the LEAN cross moment on in the irradiance's alpha
+    LightingPrograms lightingLean;  // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
     gl::Program sssDiskLean;
@@ -57,7 +88,10 @@ struct Programs {
     gl::Program gbufferLeanTransfer;
     gl::Program skybox;
 
-    static Result<Programs> build();
+    // specialize false draws every frame with the programs that hold every
+    // shadow filter's and SSS technique's code (tests: the specialized ones
+    // must draw the same images).
+    static Result<Programs> build(bool specialize = true);
 };
 
 }  // namespace dermis

@@ -85,7 +85,7 @@ inline constexpr EnumTable<ShadowFilter, 3> kShadowFilters{
     {{{ShadowFilter::Pcf4x4, "pcf4x4", "4x4 percentage-closer filtering (Chappuis 2011)"},
       {ShadowFilter::Poisson, "poisson", "rotated Poisson-disc taps (Papanikolaou 2013)"},
       {ShadowFilter::Pcss, "pcss",
-       "penumbrae as wide as the light's size implies (Fernando 2005); pcf4x4 for a delta light"}}}};
+       "penumbrae as wide as the light's size implies (Fernando 2005); for a delta light the four nearest texels' tests, bilinearly weighted"}}}};
 
 // What darkens the environment's diffuse light where the character hides it
 // from itself (docs/environment.md, "Occlusion"). SSAO then darkens only the

@@ -26,8 +26,22 @@
 // The wide kernels of POISSON on cube maps and of PCSS compare each tap with the
 // receiver's plane where the tap's ray meets it, not with the receiver's own
 // depth, so that a tilted receiver does not shadow itself across the kernel.
+// A program compiles only the filters the frame's lights use
+// (DERMIS_SHADOW_CODE, SharedConstants.glsl; every filter when not defined):
+// CPU drivers such as llvmpipe run both sides of a branch under a mask, so
+// the code of a filter no light uses cost as much as the filter that runs
+// (the lighting pass of content/scenes/crowd8_mixed.json at 640x360: 98 ms
+// with every filter, 34 ms with the hard edges alone; docs/shadows.md).
 #ifndef DERMIS_SHADOWS_GLSL
 #define DERMIS_SHADOWS_GLSL
+
+#ifndef DERMIS_SHADOW_CODE
+#define DERMIS_SHADOW_CODE DERMIS_SHADOW_CODE_EVERY_FILTER
+#endif
+#if DERMIS_SHADOW_CODE != DERMIS_SHADOW_CODE_HARD_EDGES && DERMIS_SHADOW_CODE != DERMIS_SHADOW_CODE_SOFT_EDGES && \
+    DERMIS_SHADOW_CODE != DERMIS_SHADOW_CODE_EVERY_FILTER
+#error "DERMIS_SHADOW_CODE must be one of DERMIS_SHADOW_CODE_* (SharedConstants.glsl)"
+#endif
 
 const vec2 kPoissonDisc[16] = vec2[](
     vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
@@ -288,7 +302,13 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
     int filterId = int(light.shadowFilter + 0.5);
     bool delta = !(light.size > 0.0);
 
+#if DERMIS_SHADOW_CODE == DERMIS_SHADOW_CODE_HARD_EDGES
+    return bilinearPcf(shadowMap, uv, testDepthM);  // every light: a 2-D map, delta, the PCSS filter
+#else
     if (!cube && filterId == DERMIS_SHADOW_FILTER_PCSS && delta) return bilinearPcf(shadowMap, uv, testDepthM);
+#if DERMIS_SHADOW_CODE == DERMIS_SHADOW_CODE_SOFT_EDGES
+    return pcssVisibility(shadowMap, light, f, light.shadowNearM);  // every other light has a size
+#else
     if (!cube && filterId == DERMIS_SHADOW_FILTER_PCF4X4) {
         vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
         float lit = 0.0;
@@ -324,6 +344,8 @@ float shadowVisibility(sampler2D shadowMap, GpuLight light, vec3 worldPositionM,
         }
     }
     return lit / 16.0;
+#endif
+#endif
 }
 
 #endif

@@ -37,6 +37,15 @@
 #define DERMIS_SHADOW_FILTER_PCF4X4 0
 #define DERMIS_SHADOW_FILTER_POISSON 1
 #define DERMIS_SHADOW_FILTER_PCSS 2
+// Which filters a program that reads shadow maps compiles (DERMIS_SHADOW_CODE,
+// include/Shadows.glsl); C++: ShadowCode, chosen per frame from its lights
+// (engine/plan/LightSetup.h). Hard edges: every shadowed light is a delta
+// light with a 2-D map under the PCSS filter (its bilinear test); soft
+// edges: those and lights with a size under the PCSS filter; every filter:
+// the rest (PCF 4x4, Poisson, delta point lights).
+#define DERMIS_SHADOW_CODE_HARD_EDGES 0
+#define DERMIS_SHADOW_CODE_SOFT_EDGES 1
+#define DERMIS_SHADOW_CODE_EVERY_FILTER 2
 // PCSS (Fernando 2005): the fixed taps of its blocker search and of its
 // filter, on a Vogel disc (include/Shadows.glsl).
 #define DERMIS_PCSS_BLOCKER_SAMPLES 16
