@@ -123,3 +123,30 @@ TEST_F(ShadowCodeTest, TheLightingPassScattersTheSameWithItsScatterCodeOnlyWhere
 }
 
 }  // namespace
+
+namespace {
+
+// A specialized program that fails to build gives way to the one with every
+// filter (which draws the same image), and the failure is logged once, with
+// the file; the other specialized programs still build, each its own.
+TEST_F(ShadowCodeTest, ASpecializedProgramThatFailsGivesWayToTheFullOne) {
+    auto programs = Programs::build();
+    ASSERT_TRUE(programs.ok()) << programs.error().message();
+    ShadowedPrograms& lighting = programs->lighting.plain;
+    const GLuint full = lighting.everyFilter.get(false);
+    ASSERT_NE(full, 0u);
+    lighting.specialized[size_t(ShadowCode::HardEdges)][0] =
+        gl::LazyProgram(gl::ProgramSource{"fullscreen.vert", "no_such_shader.frag", {}, "", {}});
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(lighting.get(false, ShadowCode::HardEdges), full);
+    const std::string firstLog = testing::internal::GetCapturedStderr();
+    EXPECT_NE(firstLog.find("no_such_shader.frag"), std::string::npos) << firstLog;
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(lighting.get(false, ShadowCode::HardEdges), full);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << "built and logged once";
+    const GLuint soft = lighting.get(false, ShadowCode::SoftEdges);
+    EXPECT_NE(soft, 0u);
+    EXPECT_NE(soft, full);
+}
+
+}  // namespace
