@@ -16,8 +16,9 @@
 //   Where a pixel's profile slot uses a technique that scatters in this pass
 //   (the pre-integrated one), each light's N.L is that technique's falloff and
 //   its shadow the one the profile scatters (engine/render/LightingScatter.h);
-//   that code is compiled only with LIGHTING_SCATTER 1, for frames where some
-//   slot does (a CPU driver would run it under a mask for every pixel).
+//   that code is compiled only with LIGHTING_SCATTER 1, which the pass draws
+//   over the rectangles of the slots that scatter here, after drawing the
+//   frame without it (a CPU driver would run it under a mask for every pixel).
 //   2: the shadow visibility of each shadowed light, channel = its shadow
 //      slot (0 where N.L <= 0), for the LEAN specular pass after the blur,
 //      which would otherwise filter every shadow map again. Bound only in the

@@ -1,6 +1,8 @@
 #include "passes/LightingPass.h"
 
 #include "passes/FullscreenPass.h"
+#include "plan/ScreenRegions.h"
+#include "scene/SssTechniques.h"
 
 namespace dermis {
 namespace {
@@ -12,6 +14,21 @@ struct LightingData {
     graph::TextureHandle scatter;  // read where a technique scatters in this pass (render/LightingScatter.h): slot, curvature
     Lighting out;
 };
+// The screen rectangles of the slots whose technique scatters in this pass
+// (plan/ScreenRegions.h): the pass draws the frame with the program without
+// that code, then these rectangles again with it. On a CPU driver the code
+// costs every pixel it is compiled into (docs/shadows.md, "Only the filters
+// a frame uses"); the pixels it draws are written, not blended, so a
+// rectangle drawn twice is the same.
+std::vector<glm::ivec4> lightingScatterRegions(const SssPlan& sss) {
+    std::vector<glm::ivec4> rects;
+    for (const SssSlotPlan& slot : sss.slots) {
+        if (!slot.visible || !sssTechniqueInfo(slot.choice.technique).scattersInLighting()) continue;
+        rects.insert(rects.end(), slot.regions.begin(), slot.regions.end());
+    }
+    return disjointCover(rects);
+}
+
 }  // namespace
 
 void bindShadowMaps(const FrameContext& frame, const graph::PassResources& resources,
@@ -45,13 +62,14 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
                 if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
             },
-            [frame](const graph::PassResources& resources, const LightingData& d) {
+            [frame, scatterRegions = lightingScatterRegions(frame.plan.sss)](const graph::PassResources& resources,
+                                                                             const LightingData& d) {
                 const bool lean = d.leanCross.isValid();
                 const Programs& programs = *frame.gl->programs;
+                const LightingPrograms& variants = lean ? programs.lightingLean : programs.lighting;
+                const bool environmentLit = frame.plan.environment.enabled();
                 beginFullscreenPass(frame, resources, {{d.out.irradiance, d.out.specular, d.out.visibility}},
-                                    (lean ? programs.lightingLean : programs.lighting)
-                                        .get(frame.plan.environment.enabled(), frame.plan.lights.shadowCode,
-                                             frame.plan.sss.anyScattersInLighting()),
+                                    variants.get(environmentLit, frame.plan.lights.shadowCode, false),
                                     {d.gbuffer.depthStencil, d.gbuffer.albedo, d.gbuffer.normalMaterial,
                                      d.ambientOcclusion});
                 bindShadowMaps(frame, resources, d.shadowMaps);
@@ -62,6 +80,10 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                     glBindTextureUnit(DERMIS_UNIT_FIRST_PASS_EXTRA, frame.gl->lightingTables);
                 }
                 frame.gl->drawFullscreenTriangle();
+                if (d.scatter.isValid()) {
+                    glUseProgram(variants.get(environmentLit, frame.plan.lights.shadowCode, true));
+                    frame.gl->drawRegions(scatterRegions);
+                }
             })
         .out;
 }
