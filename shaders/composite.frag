@@ -29,6 +29,9 @@ layout(location = 0) out vec4 oColour;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // From the pixel, not the interpolated vUv: the pass draws the characters'
+    // rectangles (passes/FullscreenPass.h), whose interpolation rounds otherwise.
+    vec2 uv = gl_FragCoord.xy * uFrame.pixelSizeUv;
     float depth = texelFetch(uDepth, pixel, 0).r;
     if (depth >= 1.0) {
         oColour = vec4(uFrame.background.rgb, 1.0);
@@ -40,7 +43,7 @@ void main() {
     vec3 diffuse = outgoingDiffuseOf(texelFetch(uAlbedo, pixel, 0).rgb, scatteredIrradiance(pixel, accumulated.rgb),
                                      normalMaterial, depth);
 #ifdef COMPOSITE_LEAN
-    vec3 specular = leanPixelSpecular(pixel, vUv, depth, lightingSpecular, accumulated.a, normalMaterial.w,
+    vec3 specular = leanPixelSpecular(pixel, uv, depth, lightingSpecular, accumulated.a, normalMaterial.w,
                                       uLeanMoments, uVisibility);
 #else
     vec3 specular = lightingSpecular.rgb;

@@ -55,6 +55,9 @@ layout(location = 2) out vec4 oVisibility;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // From the pixel, not the interpolated vUv: the pass draws the characters'
+    // rectangles (passes/FullscreenPass.h), whose interpolation rounds otherwise.
+    vec2 uv = gl_FragCoord.xy * uFrame.pixelSizeUv;
     float depth = texelFetch(uDepth, pixel, 0).r;
     if (depth >= 1.0) {
         oIrradiance = vec4(0.0);
@@ -76,12 +79,12 @@ void main() {
     float rhoS = normalMaterial.w;
     bool conserveEnergy = uFrame.energyConservation != 0;
 
-    vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);
+    vec3 viewPositionM = viewPositionFromDepth(uv, depth, uFrame.viewFromClip);
     vec3 worldPositionM = (uFrame.worldFromView * vec4(viewPositionM, 1.0)).xyz;
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * decodeNormal(normalMaterial.xy), vec3(0.0, 1.0, 0.0));
     vec3 V = safeNormalize(uFrame.cameraPositionM.xyz - worldPositionM, N);
 
-    float ambientOcclusion = texture(uAmbientOcclusion, vUv).r;
+    float ambientOcclusion = texture(uAmbientOcclusion, uv).r;
     vec3 irradiance = uFrame.ambient.rgb * ambientOcclusion;
     vec3 specular = vec3(0.0);
     float environmentVisibility = 1.0;

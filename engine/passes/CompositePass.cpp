@@ -36,14 +36,17 @@ graph::TextureHandle addCompositePass(graph::RenderGraph& graph, const FrameCont
                 }
                 d.out = builder.create("hdr colour", {w, h, graph::TextureFormat::Rgba16F});
             },
-            [frame](const graph::PassResources& resources, const CompositeData& d) {
+            [frame, regions = characterRegions(frame.plan)](const graph::PassResources& resources,
+                                                             const CompositeData& d) {
                 const Programs& programs = *frame.gl->programs;
                 // Units 5 and 6 only in the LEAN variants (invalid handles otherwise).
-                runFullscreenPass(frame, resources, {{d.out}},
+                beginFullscreenPass(frame, resources, {{d.out}},
                                   d.lean.isValid() ? programs.compositeLean.get(frame.plan.environment.enabled())
                                                     : programs.composite.get(),
                                   {d.depth, d.albedo, d.diffuse, d.specular, d.normalMaterial, d.lean.moments,
                                    d.lean.visibility, d.unscattered, d.scatter});
+                // The background is the scene's colour (composite.frag).
+                drawCharacterPixels(frame, regions, 1, glm::vec4(frame.plan.scene->background.colour, 1.0f));
             })
         .out;
 }

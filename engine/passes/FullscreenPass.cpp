@@ -1,5 +1,8 @@
 #include "passes/FullscreenPass.h"
 
+#include "plan/ScreenFootprint.h"
+#include "plan/ScreenRegions.h"
+
 #include <cassert>
 
 namespace dermis {
@@ -23,6 +26,22 @@ void beginFullscreenPass(const FrameContext& frame, const graph::PassResources& 
     for (size_t unit = 0; unit < inputs.size(); ++unit) {
         if (inputs[unit].isValid()) glBindTextureUnit(static_cast<GLuint>(unit), resources.texture(inputs[unit]));
     }
+}
+
+std::vector<glm::ivec4> characterRegions(const FramePlan& plan) {
+    std::vector<glm::ivec4> rects;
+    for (const CharacterPlacement& character : plan.characters) {
+        if (!character.visible) continue;
+        const ScreenFootprint footprint = screenFootprint(character.worldBounds, plan.view);
+        if (footprint.visible) rects.push_back(footprint.scissor);
+    }
+    return disjointCover(rects);
+}
+
+void drawCharacterPixels(const FrameContext& frame, const std::vector<glm::ivec4>& regions, size_t drawBuffers,
+                         const glm::vec4& background) {
+    for (size_t i = 0; i < drawBuffers; ++i) glClearBufferfv(GL_COLOR, static_cast<GLint>(i), &background.x);
+    if (!regions.empty()) frame.gl->drawRegions(regions);
 }
 
 void runFullscreenPass(const FrameContext& frame, const graph::PassResources& resources,

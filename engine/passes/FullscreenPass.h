@@ -31,6 +31,19 @@ void beginFullscreenPass(const FrameContext& frame, const graph::PassResources& 
                          const FullscreenTargets& targets, GLuint program,
                          const std::vector<graph::TextureHandle>& inputs);
 
+// The pixels the frame's visible characters may cover: their screen
+// footprints (plan/ScreenFootprint.h) as disjoint rectangles
+// (plan/ScreenRegions.h); empty when no character is visible. A pass whose
+// every background pixel takes one value clears its targets to it and draws
+// these alone (drawCharacterPixels): on a CPU driver a shader's early return
+// for the background still runs the rest of the shader under a mask.
+std::vector<glm::ivec4> characterRegions(const FramePlan& plan);
+
+// Clears every bound draw buffer to `background` and draws the character
+// regions (nothing more where there are none). After beginFullscreenPass.
+void drawCharacterPixels(const FrameContext& frame, const std::vector<glm::ivec4>& regions, size_t drawBuffers,
+                         const glm::vec4& background);
+
 // beginFullscreenPass, then the full-screen triangle.
 void runFullscreenPass(const FrameContext& frame, const graph::PassResources& resources,
                        const FullscreenTargets& targets, GLuint program,

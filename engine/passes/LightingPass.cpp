@@ -62,8 +62,9 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
                 if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
             },
-            [frame, scatterRegions = lightingScatterRegions(frame.plan.sss)](const graph::PassResources& resources,
-                                                                             const LightingData& d) {
+            [frame, regions = characterRegions(frame.plan),
+             scatterRegions = lightingScatterRegions(frame.plan.sss)](const graph::PassResources& resources,
+                                                                      const LightingData& d) {
                 const bool lean = d.leanCross.isValid();
                 const Programs& programs = *frame.gl->programs;
                 const LightingPrograms& variants = lean ? programs.lightingLean : programs.lighting;
@@ -79,7 +80,8 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                     glBindTextureUnit(10, resources.texture(d.scatter));
                     glBindTextureUnit(DERMIS_UNIT_FIRST_PASS_EXTRA, frame.gl->lightingTables);
                 }
-                frame.gl->drawFullscreenTriangle();
+                // The background's irradiance, specular and visibility are 0 (lighting.frag).
+                drawCharacterPixels(frame, regions, d.out.visibility.isValid() ? 3 : 2, glm::vec4(0.0f));
                 if (d.scatter.isValid()) {
                     glUseProgram(variants.get(environmentLit, frame.plan.lights.shadowCode, true));
                     frame.gl->drawRegions(scatterRegions);

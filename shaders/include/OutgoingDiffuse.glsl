@@ -22,7 +22,8 @@ vec3 scatteredIrradiance(ivec2 pixel, vec3 accumulated) {
 vec3 outgoingDiffuseOf(vec3 albedo, vec3 accumulated, vec4 normalMaterial, float depth) {
     vec3 diffuse = accumulated * albedoPower(albedo, 1.0 - uFrame.mixRatio);
     if (uFrame.energyConservation != 0) {
-        vec3 viewPositionM = viewPositionFromDepth(vUv, depth, uFrame.viewFromClip);
+        // The pixel's own uv, whether the caller draws the frame or rectangles of it.
+        vec3 viewPositionM = viewPositionFromDepth(gl_FragCoord.xy * uFrame.pixelSizeUv, depth, uFrame.viewFromClip);
         vec3 N = decodeNormal(normalMaterial.xy);  // view space, like V below
         vec3 V = safeNormalize(-viewPositionM, N);
         diffuse *= energyLeftForDiffuse(uEnergy, clamp(dot(N, V), 0.0, 1.0), normalMaterial.z, normalMaterial.w);
