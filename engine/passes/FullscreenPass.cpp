@@ -28,10 +28,11 @@ void beginFullscreenPass(const FrameContext& frame, const graph::PassResources& 
     }
 }
 
-std::vector<glm::ivec4> characterRegions(const FramePlan& plan) {
+std::vector<glm::ivec4> characterRegions(const FramePlan& plan, const std::function<bool(size_t)>& include) {
     std::vector<glm::ivec4> rects;
-    for (const CharacterPlacement& character : plan.characters) {
-        if (!character.visible) continue;
+    for (size_t index = 0; index < plan.characters.size(); ++index) {
+        const CharacterPlacement& character = plan.characters[index];
+        if (!character.visible || (include && !include(index))) continue;
         const ScreenFootprint footprint = screenFootprint(character.worldBounds, plan.view);
         if (footprint.visible) rects.push_back(footprint.scissor);
     }

@@ -13,6 +13,7 @@
 #include "graph/RenderGraph.h"
 #include "render/FrameContext.h"
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -37,7 +38,8 @@ void beginFullscreenPass(const FrameContext& frame, const graph::PassResources& 
 // every background pixel takes one value clears its targets to it and draws
 // these alone (drawCharacterPixels): on a CPU driver a shader's early return
 // for the background still runs the rest of the shader under a mask.
-std::vector<glm::ivec4> characterRegions(const FramePlan& plan);
+// `include` (when given) picks the characters, by index.
+std::vector<glm::ivec4> characterRegions(const FramePlan& plan, const std::function<bool(size_t)>& include = {});
 
 // Clears every bound draw buffer to `background` and draws the character
 // regions (nothing more where there are none). After beginFullscreenPass.

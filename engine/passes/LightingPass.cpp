@@ -4,6 +4,8 @@
 #include "plan/ScreenRegions.h"
 #include "scene/SssTechniques.h"
 
+#include <algorithm>
+
 namespace dermis {
 namespace {
 struct LightingData {
@@ -27,6 +29,17 @@ std::vector<glm::ivec4> lightingScatterRegions(const SssPlan& sss) {
         rects.insert(rects.end(), slot.regions.begin(), slot.regions.end());
     }
     return disjointCover(rects);
+}
+
+// Whether every submesh of the character scatters in this pass: the draw
+// without that code then leaves the character to the second draw.
+bool onlyScattersInLighting(const SssPlan& sss, size_t character) {
+    if (character >= sss.slotsOfCharacter.size() || sss.slotsOfCharacter[character].empty()) return false;
+    for (int slot : sss.slotsOfCharacter[character]) {
+        const auto found = std::find_if(sss.slots.begin(), sss.slots.end(), [slot](const SssSlotPlan& s) { return s.slot == slot; });
+        if (found == sss.slots.end() || !sssTechniqueInfo(found->choice.technique).scattersInLighting()) return false;
+    }
+    return true;
 }
 
 }  // namespace
@@ -62,7 +75,8 @@ Lighting addLightingPass(graph::RenderGraph& graph, const FrameContext& frame, c
                 d.out.specular = builder.create("specular", {w, h, graph::TextureFormat::Rgba16F});
                 if (shadowVisibility) d.out.visibility = builder.create("shadow visibility", {w, h, graph::TextureFormat::Rgba8});
             },
-            [frame, regions = characterRegions(frame.plan),
+            [frame, regions = characterRegions(frame.plan,
+                                               [&sss = frame.plan.sss](size_t c) { return !onlyScattersInLighting(sss, c); }),
              scatterRegions = lightingScatterRegions(frame.plan.sss)](const graph::PassResources& resources,
                                                                       const LightingData& d) {
                 const bool lean = d.leanCross.isValid();
