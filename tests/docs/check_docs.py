@@ -9,6 +9,10 @@
 - the README's command table lists exactly the program's commands (the
   table in tools/dermis/main.cpp that `dermis --help` prints), and its layer
   list exactly the folders of engine/;
+- every test the docs name (`Suite.Name`, wildcards allowed) and every
+  `ctest -R PATTERN` they give matches a test of tests/ (a GoogleTest TEST
+  or an add_test NAME), so that a renamed or removed test leaves no
+  pointer to nothing behind;
 - with the program given (check_docs.py ROOT [DERMIS]), every default the
   docs state for an option ("`--frames N` ... (default 10)", or a table's
   "default" column) is one that some command's --help states for it.
@@ -74,6 +78,26 @@ engine_layers = sorted(p.name for p in (root / "engine").iterdir() if p.is_dir()
 readme_layers = sorted(re.findall(r"^engine/([a-z]+)/ ", readme, flags=re.M))
 if readme_layers != engine_layers:
     problems.append(f"README.md: the layer list has {readme_layers}; engine/ has {engine_layers}")
+
+
+# Tests the docs cite must exist: GoogleTest names (TEST, TEST_F, TEST_P) and
+# ctest's own (add_test NAME).
+import fnmatch
+test_names = set()
+for source in sorted((root / "tests").rglob("*.cpp")):
+    for suite, name in re.findall(r"\bTEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)", source.read_text(encoding="utf-8")):
+        test_names.add(f"{suite}.{name}")
+test_names.update(re.findall(r"add_test\(NAME ([\w.]+)", (root / "tests/CMakeLists.txt").read_text(encoding="utf-8")))
+for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
+    text = page.read_text(encoding="utf-8")
+    # `Suite.Name`: a capitalised suite that is not a placeholder in capitals (`NAME.R`).
+    for cited in sorted(set(re.findall(r"`([A-Z][A-Za-z0-9]*[a-z][A-Za-z0-9]*\.[A-Z*][\w*]*)`", text))):
+        if not any(fnmatch.fnmatchcase(test, cited) for test in test_names):
+            problems.append(f"{page.relative_to(root)}: names the test `{cited}`, which no test in tests/ is")
+    for single, double, bare in re.findall(r"ctest [^`\n]*?-R\s+(?:'([^']+)'|\"([^\"]+)\"|([^\s`'\"\\)]+))", text):
+        pattern = single or double or bare
+        if not any(re.search(pattern, test) for test in test_names):
+            problems.append(f"{page.relative_to(root)}: `ctest -R {pattern}` matches no test in tests/")
 
 
 # The chapter that documents each command's options (README.md documents them all).
