@@ -9,6 +9,8 @@
 - the README's command table lists exactly the program's commands (the
   table in tools/dermis/main.cpp that `dermis --help` prints), and its layer
   list exactly the folders of engine/;
+- every path of the tree the docs name (`tools/x.py`, `engine/plan/Y`, a
+  stem standing for its .h and .cpp) exists;
 - every test the docs name (`Suite.Name`, wildcards allowed) and every
   `ctest -R PATTERN` they give matches a test of tests/ (a GoogleTest TEST
   or an add_test NAME), so that a renamed or removed test leaves no
@@ -78,6 +80,18 @@ engine_layers = sorted(p.name for p in (root / "engine").iterdir() if p.is_dir()
 readme_layers = sorted(re.findall(r"^engine/([a-z]+)/ ", readme, flags=re.M))
 if readme_layers != engine_layers:
     problems.append(f"README.md: the layer list has {readme_layers}; engine/ has {engine_layers}")
+
+
+# Paths of the tree the docs name must exist; a stem stands for its .h and .cpp;
+# a name with a placeholder (<Name>, *) is a pattern, not a path.
+for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
+    text = page.read_text(encoding="utf-8")
+    for named in sorted(set(re.findall(r"(?<![\w/.-])((?:content|tools|docs|shaders|engine|tests|\.ci)/[\w./<>*-]+)", text))):
+        named = named.rstrip(".,:;")
+        if re.search(r"[<>*]", named):
+            continue
+        if not any((root / (named + suffix)).exists() for suffix in ("", ".h", ".cpp")):
+            problems.append(f"{page.relative_to(root)}: names {named}, which is not in the tree")
 
 
 # Tests the docs cite must exist: GoogleTest names (TEST, TEST_F, TEST_P) and
