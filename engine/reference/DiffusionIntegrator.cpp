@@ -18,8 +18,9 @@ float edgePerSigma(float density) { return std::sqrt(4.0f / (std::sqrt(3.0f) * s
 }  // namespace
 
 DiffusionIntegrator::DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
-                                         const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles)
-    : mSurface(&surface), mQuadrature(quadrature) {
+                                         const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles,
+                                         const SurfaceInterior* interior)
+    : mSurface(&surface), mInterior(interior), mQuadrature(quadrature) {
     for (const ProfileGaussian& g : profile.gaussians()) {
         mSigmasMm.push_back(std::sqrt(g.varianceMm2));
         mTerms.push_back(Term{0.5f / g.varianceMm2, g.weight / (2.0f * kPi * g.varianceMm2)});
@@ -63,7 +64,9 @@ DiffusionIntegrator::Shaded DiffusionIntegrator::shade(const Cell& cell, float c
     Shaded shaded;
     shaded.sample.positionM = mSurface->positionAt(cell.triangle, b.x, b.y);
     shaded.sample.areaMm2 = childAreaMm2;
-    shaded.sample.value = values.valueAt(cell.triangle, b, &shaded.visibility);
+    shaded.buried = mInterior && mInterior->buried(cell.triangle, b.x, b.y);
+    // Surface inside the body is no boundary: no light enters there (SurfaceInterior.h).
+    if (!shaded.buried) shaded.sample.value = values.valueAt(cell.triangle, b, &shaded.visibility);
     return shaded;
 }
 
@@ -84,7 +87,8 @@ void DiffusionIntegrator::shadeCell(const Cell& cell, float areaMm2, int edgeLev
     }
     bool edge = false;
     for (size_t i = 0; i < 4 && !edge; ++i) {
-        for (size_t j = i + 1; j < 4; ++j) edge = edge || shaded[i].visibility.disagreesWith(shaded[j].visibility);
+        for (size_t j = i + 1; j < 4; ++j)
+            edge = edge || shaded[i].visibility.disagreesWith(shaded[j].visibility) || shaded[i].buried != shaded[j].buried;
     }
     if (edge && edgeLevels > 0) {
         for (size_t c = 0; c < 4; ++c) shadeCell(children[c], childAreaMm2, edgeLevels - 1, &shaded[c], values, emit);

@@ -17,6 +17,7 @@
 #include "reference/CharacterSurface.h"
 #include "reference/SampleValues.h"
 #include "reference/SurfaceCells.h"
+#include "reference/SurfaceInterior.h"
 #include "sss/DiffusionProfile.h"
 
 #include <glm/glm.hpp>
@@ -49,8 +50,12 @@ class DiffusionIntegrator {
 public:
     // `surface` must outlive the integrator; the profile is copied. `triangles`
     // (tessellate()) limits the donors to one diffusion group's triangles.
+    // Donors inside the body (`interior`, which must outlive the integrator;
+    // null: none) give nothing, and a cell that the body's boundary crosses is
+    // split like one that a shadow edge crosses.
     DiffusionIntegrator(const CharacterSurface& surface, const DiffusionProfile& profile,
-                        const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles = nullptr);
+                        const QuadratureSettings& quadrature, const std::vector<uint8_t>* triangles = nullptr,
+                        const SurfaceInterior* interior = nullptr);
 
     // The largest edge of a base cell: (just under) two sample spacings of the widest Gaussian.
     static float baseCellEdgeM(const DiffusionProfile& profile, const QuadratureSettings& quadrature);
@@ -70,6 +75,7 @@ private:
     struct Shaded {
         Sample sample;
         LightVisibility visibility;
+        bool buried = false;
     };
     Shaded shade(const Cell& cell, float childAreaMm2, const SampleValues& values) const;
     // The cell's samples: its four children's centroids, refined at shadow edges.
@@ -84,6 +90,7 @@ private:
     glm::vec3 profileAt(float radiusSquaredMm2) const;
 
     const CharacterSurface* mSurface;
+    const SurfaceInterior* mInterior;
     QuadratureSettings mQuadrature;
     std::vector<float> mSigmasMm;  // ascending
     struct Term {

@@ -79,6 +79,9 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
             for (int i = 0; i < 3; ++i) corners.push_back(surface->corner(t, i));
         }
         renderer.mSurfaces.push_back(std::make_unique<CharacterSurface>(std::move(*surface)));
+        renderer.mInteriors.push_back(std::make_unique<SurfaceInterior>(SurfaceInterior::build(*renderer.mSurfaces.back())));
+        renderer.mStats.buriedTriangles += renderer.mInteriors.back()->buriedTriangleCount();
+        renderer.mStats.straddlingTriangles += renderer.mInteriors.back()->straddlingTriangleCount();
     }
     renderer.mFirstTriangle.push_back(static_cast<uint32_t>(corners.size() / 3));
     if (options.embree) {
@@ -150,7 +153,8 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
             for (size_t t = 0; t < surface.triangleCount(); ++t)
                 if (triangles[t]) renderer.mTriangleGroups[c][t] = group;
             renderer.mGroups.push_back(
-                {c, std::make_unique<DiffusionIntegrator>(surface, *scaledProfile, options.quadrature, &triangles)});
+                {c, std::make_unique<DiffusionIntegrator>(surface, *scaledProfile, options.quadrature, &triangles,
+                                                          renderer.mInteriors[c].get())});
             renderer.mStats.baseCells += renderer.mGroups.back().integrator->baseCellCount();
         }
     }

@@ -91,6 +91,8 @@ struct ProgressiveSettings {
 struct ReferenceStats {
     size_t triangles = 0;      // in the ray-tracing BVH (all characters)
     size_t baseCells = 0;      // base tessellation cells, all SSS characters
+    size_t buriedTriangles = 0;      // inside the body, all characters (SurfaceInterior.h)
+    size_t straddlingTriangles = 0;  // across the body's boundary
     size_t shadedBaseCells = 0;  // those the last call needed
     size_t sssHits = 0;        // rays (sub-samples) of the last call that landed on an SSS character
     size_t emptyIrradianceReads = 0;  // engine irradiance reads with no covered texel in reach, all calls
@@ -181,6 +183,7 @@ private:
     Scene mScene;
     ReferenceOptions mOptions;
     std::vector<std::unique_ptr<CharacterSurface>> mSurfaces;
+    std::vector<std::unique_ptr<SurfaceInterior>> mInteriors;  // per character
     std::vector<uint32_t> mFirstTriangle;  // per character, into the BVH's triangle order; plus the total
     std::unique_ptr<raytrace::TriangleScene> mBvh;
     std::unique_ptr<ReferenceLighting> mLighting;          // at the points the camera sees

@@ -227,9 +227,10 @@ int runReference(const std::vector<std::string>& rawArgs) {
     auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
     char summary[512];
     std::snprintf(summary, sizeof summary,
-                  "reference: %zu SSS sub-samples, %zu triangles, %zu of %zu base cells shaded; load %.1f s, render %.1f s",
-                  stats.sssHits, stats.triangles, stats.shadedBaseCells, stats.baseCells, seconds(start, built),
-                  seconds(built, done));
+                  "reference: %zu SSS sub-samples, %zu triangles (%zu inside the body, %zu across its boundary), "
+                  "%zu of %zu base cells shaded; load %.1f s, render %.1f s",
+                  stats.sssHits, stats.triangles, stats.buriedTriangles, stats.straddlingTriangles, stats.shadedBaseCells,
+                  stats.baseCells, seconds(start, built), seconds(built, done));
     log::info(summary);
     log::info(referenceStagesSummary(stats));
     log::info("wrote " + options->outPath);
