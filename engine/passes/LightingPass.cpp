@@ -25,19 +25,22 @@ struct LightingData {
 std::vector<glm::ivec4> lightingScatterRegions(const SssPlan& sss) {
     std::vector<glm::ivec4> rects;
     for (const SssSlotPlan& slot : sss.slots) {
-        if (!slot.visible || !sssTechniqueInfo(slot.choice.technique).scattersInLighting()) continue;
+        if (!scattersInLightingPass(slot)) continue;
         rects.insert(rects.end(), slot.regions.begin(), slot.regions.end());
     }
     return disjointCover(rects);
 }
 
 // Whether every submesh of the character scatters in this pass: the draw
-// without that code then leaves the character to the second draw.
+// without that code then leaves the character to the second draw, which
+// covers exactly the slots that scattersInLightingPass names (with SSS off,
+// a slot of the pre-integrated technique is not visible and the first draw
+// lights the character).
 bool onlyScattersInLighting(const SssPlan& sss, size_t character) {
     if (character >= sss.slotsOfCharacter.size() || sss.slotsOfCharacter[character].empty()) return false;
     for (int slot : sss.slotsOfCharacter[character]) {
         const auto found = std::find_if(sss.slots.begin(), sss.slots.end(), [slot](const SssSlotPlan& s) { return s.slot == slot; });
-        if (found == sss.slots.end() || !sssTechniqueInfo(found->choice.technique).scattersInLighting()) return false;
+        if (found == sss.slots.end() || !scattersInLightingPass(*found)) return false;
     }
     return true;
 }

@@ -132,11 +132,11 @@ bool SssPlan::anyVisible() const {
     return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) { return s.visible; });
 }
 
-bool SssPlan::anyScattersInLighting() const {
-    return std::any_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
-        return s.visible && sssTechniqueInfo(s.choice.technique).scattersInLighting();
-    });
+bool scattersInLightingPass(const SssSlotPlan& slot) {
+    return slot.visible && sssTechniqueInfo(slot.choice.technique).scattersInLighting();
 }
+
+bool SssPlan::anyScattersInLighting() const { return std::any_of(slots.begin(), slots.end(), scattersInLightingPass); }
 
 bool SssPlan::onlyLightingScatters() const {
     return anyVisible() && std::all_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {

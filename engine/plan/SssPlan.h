@@ -64,6 +64,11 @@ struct SssSlotPlan {
     std::vector<glm::ivec4> regions;
 };
 
+// The slot's pixels scatter in the lighting pass: it is visible and its
+// technique scatters there ("preintegrated"). The lighting pass draws them
+// with the program that has that code, and only them.
+bool scattersInLightingPass(const SssSlotPlan& slot);
+
 // The choice a character's SSS submeshes render with, for reports.
 struct CharacterSssChoice {
     bool hasSss = false;      // some submesh has a diffusion profile

@@ -6,7 +6,14 @@
 // is cut by the frame's left edge and whose far heads are a few pixels, in
 // both modes. Leaving one visible character's rectangle out of
 // characterRegions fails it with 2,841 unlit pixels.
+//
+// A character whose every slot scatters in the lighting pass (the
+// pre-integrated technique) is left out of the pass's first draw, and the
+// second draw lights it: only while that slot is visible. With SSS off
+// the technique must change nothing.
 #include "RenderFixture.h"
+
+#include "scene/SceneEnums.h"
 
 #include <gtest/gtest.h>
 
@@ -52,6 +59,33 @@ TEST_F(CharacterRegions, EveryCharacterPixelIsLitAndEveryOtherIsTheBackground) {
         EXPECT_EQ(unlit, 0) << mode;
         EXPECT_EQ(notComposited, 0) << mode;
         EXPECT_EQ(wrongBackground, 0) << mode;
+    }
+}
+
+TEST_F(CharacterRegions, WithSssOffEveryTechniqueGivesTheSameImage) {
+    // SSS off, every technique's image is the plain lighting: the same to the
+    // bit (the same programs draw it). The pre-integrated technique's head
+    // came out black (every diffuse pixel 0) when the lighting pass left it
+    // out of its first draw while SSS off left its slot invisible, so that
+    // the second draw never ran; the bound is exact.
+    constexpr int kWidth = 160;
+    constexpr int kHeight = 90;
+    for (const char* mode : {"ss", "ts"}) {
+        load("default.json", {std::string("mode=") + mode, "sss.enabled=false", "sss.technique=gaussians"});
+        const Image plain = render(Aov::Diffuse, kWidth, kHeight);
+        double plainSum = 0.0;
+        for (const glm::vec4& t : plain.texels) plainSum += t.r;
+        ASSERT_GT(plainSum, 100.0) << mode;  // a lit head, not a black frame
+        for (const auto& technique : kSssTechniques) {
+            load("default.json", {std::string("mode=") + mode, "sss.enabled=false",
+                                  std::string("sss.technique=") + std::string(technique.name)});
+            const Image image = render(Aov::Diffuse, kWidth, kHeight);
+            ASSERT_EQ(image.texels.size(), plain.texels.size());
+            float largest = 0.0f;
+            for (size_t i = 0; i < image.texels.size(); ++i)
+                largest = std::max(largest, glm::length(glm::vec3(image.texels[i]) - glm::vec3(plain.texels[i])));
+            EXPECT_EQ(largest, 0.0f) << mode << " " << technique.name;
+        }
     }
 }
 
