@@ -226,23 +226,25 @@ namespace {
 struct BlackFrame {
     Image object = twoCharacters();
     Image albedo = filled(8, 6, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    Image diffuse = filled(8, 6, glm::vec4(0.0f));
     Image radiance = filled(8, 6, glm::vec4(0.0f));
     Image final = filled(8, 6, glm::vec4(0.0f));
     std::vector<RaySample> rays = agreeingRays();
     float exposure = 1.0f;
 
-    // Character 0 lit at every ray: radiance 0.2 (visible), final 0.3; character 1 unlit and black.
+    // Character 0 lit at every ray: diffuse 0.1, radiance 0.2 (visible), final 0.3; character 1 unlit and black.
     BlackFrame() {
         for (RaySample& r : rays) r.lit = r.character == 0;
         for (int y = 0; y < 6; ++y)
             for (int x = 0; x < 4; ++x) {
+                diffuse.at(x, y) = glm::vec4(0.1f, 0.1f, 0.1f, 1.0f);
                 radiance.at(x, y) = glm::vec4(0.2f, 0.2f, 0.2f, 1.0f);
                 final.at(x, y) = glm::vec4(0.3f, 0.3f, 0.3f, 1.0f);
             }
     }
     InvariantTally check() const {
         InvariantTally t;
-        checkNotBlack(object, albedo, radiance, final, rays, exposure, 2, t);
+        checkNotBlack(object, albedo, diffuse, radiance, final, rays, exposure, 2, t);
         return t;
     }
 };
@@ -269,6 +271,17 @@ TEST(StressInvariants, ALitCharacterWithZeroRadianceIsAViolation) {
     for (glm::vec4& t : g.albedo.texels) t = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     EXPECT_EQ(g.check().violated, 0u);
     EXPECT_EQ(g.check().checked, 0u);
+}
+
+TEST(StressInvariants, ALitCharacterWithSpecularButNoDiffuseLightIsAViolation) {
+    // The pre-integrated head with SSS off once lost its diffuse light while
+    // its specular (LEAN) still showed: radiance > 0, diffuse 0.
+    BlackFrame f;
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 4; ++x) f.diffuse.at(x, y) = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    EXPECT_EQ(f.check().violated, 1u);
+    f.diffuse.at(1, 3).r = 1e-4f;  // one pixel with diffuse light is enough
+    EXPECT_EQ(f.check().violated, 0u);
 }
 
 TEST(StressInvariants, ABlackToneMappedPixelOverVisibleRadianceIsAViolation) {

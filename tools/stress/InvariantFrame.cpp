@@ -130,7 +130,7 @@ Result<InvariantReport> checkFrameInvariants(Renderer& renderer, const Scene& sc
         }
         checkEnergy(energy, report[Invariant::Energy]);
     }
-    checkNotBlack(f.object, f.albedo, f.radiance, f.final, rays, scene.settings.exposure, characters,
+    checkNotBlack(f.object, f.albedo, f.diffuse, f.radiance, f.final, rays, scene.settings.exposure, characters,
                   report[Invariant::Black]);
     return report;
 }

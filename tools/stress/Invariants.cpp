@@ -146,10 +146,11 @@ void checkEnergy(const EnergyInputs& in, InvariantTally& tally) {
     }
 }
 
-void checkNotBlack(const Image& object, const Image& albedo, const Image& radiance, const Image& final,
+void checkNotBlack(const Image& object, const Image& albedo, const Image& diffuse, const Image& radiance, const Image& final,
                    const std::vector<RaySample>& rays, float exposure, int characters, InvariantTally& tally) {
     std::vector<int> litRays(size_t(characters), 0);
     std::vector<float> brightest(size_t(characters), 0.0f);
+    std::vector<float> brightestDiffuse(size_t(characters), 0.0f);
     for (const RaySample& ray : rays) {
         if (!ray.lit || ray.ambiguous || ray.character < 0 || ray.character >= characters) continue;
         if (objectAt(object, ray.x, ray.y) != ray.character) continue;
@@ -157,6 +158,8 @@ void checkNotBlack(const Image& object, const Image& albedo, const Image& radian
         ++litRays[size_t(ray.character)];
         float& b = brightest[size_t(ray.character)];
         b = std::max(b, maxChannel(radiance.at(ray.x, ray.y)));
+        float& d = brightestDiffuse[size_t(ray.character)];
+        d = std::max(d, maxChannel(diffuse.at(ray.x, ray.y)));
     }
     for (int c = 0; c < characters; ++c) {
         if (litRays[size_t(c)] < kMinLitRays) continue;
@@ -164,6 +167,9 @@ void checkNotBlack(const Image& object, const Image& albedo, const Image& radian
         if (!(brightest[size_t(c)] > 0.0f))
             tally.violation(format("character %g: %g rays find it lit, but its radiance there is at most %g", c,
                                    litRays[size_t(c)], brightest[size_t(c)]));
+        else if (!(brightestDiffuse[size_t(c)] > 0.0f))
+            tally.violation(format("character %g: %g rays find it lit, but its diffuse light there is at most %g", c,
+                                   litRays[size_t(c)], brightestDiffuse[size_t(c)]));
     }
     // ACES (Narkowicz) of 0.01 is 0.0038 linear, sRGB 0.049 = 12.5/255: far above 8-bit black.
     for (int y = 0; y < radiance.height; ++y) {

@@ -128,11 +128,14 @@ std::vector<glm::vec3> largestBlurInput(const Image& irradiance, const Image& tr
 
 // 3: (a) a character with kMinLitRays or more rays predicted lit, on pixels
 // where the engine shows that character with albedo > 0, has radiance > 0 at
-// one of them at least; (b) where radiance x exposure reaches kVisibleRadiance
-// in a channel, the tone-mapped frame is not 8-bit black.
+// one of them at least, and diffuse light > 0 at one of them at least (a
+// character whose diffuse light is lost still shows its specular: the
+// pre-integrated head with SSS off once came out so); (b) where radiance x
+// exposure reaches kVisibleRadiance in a channel, the tone-mapped frame is
+// not 8-bit black.
 constexpr int kMinLitRays = 2;
 constexpr float kVisibleRadiance = 0.01f;
-void checkNotBlack(const Image& object, const Image& albedo, const Image& radiance, const Image& final,
+void checkNotBlack(const Image& object, const Image& albedo, const Image& diffuse, const Image& radiance, const Image& final,
                    const std::vector<RaySample>& rays, float exposure, int characters, InvariantTally& tally);
 
 // 4: on pixels at least kSsTsInteriorPx from any other id (interior of the
