@@ -8,14 +8,24 @@
 
 namespace dermis {
 
+WeldedPoints weldByPosition(const std::vector<glm::vec3>& points) {
+    std::map<std::array<float, 3>, uint32_t> welded;
+    WeldedPoints out;
+    out.ids.resize(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        const glm::vec3& p = points[i];
+        out.ids[i] = welded.emplace(std::array<float, 3>{p.x, p.y, p.z}, uint32_t(welded.size())).first->second;
+    }
+    out.count = welded.size();
+    return out;
+}
+
 bool isClosedOutward(const MeshData& mesh) {
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) return false;
-    std::map<std::array<float, 3>, uint32_t> welded;
-    std::vector<uint32_t> weldedOf(mesh.vertices.size());
-    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const glm::vec3& p = mesh.vertices[v].position;
-        weldedOf[v] = welded.emplace(std::array<float, 3>{p.x, p.y, p.z}, uint32_t(welded.size())).first->second;
-    }
+    std::vector<glm::vec3> positions;
+    positions.reserve(mesh.vertices.size());
+    for (const Vertex& v : mesh.vertices) positions.push_back(v.position);
+    const std::vector<uint32_t> weldedOf = weldByPosition(positions).ids;
     std::unordered_map<uint64_t, int> directedEdges;
     double sixVolume = 0.0;
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {

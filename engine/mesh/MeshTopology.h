@@ -4,7 +4,19 @@
 
 #include "mesh/Mesh.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace dermis {
+
+// Points welded by exact position (bit-equal coordinates, as seams and
+// flat-shaded faces duplicate a vertex): ids[i] is point i's welded id,
+// numbered from 0 in the order first seen; count is how many there are.
+struct WeldedPoints {
+    std::vector<uint32_t> ids;
+    size_t count = 0;
+};
+WeldedPoints weldByPosition(const std::vector<glm::vec3>& points);
 
 // True when, with vertices welded by exact position (seams and flat-shaded
 // faces duplicate them), every non-degenerate triangle edge (a, b) appears

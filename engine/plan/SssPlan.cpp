@@ -140,7 +140,7 @@ bool SssPlan::anyScattersInLighting() const { return std::any_of(slots.begin(), 
 
 bool SssPlan::onlyLightingScatters() const {
     return anyVisible() && std::all_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
-               return !s.visible || sssTechniqueInfo(s.choice.technique).scattersInLighting();
+               return !s.visible || scattersInLightingPass(s);
            });
 }
 

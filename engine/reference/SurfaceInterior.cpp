@@ -1,10 +1,11 @@
 #include "reference/SurfaceInterior.h"
 
+#include "mesh/MeshTopology.h"
+
 #include <algorithm>
 #include <array>
 #include <map>
 #include <numeric>
-#include <tuple>
 #include <utility>
 
 namespace dermis::reference {
@@ -18,26 +19,6 @@ constexpr std::array<glm::vec3, 3> kParityDirections = {glm::vec3(0.5773f, 0.578
 // pathological mesh); the parity is then taken as it stands.
 constexpr int kMaxCrossings = 256;
 
-struct Welded {
-    std::vector<uint32_t> cornerIds;  // per triangle corner: its welded vertex
-    size_t count = 0;
-};
-
-Welded weldCorners(const CharacterSurface& surface) {
-    Welded welded;
-    std::map<std::tuple<float, float, float>, uint32_t> ids;
-    welded.cornerIds.resize(3 * surface.triangleCount());
-    for (size_t t = 0; t < surface.triangleCount(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const glm::vec3 p = surface.corner(t, k);
-            const auto found = ids.emplace(std::make_tuple(p.x, p.y, p.z), uint32_t(ids.size())).first;
-            welded.cornerIds[3 * t + size_t(k)] = found->second;
-        }
-    }
-    welded.count = ids.size();
-    return welded;
-}
-
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t a) {
     while (parent[a] != a) a = parent[a] = parent[parent[a]];
     return a;
@@ -50,22 +31,26 @@ SurfaceInterior SurfaceInterior::build(const CharacterSurface& surface) {
     interior.mSurface = &surface;
     const size_t triangles = surface.triangleCount();
     interior.mStates.assign(triangles, State::Outside);
-    const Welded welded = weldCorners(surface);
+    std::vector<glm::vec3> corners;
+    corners.reserve(3 * triangles);
+    for (size_t t = 0; t < triangles; ++t)
+        for (int k = 0; k < 3; ++k) corners.push_back(surface.corner(t, k));
+    const WeldedPoints welded = weldByPosition(corners);
 
     // Parts: triangles joined through welded corners.
     std::vector<uint32_t> parent(welded.count);
     std::iota(parent.begin(), parent.end(), 0u);
     for (size_t t = 0; t < triangles; ++t) {
-        const uint32_t a = findRoot(parent, welded.cornerIds[3 * t]);
+        const uint32_t a = findRoot(parent, welded.ids[3 * t]);
         for (int k = 1; k < 3; ++k) {
-            const uint32_t b = findRoot(parent, welded.cornerIds[3 * t + size_t(k)]);
+            const uint32_t b = findRoot(parent, welded.ids[3 * t + size_t(k)]);
             if (a != b) parent[b] = a;
         }
     }
     std::map<uint32_t, uint32_t> partOfRoot;
     interior.mPartOfTriangle.resize(triangles);
     for (size_t t = 0; t < triangles; ++t) {
-        const uint32_t root = findRoot(parent, welded.cornerIds[3 * t]);
+        const uint32_t root = findRoot(parent, welded.ids[3 * t]);
         interior.mPartOfTriangle[t] = partOfRoot.emplace(root, uint32_t(partOfRoot.size())).first->second;
     }
     const size_t parts = partOfRoot.size();
@@ -74,31 +59,25 @@ SurfaceInterior SurfaceInterior::build(const CharacterSurface& surface) {
     std::map<std::pair<uint32_t, uint32_t>, int> edgeUses;
     for (size_t t = 0; t < triangles; ++t) {
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = welded.cornerIds[3 * t + size_t(k)], b = welded.cornerIds[3 * t + size_t((k + 1) % 3)];
+            const uint32_t a = welded.ids[3 * t + size_t(k)], b = welded.ids[3 * t + size_t((k + 1) % 3)];
             ++edgeUses[{std::min(a, b), std::max(a, b)}];
         }
     }
     interior.mPartClosed.assign(parts, 1);
     for (size_t t = 0; t < triangles; ++t) {
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = welded.cornerIds[3 * t + size_t(k)], b = welded.cornerIds[3 * t + size_t((k + 1) % 3)];
+            const uint32_t a = welded.ids[3 * t + size_t(k)], b = welded.ids[3 * t + size_t((k + 1) % 3)];
             if (edgeUses[{std::min(a, b), std::max(a, b)}] != 2) interior.mPartClosed[interior.mPartOfTriangle[t]] = 0;
         }
     }
     if (parts < 2 || interior.closedPartCount() == 0) return interior;  // nothing can be inside anything
 
-    std::vector<glm::vec3> corners;
-    corners.reserve(3 * triangles);
     interior.mPartMinM.assign(parts, glm::vec3(INFINITY));
     interior.mPartMaxM.assign(parts, glm::vec3(-INFINITY));
-    for (size_t t = 0; t < triangles; ++t) {
-        const uint32_t part = interior.mPartOfTriangle[t];
-        for (int k = 0; k < 3; ++k) {
-            const glm::vec3 p = surface.corner(t, k);
-            corners.push_back(p);
-            interior.mPartMinM[part] = glm::min(interior.mPartMinM[part], p);
-            interior.mPartMaxM[part] = glm::max(interior.mPartMaxM[part], p);
-        }
+    for (size_t i = 0; i < corners.size(); ++i) {
+        const uint32_t part = interior.mPartOfTriangle[i / 3];
+        interior.mPartMinM[part] = glm::min(interior.mPartMinM[part], corners[i]);
+        interior.mPartMaxM[part] = glm::max(interior.mPartMaxM[part], corners[i]);
     }
     interior.mAll = std::make_shared<const raytrace::Bvh>(raytrace::Bvh::build(corners));
 

@@ -43,8 +43,10 @@ def anchors(path):
     return result
 
 
+# Every page a reader meets: the README and the chapters and results it links.
+pages = [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]
 link = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
-for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
+for page in pages:
     text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
     for target in link.findall(text):
         if re.match(r"[a-z]+:", target):
@@ -84,7 +86,7 @@ if readme_layers != engine_layers:
 
 # Paths of the tree the docs name must exist; a stem stands for its .h and .cpp;
 # a name with a placeholder (<Name>, *) is a pattern, not a path.
-for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
+for page in pages:
     text = page.read_text(encoding="utf-8")
     for named in sorted(set(re.findall(r"(?<![\w/.-])((?:content|tools|docs|shaders|engine|tests|\.ci)/[\w./<>*-]+)", text))):
         named = named.rstrip(".,:;")
@@ -102,7 +104,7 @@ for source in sorted((root / "tests").rglob("*.cpp")):
     for suite, name in re.findall(r"\bTEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)", source.read_text(encoding="utf-8")):
         test_names.add(f"{suite}.{name}")
 test_names.update(re.findall(r"add_test\(NAME ([\w.]+)", (root / "tests/CMakeLists.txt").read_text(encoding="utf-8")))
-for page in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "docs" / "results").glob("*.md"))]:
+for page in pages:
     text = page.read_text(encoding="utf-8")
     # `Suite.Name`: a capitalised suite that is not a placeholder in capitals (`NAME.R`).
     for cited in sorted(set(re.findall(r"`([A-Z][A-Za-z0-9]*[a-z][A-Za-z0-9]*\.[A-Z*][\w*]*)`", text))):
