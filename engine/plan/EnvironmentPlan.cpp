@@ -1,6 +1,7 @@
 #include "plan/EnvironmentPlan.h"
 
 #include "core/Log.h"
+#include "env/IrradianceMap.h"
 #include "env/RingingFreeSh.h"
 
 #include <cmath>
@@ -57,6 +58,7 @@ std::shared_ptr<const EnvironmentLight> splitEnvironmentLight(std::string source
     const SplitSh split = projectLatLongSplit(light->lit());
     light->mapSh = split.total();
     light->mapSmoothSh = split.smooth;
+    light->irradiance = makeIrradianceMap(light->lit());
     return light;
 }
 

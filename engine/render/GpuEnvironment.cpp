@@ -60,6 +60,7 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
             const PrefilteredEnvironment prefiltered = PrefilteredEnvironment::build(plan.light->lit());
             mMap = uploadLatLong(prefiltered.levels(), "environment: prefiltered map");
             mMapLevels = static_cast<int>(prefiltered.levels().size());
+            mIrradiance = uploadLatLong({plan.light->irradiance}, "environment: irradiance map");
             const Image& base = prefiltered.levels().front();
             mBackground = plan.light->extracted.empty()
                               ? gl::Texture()
@@ -79,11 +80,13 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
         block.intensity = environment.intensity;
         block.lastMipLevel = float(mMapLevels - 1);
         block.skybox = plan.skybox ? 1.0f : 0.0f;
+        block.diffuseMode = float(int(environment.diffuse));
         for (size_t i = 0; i < mAverageAlbedo.size(); ++i) block.averageAlbedo[i / 4][int(i % 4)] = mAverageAlbedo[i];
     }
     glNamedBufferSubData(mUniforms.get(), 0, sizeof block, &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_ENVIRONMENT, mUniforms.get());
     glBindTextureUnit(DERMIS_UNIT_ENVIRONMENT, mMap.get());
+    glBindTextureUnit(DERMIS_UNIT_ENVIRONMENT_IRRADIANCE, mIrradiance.get());
 }
 
 Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, bool animated) {

@@ -8,6 +8,8 @@
 //     from what is left when a dominant light was taken out (the light itself
 //     is a scene light of the frame), so that the specular does not count it
 //     twice; the skybox shows the whole map (background());
+//   - the diffuse irradiance of the same (env/IrradianceMap.h) on unit
+//     DERMIS_UNIT_ENVIRONMENT_IRRADIANCE, made with it;
 //   - each character's per-vertex SH transfer (env/ShTransferCache.h: computed
 //     once, then read from the disk cache), a vertex buffer attached to its
 //     vertex arrays at DERMIS_LOCATION_TRANSFER, only when the occlusion is
@@ -54,6 +56,7 @@ public:
 private:
     gl::Buffer mUniforms;
     gl::Texture mMap;
+    gl::Texture mIrradiance;  // env/IrradianceMap.h, at DERMIS_UNIT_ENVIRONMENT_IRRADIANCE
     gl::Texture mBackground;  // only when the map lit is not the map shown
     std::shared_ptr<const EnvironmentLight> mMapLight;  // what mMap was made from
     int mMapLevels = 0;

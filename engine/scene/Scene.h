@@ -149,7 +149,8 @@ struct Environment {
     bool background = true;        // draw the map behind everything (the skybox pass), else background.colour
     EnvironmentOcclusion occlusion = EnvironmentOcclusion::Transfer;  // what darkens the environment's diffuse light
     EnvironmentSpecular specular = EnvironmentSpecular::Prefiltered;
-    int shBands = kMaxShBands;  // SH bands of the diffuse light, 1..3 (1, 4 or 9 coefficients)
+    EnvironmentDiffuse diffuse = EnvironmentDiffuse::Map;
+    int shBands = kMaxShBands;  // SH bands of the diffuse light, 1..3 (1, 4 or 9 coefficients): diffuse "sh", and the transfer
     // The dominant light (env/DominantLight.h): with Auto, the brightest region
     // whose texels reach extractThreshold x the mean luminance, if compact,
     // lights the frame as a directional light of its size (threshold: a multiple of the mean luminance).

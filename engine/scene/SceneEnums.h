@@ -109,6 +109,17 @@ inline constexpr EnumTable<EnvironmentSpecular, 3> kEnvironmentSpeculars{
       {EnvironmentSpecular::Prefiltered, "prefiltered",
        "the map prefiltered per roughness for the Beckmann lobe, split sum"}}}};
 
+// Where the environment's diffuse light comes from (docs/environment.md,
+// "Diffuse light: the irradiance map"). Occlusion "transfer" darkens either by
+// the vertices' SH transfer: "sh" adds it as L.T, "map" multiplies the map's
+// irradiance by the share of L.T that occlusion leaves.
+enum class EnvironmentDiffuse { Sh = DERMIS_ENV_DIFFUSE_SH, Map = DERMIS_ENV_DIFFUSE_MAP };
+
+inline constexpr EnumTable<EnvironmentDiffuse, 2> kEnvironmentDiffuses{
+    "environment diffuse",
+    {{{EnvironmentDiffuse::Sh, "sh", "nine SH coefficients (Ramamoorthi & Hanrahan 2001): blurs a soft box's terminator"},
+      {EnvironmentDiffuse::Map, "map", "the map's exact cosine-convolved irradiance, read per pixel"}}}};
+
 // Whether the environment's dominant light is taken out of the map
 // (docs/environment.md, "The dominant light", env/DominantLight.h).
 enum class EnvironmentLightExtraction { Off, Auto };
@@ -129,7 +140,7 @@ inline constexpr EnumTable<ToneMap, 4> kToneMaps{
       {ToneMap::Agx, "agx", "AgX: a gentle log curve that desaturates highlights evenly"},
       {ToneMap::None, "none", "linear, clamped to [0, 1]: what a display shows of the radiance as it is"}}}};
 
-static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne() &&
+static_assert(kEnvironmentOcclusions.isOneToOne() && kEnvironmentSpeculars.isOneToOne() && kEnvironmentDiffuses.isOneToOne() &&
                   kEnvironmentLightExtractions.isOneToOne(),
               "every value and every name appears once");
 

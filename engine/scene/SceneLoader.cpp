@@ -424,7 +424,7 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
         return;
     }
     JsonObject object(root.context(), *value, root.pointer("environment"),
-                      {"source", "intensity", "rotation", "background", "occlusion", "specular", "sh_bands",
+                      {"source", "intensity", "rotation", "background", "occlusion", "specular", "diffuse", "sh_bands",
                        "extract_light", "extract_threshold"});
     std::string source;
     object.string("source", source, false);
@@ -433,6 +433,7 @@ void readEnvironment(JsonObject& root, const std::string& sceneFile, Environment
     object.boolean("background", environment.background);
     choice(object, "occlusion", kEnvironmentOcclusions, environment.occlusion);
     choice(object, "specular", kEnvironmentSpeculars, environment.specular);
+    choice(object, "diffuse", kEnvironmentDiffuses, environment.diffuse);
     object.integer("sh_bands", environment.shBands, Range::closed(1, kMaxShBands));
     choice(object, "extract_light", kEnvironmentLightExtractions, environment.extractLight);
     object.number("extract_threshold", environment.extractThreshold,

@@ -159,6 +159,7 @@ Json environmentJson(const Environment& e, const std::string& sceneFile) {
                 {"background", e.background},
                 {"occlusion", name(kEnvironmentOcclusions, e.occlusion)},
                 {"specular", name(kEnvironmentSpeculars, e.specular)},
+                {"diffuse", name(kEnvironmentDiffuses, e.diffuse)},
                 {"sh_bands", e.shBands},
                 {"extract_light", name(kEnvironmentLightExtractions, e.extractLight)},
                 {"extract_threshold", number(e.extractThreshold)}};

@@ -7,10 +7,14 @@
 //     DERMIS_BINDING_ENVIRONMENT) is uploaded once per frame by
 //     render/FrameResources.cpp, which binds the map (with its prefiltered
 //     mips, include/EnvironmentSpecular.glsl) to DERMIS_UNIT_ENVIRONMENT;
-//   - diffuse: environmentIrradiance(N) where nothing occludes, or the
-//     transfer's L.T interpolated from the vertices (transferIrradiance, in a
-//     vertex shader reading DERMIS_LOCATION_TRANSFER); either times
-//     environmentDiffuseShare(m, rho_s) when energy conservation is on;
+//   - diffuse: environmentIrradiance(N) where nothing occludes, or with the
+//     transfer interpolated from the vertices (transferIrradiance, in a
+//     vertex shader reading DERMIS_LOCATION_TRANSFER) transferredIrradiance;
+//     either times environmentDiffuseShare(m, rho_s) when energy conservation
+//     is on. uEnvironment.diffuseMode says where the unoccluded light comes
+//     from: DERMIS_ENV_DIFFUSE_MAP the irradiance map (env/IrradianceMap.h) at
+//     DERMIS_UNIT_ENVIRONMENT_IRRADIANCE, DERMIS_ENV_DIFFUSE_SH the nine
+//     coefficients;
 //   - specular: environmentSpecular(), times specularOcclusion(). The lighting
 //     pass gives it; for pixels whose specular the LEAN lobe gives
 //     (include/LeanLights.glsl) it writes the occlusion instead, and the
@@ -39,6 +43,7 @@
 #include "ShBasis.glsl"
 
 layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
+layout(binding = DERMIS_UNIT_ENVIRONMENT_IRRADIANCE) uniform sampler2D uEnvironmentIrradiance;
 
 #if DERMIS_SH_COEFFICIENTS != 9
 #error "Environment.glsl evaluates bands 0-2: nine coefficients"
@@ -47,6 +52,7 @@ layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
 bool environmentLit() { return DERMIS_ENVIRONMENT == 1 && uEnvironment.lit > 0.5; }
 int environmentOcclusion() { return int(uEnvironment.occlusion + 0.5); }
 int environmentSpecularMode() { return int(uEnvironment.specularMode + 0.5); }
+int environmentDiffuseMode() { return int(uEnvironment.diffuseMode + 0.5); }
 
 // Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
 // 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
@@ -57,13 +63,25 @@ vec3 shIrradiance(vec4 sh[9], vec3 N) {
     for (int i = 0; i < 9; ++i) irradiance += sh[i].rgb * (kShClampedCosine[i] * basis[i]);
     return max(irradiance, vec3(0.0));
 }
-vec3 environmentIrradiance(vec3 N) { return shIrradiance(uEnvironment.sh, N); }
+// The map's exact irradiance at N, bilinear between its texels as
+// env/IrradianceMap.h's sampleIrradianceMap reads it.
+vec3 mapIrradiance(vec3 N) {
+    return textureLod(uEnvironmentIrradiance, latLongUv(mat3(uEnvironment.mapFromWorld) * N), 0.0).rgb *
+           uEnvironment.intensity;
+}
+vec3 environmentIrradiance(vec3 N) {
+    return environmentDiffuseMode() == DERMIS_ENV_DIFFUSE_MAP ? mapIrradiance(N) : shIrradiance(uEnvironment.sh, N);
+}
 
-// Occlusion "transfer": the vertices' L.T of the smooth light (rgb, and the
-// visible share in a) plus the hot, windowed part lit at the normal times
-// that share (env/RingingFreeSh.h: a sun's hot part through the transfer's
-// integrated vectors could take light away).
+// Occlusion "transfer", from transferIrradiance (include/EnvironmentTransfer.glsl):
+//   map: the map's irradiance at N times the share of the light that
+//        occlusion leaves (rgb);
+//   sh:  the vertices' L.T of the smooth light (rgb, and the visible share in
+//        a) plus the hot, windowed part lit at the normal times that share
+//        (env/RingingFreeSh.h: a sun's hot part through the transfer's
+//        integrated vectors could take light away).
 vec3 transferredIrradiance(vec4 transfer, vec3 N) {
+    if (environmentDiffuseMode() == DERMIS_ENV_DIFFUSE_MAP) return mapIrradiance(N) * transfer.rgb;
     return transfer.rgb + shIrradiance(uEnvironment.hotSh, N) * transfer.a;
 }
 

@@ -161,17 +161,20 @@
 #define DERMIS_ENV_SPECULAR_OFF 0
 #define DERMIS_ENV_SPECULAR_SH 1
 #define DERMIS_ENV_SPECULAR_PREFILTERED 2
+#define DERMIS_ENV_DIFFUSE_SH 0   // kEnvironmentDiffuses: nine SH coefficients
+#define DERMIS_ENV_DIFFUSE_MAP 1  // the irradiance map (env/IrradianceMap.h)
 #define DERMIS_SH_COEFFICIENTS 9
 #define DERMIS_LOCATION_TRANSFER 8      // 8, 9, 10: coefficients 0-2, 3-5, 6-8
 #define DERMIS_UNIT_ENVIRONMENT 11
+#define DERMIS_UNIT_ENVIRONMENT_IRRADIANCE 16  // env/IrradianceMap.h, bound with the map
 
-// Units 11-15 above are bound outside the passes (per frame or per draw), so a
+// Units 11-16 above are bound outside the passes (per frame or per draw), so a
 // pass binds its own inputs below 11 or from DERMIS_UNIT_FIRST_PASS_EXTRA up;
 // binding one of them leaves the wrong texture there for the passes after it
 // (the texture-space gather once took unit 11, and the skybox then drew its
 // input instead of the sky). tests/unit/test_texture_units.cpp checks the shaders.
-#define DERMIS_UNIT_FIRST_PASS_EXTRA 16
-#define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 16  // ts_gather.frag: the lighting pass's irradiance
+#define DERMIS_UNIT_FIRST_PASS_EXTRA 17
+#define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 17  // ts_gather.frag: the lighting pass's irradiance
 #define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
 
 // Fresnel reflectance at normal incidence for skin (d'Eon & Luebke 2007, after

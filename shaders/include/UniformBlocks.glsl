@@ -132,7 +132,7 @@ DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
     float intensity;
     float lastMipLevel;  // of the map
     float skybox;        // 1: the map is drawn behind everything
-    float unused0;
+    float diffuseMode;   // DERMIS_ENV_DIFFUSE_*
     float unused1;
     vec4 averageAlbedo[DERMIS_AVERAGE_ALBEDO_SIZE / 4];  // rho_dt(mu, m) averaged 2 int mu dmu, at m = i / (SIZE - 1)
     vec4 hotSh[DERMIS_SH_COEFFICIENTS];  // rgb: sh's hot, windowed part (env/RingingFreeSh.h), which occlusion

@@ -1,15 +1,19 @@
 // The dominant light taken out of an environment (docs/environment.md, "The
 // dominant light") in the frame: it shadows through its own pass, and light
 // added to the map never darkens a pixel, in both SSS modes, with the light
-// taken out and without.
+// taken out and without; and the diffuse light of a soft box against the
+// sphere form factor.
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
 #include "core/Luminance.h"
+#include "env/SphericalHarmonics.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -102,5 +106,64 @@ TEST_F(EnvironmentLightFrame, TheSkysSunBecomesAShadowedLight) {
         render(Aov::Radiance, 64, 36);
         const PassSummary* shadow = pass("shadow:light0(dir)");
         EXPECT_EQ(shadow != nullptr && shadow->executed, std::string(extract) == "auto") << extract;
+    }
+}
+
+// The environment's diffuse light on a convex sphere against a closed form: a
+// map holding one uniform cap of radiance 1 and half-angle 25 degrees towards
+// c, black elsewhere; occlusion none, SSS and energy conservation off, so the
+// diffuse AOV of the albedo-1 sphere is the irradiance. At a pixel whose
+// exact sphere normal lies t from c with the whole cap above its horizon
+// (t <= 65 degrees), E = pi sin^2(25 deg) cos t (the sphere form factor,
+// Snyder 1996), times the drawn cap's solid angle over the exact one.
+// Measured, worst over 4,273 pixels, of E facing the cap: diffuse "map" 0.42%
+// in both modes, "sh" (nine coefficients) 9.0%. The bound, 1.5%, covers the
+// tessellated sphere's normals (E turns by up to 1.6% of its peak per degree
+// of normal here; the white furnace above, where the normal does not matter,
+// holds 0.3%) and the float16 targets; reading the irradiance map half a
+// texel off in the shader (u + 0.5 / 128, a 1.4 degree turn) reads 1.99%
+// and fails.
+TEST_F(EnvironmentLightFrame, ASoftBoxLightsASphereAsTheFormFactorSays) {
+    constexpr double kPi = 3.14159265358979323846;
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(0.5, 0.3, 0.8));
+    const double halfAngle = glm::radians(25.0);
+    const test::CapMap cap = test::capLatLongImage(256, 128, centre, halfAngle, 4);
+    const double facing = kPi * std::sin(halfAngle) * std::sin(halfAngle) * cap.drawnOverExact;
+    const std::string file = saveMap(cap.map, "softbox");
+    for (const char* diffuse : {"map", "sh"}) {
+        for (const char* mode : {"ss", "ts"}) {
+            SCOPED_TRACE(std::string("diffuse ") + diffuse + ", " + mode);
+            std::vector<std::string> settings = sphereUnder(file, mode, "off");
+            settings.push_back(std::string("environment.diffuse=") + diffuse);
+            settings.push_back("sss.enabled=false");
+            settings.push_back("settings.energy_conservation=false");
+            load("furnace.json", settings);
+            constexpr int kWidth = 160, kHeight = 90;
+            const Image image = render(Aov::Diffuse, kWidth, kHeight);
+            const glm::dvec3 eye(0.0, 0.0, 0.4);
+            const double radiusM = 0.1;
+            const double tanHalf = std::tan(glm::radians(double(mScene->camera.verticalFovDeg)) / 2.0);
+            double worst = 0.0;
+            int checked = 0;
+            for (int y = 0; y < kHeight; ++y) {
+                for (int x = 0; x < kWidth; ++x) {
+                    const glm::dvec3 ray = glm::normalize(glm::dvec3((2.0 * (x + 0.5) / kWidth - 1.0) * tanHalf * kWidth / kHeight,
+                                                                     (1.0 - 2.0 * (y + 0.5) / kHeight) * tanHalf, -1.0));
+                    const double b = glm::dot(eye, ray);
+                    const double discriminant = b * b - (glm::dot(eye, eye) - radiusM * radiusM);
+                    if (discriminant <= 0.0) continue;
+                    const glm::dvec3 n = (eye + ray * (-b - std::sqrt(discriminant))) / radiusM;
+                    // Facets: as in the white furnace, the tessellated sphere drifts from the exact one at grazing view.
+                    if (glm::dot(n, -ray) < 0.3 || glm::dot(n, centre) < std::sin(halfAngle)) continue;
+                    worst = std::max(worst, std::abs(image.at(x, y).g - facing * glm::dot(n, centre)) / facing);
+                    ++checked;
+                }
+            }
+            std::printf("soft box, diffuse %s, %s: %d pixels, worst error %.2f%% of E facing it\n", diffuse, mode,
+                        checked, 100.0 * worst);
+            ASSERT_GT(checked, 1000);
+            if (std::string(diffuse) == "map") EXPECT_LT(worst, 0.015);
+            else EXPECT_GT(worst, 0.015) << "nine coefficients blur the box: the bound must tell them apart";
+        }
     }
 }

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -86,6 +87,31 @@ Image latLongImage(int width, int height, const std::function<glm::vec3(const gl
     for (int v = 0; v < height; ++v)
         for (int u = 0; u < width; ++u) map.at(u, v) = glm::vec4(radiance(latLongDirection(u, v, width, height)), 1.0f);
     return map;
+}
+
+CapMap capLatLongImage(int width, int height, const glm::dvec3& centre, double halfAngleRad, int sub) {
+    constexpr double kPi = 3.14159265358979323846;
+    const glm::dvec3 axis = glm::normalize(centre);
+    CapMap cap;
+    cap.map = makeImage(width, height, ColourSpace::Linear);
+    for (int v = 0; v < height; ++v) {
+        for (int u = 0; u < width; ++u) {
+            int inside = 0;
+            for (int j = 0; j < sub; ++j) {
+                for (int i = 0; i < sub; ++i) {
+                    const double phi = 2.0 * kPi * (u + (i + 0.5) / sub) / width;
+                    const double theta = kPi * (v + (j + 0.5) / sub) / height;
+                    const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+                    if (glm::dot(d, axis) >= std::cos(halfAngleRad)) ++inside;
+                }
+            }
+            const float covered = float(inside) / float(sub * sub);
+            cap.map.at(u, v) = glm::vec4(glm::vec3(covered), 1.0f);
+            cap.drawnSolidAngle += covered * latLongTexelSolidAngle(v, width, height);
+        }
+    }
+    cap.drawnOverExact = cap.drawnSolidAngle / (2.0 * kPi * (1.0 - std::cos(halfAngleRad)));
+    return cap;
 }
 
 std::vector<std::string> errorLines(const std::string& stderrText) {

@@ -69,4 +69,15 @@ Image solidImage(int width, int height, float value);
 // texels hold radiance(direction of the texel's centre), alpha 1.
 Image latLongImage(int width, int height, const std::function<glm::vec3(const glm::vec3&)>& radiance);
 
+// A black lat-long map holding one uniform cap of radiance 1, half-angle
+// `halfAngleRad` about `centre` (normalised), each texel the share of its
+// sub x sub samples inside the cap; and the cap's solid angle as drawn,
+// sum of share x texel solid angle, which closed forms are scaled by.
+struct CapMap {
+    Image map;
+    double drawnSolidAngle = 0.0;
+    double drawnOverExact = 1.0;  // drawnSolidAngle / (2 pi (1 - cos halfAngle))
+};
+CapMap capLatLongImage(int width, int height, const glm::dvec3& centre, double halfAngleRad, int sub);
+
 }  // namespace dermis::test

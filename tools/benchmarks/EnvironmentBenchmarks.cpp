@@ -1,7 +1,8 @@
 // What environment light adds to a frame (docs/environment.md): the default
 // head at 640x360 in both modes without an environment, and with the built-in
 // studio under each occlusion (none, ssao, transfer; prefiltered specular and
-// the skybox on). The renderers take turns within each iteration, so that a
+// the skybox on; the diffuse light from the irradiance map), and with the
+// transfer under nine SH coefficients (diffuse "sh") beside it. The renderers take turns within each iteration, so that a
 // slow spell of the shared machine hits them all alike; each frame is the sum
 // of its passes' GPU ms (llvmpipe: CPU time). The transfer is computed (or
 // read from the disk cache) during the warm-up, not timed.
@@ -21,7 +22,7 @@ namespace {
 
 constexpr int kWidth = 640;
 constexpr int kHeight = 360;
-const char* const kVariants[] = {"off", "none", "ssao", "transfer"};
+const char* const kVariants[] = {"off", "none", "ssao", "transfer", "transfer-sh"};
 
 struct EnvironmentCase {
     std::string key;  // "environment/<mode>/<variant>"
@@ -41,7 +42,9 @@ void environmentCost(benchmark::State& state) {
             c.scene->settings.mode = mode.value;
             if (std::string(variant) != "off") {
                 c.scene->environment.source = "studio";
-                c.scene->environment.occlusion = *kEnvironmentOcclusions.parse(variant);
+                const bool sh = std::string(variant) == "transfer-sh";
+                c.scene->environment.occlusion = *kEnvironmentOcclusions.parse(sh ? "transfer" : variant);
+                c.scene->environment.diffuse = sh ? EnvironmentDiffuse::Sh : EnvironmentDiffuse::Map;
             }
             auto renderer = Renderer::create(*c.scene);
             if (!renderer.ok()) {
@@ -73,13 +76,13 @@ void printEnvironmentSummary() {
     std::printf("\nEnvironment light, default head, %dx%d, built-in studio (median frame GPU ms; ratio = against no\n"
                 "environment, same mode; goal: at most 1.10 in screen space):\n",
                 kWidth, kHeight);
-    std::printf("| mode | no environment | occlusion none | ratio | ssao | ratio | transfer | ratio |\n");
-    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    std::printf("| mode | no environment | occlusion none | ratio | ssao | ratio | transfer | ratio | transfer, diffuse sh | ratio |\n");
+    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const auto& mode : kSssModes) {
         const std::string prefix = "environment/" + std::string(mode.name) + "/";
         const double off = r.at(prefix + "off");
         std::printf("| %s | %.1f |", std::string(mode.name).c_str(), off);
-        for (const char* variant : {"none", "ssao", "transfer"}) {
+        for (const char* variant : {"none", "ssao", "transfer", "transfer-sh"}) {
             const double ms = r.at(prefix + variant);
             std::printf(" %.1f | %.3f |", ms, ms / off);
         }

@@ -114,8 +114,11 @@ bool environmentPanel(Scene& scene, EnvironmentEdit& edit) {
     widgets::help(std::string(kEnvironmentOcclusions.description(environment.occlusion)).c_str());
     changed |= widgets::comboEnum("specular", kEnvironmentSpeculars, environment.specular);
     widgets::help(std::string(kEnvironmentSpeculars.description(environment.specular)).c_str());
+    changed |= widgets::comboEnum("diffuse", kEnvironmentDiffuses, environment.diffuse);
+    widgets::help(std::string(kEnvironmentDiffuses.description(environment.diffuse)).c_str());
     changed |= ImGui::SliderInt("SH bands", &environment.shBands, 1, kMaxShBands, "%d", kClamp);
-    widgets::help("Bands of the diffuse light's spherical harmonics: 1, 4 or 9 coefficients.");
+    widgets::help("Bands of the spherical harmonics (1, 4 or 9 coefficients): of the diffuse light with diffuse \"sh\", "
+                  "and of the light the transfer's occlusion is weighed with.");
     changed |= widgets::comboEnum("extract light", kEnvironmentLightExtractions, environment.extractLight);
     widgets::help(std::string(kEnvironmentLightExtractions.description(environment.extractLight)).c_str());
     if (environment.extractLight == EnvironmentLightExtraction::Auto) {
