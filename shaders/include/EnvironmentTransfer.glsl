@@ -19,13 +19,13 @@ layout(location = DERMIS_LOCATION_TRANSFER + 2) in vec3 aTransfer2;
 //   sh:  the environment irradiance L.T (>= 0);
 //   map: the share of the light that occlusion leaves, L.T over the
 //        unoccluded L.T_0 (T_0 the clamped cosine about the vertex normal,
-//        A_l Y_lm(n)), in [0, 1], which include/Environment.glsl multiplies
-//        the map's exact irradiance by. Where the vertex faces away from
-//        nearly all the light the quotient is ill-conditioned; both sides
-//        then take kShareFloor of the mean irradiance pi L_00 Y_00 at the
-//        visible share, so the share tends to a (0.05: a tenth of the
-//        cosine lobe's band-2 ringing, 0.0396 x 4 pi / pi; lower let
-//        band-limited noise through on the dark side).
+//        A_l Y_lm(n)), which include/Environment.glsl multiplies the map's
+//        exact irradiance by. Where the vertex faces away from nearly all
+//        the light the quotient is ill-conditioned: kShareFloor of the mean
+//        irradiance pi L_00 Y_00 is added to both sides (to the numerator at
+//        the visible share a), so the share tends to a there. Clamped to
+//        [0, 1.5], not 1: the rays' noise about 1 on an open vertex would
+//        otherwise only ever darken (docs/environment.md, "Occlusion").
 vec4 transferIrradiance(vec3 objectNormal) {
     const float kUnoccludedT00 = 0.886227;  // pi x Y_00: the transfer of a vertex that sees everything
     const float kShareFloor = 0.05;
