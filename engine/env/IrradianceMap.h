@@ -4,8 +4,9 @@
 //   E(n) = sum over texels of L(w) max(n.w, 0) dw,
 // the cosine convolution that nine SH coefficients only approximate
 // (Ramamoorthi & Hanrahan 2001 bound their error by the clamped cosine's
-// bands past 2; a 44 degree soft box misses it by 4% RMS over a sphere's
-// normals). Stored as a small lat-long map the shaders read bilinearly
+// bands past 2: under one 25 degree soft box they miss a sphere's irradiance
+// by 9% of its peak, EnvironmentLightFrame.ASoftBoxLightsASphereAsTheFormFactorSays).
+// Stored as a small lat-long map the shaders read bilinearly
 // (shaders/include/Environment.glsl, environmentIrradiance).
 //
 // The convolution is brute force over the map's power gathered into the bins

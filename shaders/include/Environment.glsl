@@ -54,15 +54,6 @@ int environmentOcclusion() { return int(uEnvironment.occlusion + 0.5); }
 int environmentSpecularMode() { return int(uEnvironment.specularMode + 0.5); }
 int environmentDiffuseMode() { return int(uEnvironment.diffuseMode + 0.5); }
 
-// Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
-// 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
-vec3 shIrradiance(vec4 sh[9], vec3 N) {
-    float basis[9];
-    shBasis9(N, basis);
-    vec3 irradiance = vec3(0.0);
-    for (int i = 0; i < 9; ++i) irradiance += sh[i].rgb * (kShClampedCosine[i] * basis[i]);
-    return max(irradiance, vec3(0.0));
-}
 // The map's exact irradiance at N, bilinear between its texels as
 // env/IrradianceMap.h's sampleIrradianceMap reads it.
 vec3 mapIrradiance(vec3 N) {

@@ -36,12 +36,9 @@ vec4 transferIrradiance(vec3 objectNormal) {
     irradiance = max(irradiance, vec3(0.0));
     float visible = clamp(t[0] / kUnoccludedT00, 0.0, 1.0);
     if (int(uEnvironment.diffuseMode + 0.5) != DERMIS_ENV_DIFFUSE_MAP) return vec4(irradiance, visible);
-    float basis[9];
-    shBasis9(normalize(objectNormal), basis);
-    vec3 unoccluded = vec3(0.0);
-    for (int i = 0; i < 9; ++i) unoccluded += uObject.environmentSh[i].rgb * (kShClampedCosine[i] * basis[i]);
+    vec3 unoccluded = shIrradiance(uObject.environmentSh, normalize(objectNormal));
     vec3 floorIrradiance = kShareFloor * kUnoccludedT00 * max(uObject.environmentSh[0].rgb, vec3(0.0));
-    vec3 share = (irradiance + floorIrradiance * visible) / max(max(unoccluded, vec3(0.0)) + floorIrradiance, vec3(1e-20));
+    vec3 share = (irradiance + floorIrradiance * visible) / max(unoccluded + floorIrradiance, vec3(1e-20));
     return vec4(clamp(share, 0.0, 1.5), visible);
 }
 

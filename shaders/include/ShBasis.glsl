@@ -1,6 +1,7 @@
 // The real SH basis of bands 0-2 in the order of engine/env/SphericalHarmonics.h
 // (index l^2 + l + m), and the clamped cosine's band factors (Ramamoorthi &
-// Hanrahan 2001, eq. 8), for every shader that evaluates or turns SH.
+// Hanrahan 2001, eq. 8), and the irradiance of SH light, for every shader
+// that evaluates or turns SH.
 #ifndef DERMIS_SH_BASIS_GLSL
 #define DERMIS_SH_BASIS_GLSL
 
@@ -25,6 +26,16 @@ void shBasis9(vec3 d, out float basis[9]) {
     basis[6] = kShBand20 * (3.0 * d.z * d.z - 1.0);
     basis[7] = kShBand2xy * d.x * d.z;
     basis[8] = kShBand22 * (d.x * d.x - d.y * d.y);
+}
+
+// Irradiance of the band-limited light at normal N (Ramamoorthi & Hanrahan
+// 2001, eq. 7-8): sum A_l L_lm Y_lm(N), A = pi, 2 pi / 3, pi / 4.
+vec3 shIrradiance(vec4 sh[9], vec3 N) {
+    float basis[9];
+    shBasis9(N, basis);
+    vec3 irradiance = vec3(0.0);
+    for (int i = 0; i < 9; ++i) irradiance += sh[i].rgb * (kShClampedCosine[i] * basis[i]);
+    return max(irradiance, vec3(0.0));
 }
 
 #endif
