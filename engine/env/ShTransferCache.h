@@ -5,16 +5,11 @@
 // Key: 64-bit FNV-1a over the raw bytes of every vertex's position and
 // normal, the indices, the rays per vertex and kShTransferCacheVersion
 // (bumped whenever the sampling or the file layout changes). Directory:
-// core/CacheDirectory.h.
-// File sh-transfer-<16 hex digits>.bin, native byte order:
-//   magic "DRMSSHT1" (8 bytes), version u32, rays per vertex u32,
-//   vertex count u64, key u64, FNV-1a of the payload u64,
-//   then vertex count x 9 float32 (the transfer, vertex by vertex).
-// A file that fails any check (size, magic, version, count, rays, key,
-// payload hash) is ignored with one warning and recomputed; a directory that
-// cannot be written gives a warning, never an error. Files are written to a
-// temporary name in the same directory and renamed, so a reader never sees
-// half a file.
+// core/CacheDirectory.h. File sh-transfer-<16 hex digits>.bin, laid out as
+// core/CacheFile.h says, whose payload is vertex count x 9 float32 (the
+// transfer, vertex by vertex). A file that fails any check (size, magic,
+// version, key, payload hash) is ignored with one warning and recomputed; a
+// directory that cannot be written gives a warning, never an error.
 
 #include "core/Result.h"
 #include "env/ShTransfer.h"
@@ -26,7 +21,7 @@
 
 namespace dermis {
 
-constexpr uint32_t kShTransferCacheVersion = 1;
+constexpr uint32_t kShTransferCacheVersion = 2;
 
 uint64_t shTransferCacheKey(const MeshData& mesh, int raysPerVertex);
 

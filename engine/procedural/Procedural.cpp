@@ -1,9 +1,9 @@
 #include "procedural/Procedural.h"
 
+#include "procedural/HeadMapsCache.h"
 #include "procedural/ProceduralHead.h"
 #include "procedural/ProceduralRig.h"
 #include "procedural/ProceduralShapes.h"
-#include "procedural/ProceduralTextures.h"
 
 #include <memory>
 #include <mutex>
@@ -16,9 +16,10 @@ constexpr int kHeadNormalSize = 2048;
 
 Model makeHeadModel() {
     HeadMesh head = makeHeadMesh();
+    HeadMaps maps = loadOrBakeHeadMaps(head, kHeadAlbedoSize, kHeadNormalSize);
     Model model;
-    model.materials[0].albedoMap = makeHeadAlbedoMap(head, kHeadAlbedoSize);
-    model.materials[0].normalMap = makeHeadNormalMap(head, kHeadNormalSize);
+    model.materials[0].albedoMap = std::move(maps.albedo);
+    model.materials[0].normalMap = std::move(maps.normal);
     model.mesh = std::move(head.mesh);
     return model;
 }
@@ -35,7 +36,8 @@ std::vector<std::string> proceduralModelNames() { return {"head", "nodding_head"
 
 Result<Model> makeProceduralModel(const std::string& name) {
     if (name == "head" || name == "nodding_head") {
-        // Seconds to generate and deterministic: made once per process, copied after.
+        // Seconds to generate (without the maps cache) and deterministic: made once per
+        // process, copied after.
         static std::mutex sMutex;
         static std::unique_ptr<Model> sHead;
         std::unique_lock<std::mutex> lock(sMutex);

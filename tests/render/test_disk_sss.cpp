@@ -215,6 +215,7 @@ constexpr double kEdgeWidthTolerance = 0.02;
 
 }  // namespace
 
+// ctest: cost=40
 TEST_F(DiskSssEdge, SkinAndBurleyMatchTheirExactEdgeResponses) {
     for (const char* profile : {"skin", "soft"}) {
         for (int samples : {40, 128}) {
@@ -227,6 +228,7 @@ TEST_F(DiskSssEdge, SkinAndBurleyMatchTheirExactEdgeResponses) {
     }
 }
 
+// ctest: cost=40
 TEST_F(DiskSssEdge, ComparisonFailsWhenEveryWidthIsFivePercentOff) {
     for (const char* scale : {"0.95", "1.05"}) {
         const DiskEdge e = renderEdge("soft", {std::string("sss.width_scale=") + scale});

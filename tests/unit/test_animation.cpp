@@ -170,7 +170,7 @@ TEST(Skeleton, ClipDrivesOnlyItsChannels) {
     EXPECT_EQ(pose[0].translation, glm::vec3(1, 0, 0));
 }
 
-TEST(Skinning, BlendsJointMatricesWithTheirInverseBinds) {
+TEST(CpuSkinning, BlendsJointMatricesWithTheirInverseBinds) {
     // Joint 0 at the origin, joint 1 at x = 1 (inverse bind: back by 1),
     // turned 90 degrees about z at its own place. A vertex at x = 2 follows
     // joint 1 alone to (1, 1); half and half lands on the mean of (2, 0) and
@@ -201,7 +201,7 @@ TEST(Skinning, BlendsJointMatricesWithTheirInverseBinds) {
     EXPECT_NEAR(glm::length(s.normals[1]), 1.0f, kTolerance);
 }
 
-TEST(Skinning, MorphTargetsAddTheirWeightedDisplacements) {
+TEST(CpuSkinning, MorphTargetsAddTheirWeightedDisplacements) {
     SkinnedVertices base;
     base.positions = {glm::vec3(0.0f)};
     base.normals = {glm::vec3(0, 0, 1)};
