@@ -98,7 +98,7 @@ void main() {
             environment = vec4(environmentIrradiance(N), occlusion == DERMIS_ENV_OCCLUSION_SSAO ? ambientOcclusion : 1.0);
         }
         if (occlusion == DERMIS_ENV_OCCLUSION_SSAO) environment.rgb *= ambientOcclusion;
-        irradiance += environment.rgb * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
+        irradiance += environment.rgb * (conserveEnergy ? environmentDiffuseShare(N, roughness, rhoS) : vec3(1.0));
         environmentVisibility = specularOcclusion(clamp(dot(N, V), 0.0, 1.0), environment.a, roughness);
         if (keepSpecular) specular += environmentSpecular(uEnergy, N, V, roughness, rhoS) * environmentVisibility;
     }

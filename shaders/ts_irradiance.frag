@@ -71,7 +71,7 @@ void main() {
         int mode = environmentOcclusion();
         vec3 environment = mode == DERMIS_ENV_OCCLUSION_TRANSFER ? transferredIrradiance(vEnvironment, N) : environmentIrradiance(N);
         if (mode == DERMIS_ENV_OCCLUSION_SSAO) environment *= occlusion;
-        irradiance += environment * (conserveEnergy ? environmentDiffuseShare(roughness, rhoS) : 1.0);
+        irradiance += environment * (conserveEnergy ? environmentDiffuseShare(N, roughness, rhoS) : vec3(1.0));
     }
     int lightCount = uFrame.lightCount;
     for (int i = 0; i < lightCount; ++i) {

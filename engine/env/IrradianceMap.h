@@ -18,6 +18,8 @@
 
 #include "core/Image.h"
 
+#include <vector>
+
 namespace dermis {
 
 // Rows of the irradiance map (columns: twice as many), and of the bins its map is gathered into.
@@ -27,6 +29,16 @@ inline constexpr int kIrradianceBinRows = 64;
 // `radiance`: a lat-long map (width = 2 height) of linear radiance.
 // Texel (u, v) of the result holds E at the normal latLongDirection(u, v).
 Image makeIrradianceMap(const Image& radiance, int threads = 0);
+
+// The cosine powers E_k(n) = sum over texels of L(w) max(n.w, 0)^k dw for
+// k = 1 .. kIrradiancePowers (E_1 is makeIrradianceMap's), in the same layout,
+// from the same bins: a bin of power P and first moment M adds
+// P (n.M / P)^k where n.M > 0, exact for k = 1 and, for k > 1, within the
+// spread of cosines over a bin of 2.8 degrees. With a cubic in the cosine
+// they give the diffuse light a specular lobe leaves, per direction
+// (render/GpuEnvironment.h, rhoDtCubicFits).
+inline constexpr int kIrradiancePowers = 4;
+std::vector<Image> makeIrradiancePowerMaps(const Image& radiance, int threads = 0);
 
 // E at normal n read back as the shaders read it: bilinear between texel
 // centres, u wrapping, v clamped to the first and last rows.

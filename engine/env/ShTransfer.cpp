@@ -1,10 +1,12 @@
 #include "env/ShTransfer.h"
 
 #include "core/Hash.h"
+#include "core/Luminance.h"
 #include "raytrace/EmbreeBvh.h"
 #include "raytrace/ParallelFor.h"
 #include "raytrace/Sampling.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dermis {
@@ -44,6 +46,89 @@ Status checkInputs(const MeshData& mesh, int raysPerVertex, int strataPerSide) {
     return success();
 }
 
+// Calls visit(i, direction) for the vertex's rays, in the same order every
+// time: the cosine-weighted directions the class comment describes.
+template <class Visit>
+void forEachTransferRay(size_t vertexIndex, const glm::vec3& normal, int strataPerSide, Visit&& visit) {
+    glm::vec3 tangent, bitangent;
+    orthonormalBasis(normal, tangent, bitangent);
+    const uint32_t seed = lowbias32(uint32_t(vertexIndex) * 0x9e3779b9U + 0x632be5abU);
+    const float turn = 2.0f * kPi * raytrace::unitFloatFromHash(lowbias32(seed));
+    const glm::vec3 turnedTangent = std::cos(turn) * tangent + std::sin(turn) * bitangent;
+    const glm::vec3 turnedBitangent = glm::cross(normal, turnedTangent);
+    int i = 0;
+    for (const glm::vec2& square : raytrace::jitteredGrid(strataPerSide, seed)) {
+        const glm::vec2 disc = raytrace::concentricDisc(square);
+        const float cosine = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));  // Malley's method
+        visit(i++, disc.x * turnedTangent + disc.y * turnedBitangent + cosine * normal);
+    }
+}
+
+// The vertex's unit normal, or false when it has none (no direction to integrate about: no light).
+bool unitNormal(const Vertex& vertex, glm::vec3& normal) {
+    const float normalLength = glm::length(vertex.normal);
+    if (!(normalLength > 0.0f)) return false;
+    normal = vertex.normal / normalLength;
+    return true;
+}
+
+// The luminance of a lat-long map on the six faces of a cube, for lookups by
+// direction without the lat-long's trigonometry (the visible share reads one
+// per ray). Each texel holds the map's texel at its centre direction.
+class LuminanceCube {
+public:
+    static constexpr int kFaceSize = 32;  // 2.8 degrees per texel at a face's centre, like a 128-wide lat-long
+
+    explicit LuminanceCube(const Image& latLong) : mTexels(6 * kFaceSize * kFaceSize) {
+        for (int face = 0; face < 6; ++face)
+            for (int y = 0; y < kFaceSize; ++y)
+                for (int x = 0; x < kFaceSize; ++x) {
+                    const glm::vec2 uv = latLongUv(direction(face, (x + 0.5f) / kFaceSize * 2.0f - 1.0f,
+                                                             (y + 0.5f) / kFaceSize * 2.0f - 1.0f));
+                    const int u = std::clamp(int(uv.x * float(latLong.width)), 0, latLong.width - 1);
+                    const int v = std::clamp(int(uv.y * float(latLong.height)), 0, latLong.height - 1);
+                    mTexels[size_t((face * kFaceSize + y) * kFaceSize + x)] = relativeLuminance(glm::vec3(latLong.at(u, v)));
+                }
+    }
+
+    float at(const glm::vec3& d) const {
+        const glm::vec3 a = glm::abs(d);
+        int face;
+        float s, t;
+        if (a.x >= a.y && a.x >= a.z) {
+            face = d.x > 0.0f ? 0 : 1;
+            s = d.z / a.x;
+            t = d.y / a.x;
+        } else if (a.y >= a.z) {
+            face = d.y > 0.0f ? 2 : 3;
+            s = d.x / a.y;
+            t = d.z / a.y;
+        } else {
+            face = d.z > 0.0f ? 4 : 5;
+            s = d.x / a.z;
+            t = d.y / a.z;
+        }
+        const int x = std::clamp(int((s * 0.5f + 0.5f) * kFaceSize), 0, kFaceSize - 1);
+        const int y = std::clamp(int((t * 0.5f + 0.5f) * kFaceSize), 0, kFaceSize - 1);
+        return mTexels[size_t((face * kFaceSize + y) * kFaceSize + x)];
+    }
+
+private:
+    // The inverse of at()'s face and (s, t) in [-1, 1]^2.
+    static glm::vec3 direction(int face, float s, float t) {
+        switch (face) {
+            case 0: return glm::normalize(glm::vec3(1.0f, t, s));
+            case 1: return glm::normalize(glm::vec3(-1.0f, t, s));
+            case 2: return glm::normalize(glm::vec3(s, 1.0f, t));
+            case 3: return glm::normalize(glm::vec3(s, -1.0f, t));
+            case 4: return glm::normalize(glm::vec3(s, t, 1.0f));
+            default: return glm::normalize(glm::vec3(s, t, -1.0f));
+        }
+    }
+
+    std::vector<float> mTexels;
+};
+
 }  // namespace
 
 Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptions& options) {
@@ -62,6 +147,8 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
     ShTransfer out;
     out.raysPerVertex = options.raysPerVertex;
     out.perVertex.assign(mesh.vertices.size(), ShScalar9{});
+    const size_t words = visibilityWords(options.raysPerVertex);
+    out.visibility.assign(mesh.vertices.size() * words, 0u);
     const std::string label = options.progressLabel.empty()
                                   ? std::string()
                                   : options.progressLabel + " " + std::to_string(mesh.vertices.size()) + " vertices";
@@ -69,28 +156,49 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
         mesh.vertices.size(), options.threads,
         [&](size_t vertexIndex) {
             const Vertex& vertex = mesh.vertices[vertexIndex];
-            const float normalLength = glm::length(vertex.normal);
-            if (!(normalLength > 0.0f)) return;  // no direction to integrate about: no light
-            const glm::vec3 normal = vertex.normal / normalLength;
-            glm::vec3 tangent, bitangent;
-            orthonormalBasis(normal, tangent, bitangent);
-            const uint32_t seed = lowbias32(uint32_t(vertexIndex) * 0x9e3779b9U + 0x632be5abU);
-            const float turn = 2.0f * kPi * raytrace::unitFloatFromHash(lowbias32(seed));
-            const glm::vec3 turnedTangent = std::cos(turn) * tangent + std::sin(turn) * bitangent;
-            const glm::vec3 turnedBitangent = glm::cross(normal, turnedTangent);
+            glm::vec3 normal;
+            if (!unitNormal(vertex, normal)) return;
             const glm::vec3 origin = vertex.position + offset * normal;
+            uint32_t* escaped = out.visibility.data() + vertexIndex * words;
             ShScalar9 sum{};
-            for (const glm::vec2& square : raytrace::jitteredGrid(strataPerSide, seed)) {
-                const glm::vec2 disc = raytrace::concentricDisc(square);
-                const float cosine = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disc, disc)));  // Malley's method
-                const glm::vec3 direction = disc.x * turnedTangent + disc.y * turnedBitangent + cosine * normal;
-                if (bvh.anyHit(raytrace::Ray{origin, direction}, 0.0f, tMax)) continue;
+            forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
+                if (bvh.anyHit(raytrace::Ray{origin, direction}, 0.0f, tMax)) return;
+                escaped[i / 32] |= 1u << (i % 32);
                 const ShScalar9 basis = shBasis(direction);
-                for (size_t i = 0; i < basis.size(); ++i) sum[i] += basis[i];
-            }
+                for (size_t k = 0; k < basis.size(); ++k) sum[k] += basis[k];
+            });
             for (size_t i = 0; i < sum.size(); ++i) out.perVertex[vertexIndex][i] = sum[i] * weightPerRay;
         },
         label);
+    return out;
+}
+
+std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransfer& transfer, const Image& lit,
+                                            const glm::mat3& mapFromObject) {
+    const size_t words = visibilityWords(transfer.raysPerVertex);
+    if (transfer.visibility.size() != mesh.vertices.size() * words || lit.empty()) return transfer.perVertex;
+    const int strataPerSide = int(std::lround(std::sqrt(double(transfer.raysPerVertex))));
+    // A_l of the clamped cosine (Ramamoorthi & Hanrahan 2001), per coefficient.
+    constexpr float kBand1 = 2.0f * kPi / 3.0f;
+    constexpr float kBand2 = kPi / 4.0f;
+    const float clampedCosine[9] = {kPi, kBand1, kBand1, kBand1, kBand2, kBand2, kBand2, kBand2, kBand2};
+    const LuminanceCube luminance(lit);
+    std::vector<ShScalar9> out(mesh.vertices.size(), ShScalar9{});
+    raytrace::parallelFor(mesh.vertices.size(), 0, [&](size_t vertexIndex) {
+        glm::vec3 normal;
+        if (!unitNormal(mesh.vertices[vertexIndex], normal)) return;
+        const uint32_t* escaped = transfer.visibility.data() + vertexIndex * words;
+        double visible = 0.0;
+        double all = 0.0;
+        forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
+            const double radiance = luminance.at(mapFromObject * direction);
+            all += radiance;
+            if (escaped[i / 32] & (1u << (i % 32))) visible += radiance;
+        });
+        const float share = all > 0.0 ? float(visible / all) : 0.0f;
+        const ShScalar9 basis = shBasis(normal);
+        for (size_t k = 0; k < basis.size(); ++k) out[vertexIndex][k] = share * clampedCosine[k] * basis[k];
+    });
     return out;
 }
 

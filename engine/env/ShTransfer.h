@@ -19,12 +19,14 @@
 // vertex index. Every random number comes from the vertex and sample index,
 // so the result is the same for any thread count.
 
+#include "core/Image.h"
 #include "core/Result.h"
 #include "env/SphericalHarmonics.h"
 #include "mesh/Mesh.h"
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,11 +44,16 @@ struct ShTransferOptions {
     std::string progressLabel = "SH transfer";   // empty: no progress bar
 };
 
-// One transfer vector per vertex, in the mesh's vertex order.
+// One transfer vector per vertex, in the mesh's vertex order, and which of
+// the vertex's rays escaped: visibilityWords(raysPerVertex) words per
+// vertex, bit i of the ray forEachTransferRay gives as i.
 struct ShTransfer {
     std::vector<ShScalar9> perVertex;
+    std::vector<uint32_t> visibility;
     int raysPerVertex = 0;
 };
+
+inline size_t visibilityWords(int raysPerVertex) { return (size_t(raysPerVertex) + 31) / 32; }
 
 // The mesh's own occlusion only. Errors: raysPerVertex not a positive
 // square, an index outside the vertex list, an index count that is not a
@@ -60,6 +67,20 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
 // pose's occlusion, turned with the vertex (docs/environment.md measures the
 // error).
 ShScalar9 rotateTransfer(const ShScalar9& transfer, const glm::mat3& rotation);
+
+// The transfer for one map, with the occlusion exact instead of band-limited
+// (docs/environment.md, "The visible share"): per vertex
+//   s = sum_i V_i L(w_i) / sum_i L(w_i)
+// over the vertex's own cosine-weighted rays (their escapes recorded in
+// transfer.visibility), L the luminance of `lit` (the map the diffuse light is
+// made from) looked up in the direction mapFromObject w_i, and the result is
+// s times the unoccluded transfer A_l Y_lm(N). Lit by the same map, L . T is
+// then s times the vertex's unoccluded irradiance: nine coefficients carry
+// the whole occlusion of that map, where the SH transfer spreads an
+// occluder's shadow over directions it does not hide. Returns the transfer
+// unchanged when it holds no visibility.
+std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransfer& transfer, const Image& lit,
+                                            const glm::mat3& mapFromObject);
 
 // The rotation of a linear-blend skinning matrix: the orthonormal factor of
 // its upper 3 x 3's polar decomposition (the closest rotation to it; Higham

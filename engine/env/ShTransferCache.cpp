@@ -38,8 +38,11 @@ Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTra
     if (!dir.empty()) load.cacheFile = dir / shTransferCacheFileName(key);
     load.transfer.raysPerVertex = options.raysPerVertex;
     load.transfer.perVertex.resize(mesh.vertices.size());
-    const size_t payloadBytes = load.transfer.perVertex.size() * sizeof(ShScalar9);
-    if (readCacheFileOrWarn(load.cacheFile, kShTransferFile, key, {{load.transfer.perVertex.data(), payloadBytes}})) {
+    load.transfer.visibility.resize(mesh.vertices.size() * visibilityWords(options.raysPerVertex));
+    const size_t transferBytes = load.transfer.perVertex.size() * sizeof(ShScalar9);
+    const size_t visibilityBytes = load.transfer.visibility.size() * sizeof(uint32_t);
+    if (readCacheFileOrWarn(load.cacheFile, kShTransferFile, key,
+                            {{load.transfer.perVertex.data(), transferBytes}, {load.transfer.visibility.data(), visibilityBytes}})) {
         load.fromCache = true;
         return load;
     }
@@ -56,7 +59,8 @@ Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTra
          << mesh.vertices.size() << " vertices x " << options.raysPerVertex << " rays in " << seconds << " s ("
          << (seconds > 0.0 ? rays / seconds * 1e-6 : 0.0) << " Mrays/s)";
     log::info(line.str());
-    writeCacheFileOrWarn(load.cacheFile, kShTransferFile, key, {{load.transfer.perVertex.data(), payloadBytes}});
+    writeCacheFileOrWarn(load.cacheFile, kShTransferFile, key,
+                         {{load.transfer.perVertex.data(), transferBytes}, {load.transfer.visibility.data(), visibilityBytes}});
     return load;
 }
 

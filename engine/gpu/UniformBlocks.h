@@ -34,7 +34,8 @@ static_assert(offsetof(ObjectBlock, roughness) == 2 * 64 + 12 && offsetof(Object
                   offsetof(ObjectBlock, hasThicknessMap) == 2 * 64 + 4 * 16 + 8 &&
                   offsetof(ObjectBlock, environmentSh) == 2 * 64 + 5 * 16,
               "named fields sit at their std140 offsets");
-static_assert(sizeof(EnvironmentBlock) == 64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4) * 16,
+static_assert(sizeof(EnvironmentBlock) ==
+                  64 + (2 * DERMIS_SH_COEFFICIENTS + 2 + DERMIS_AVERAGE_ALBEDO_SIZE / 4 + DERMIS_AVERAGE_ALBEDO_SIZE) * 16,
               "EnvironmentBlock must match std140");
 static_assert(sizeof(SssEdgeParams) == 16, "SssEdgeParams is one std140 group");
 static_assert(sizeof(SssBlurBlock) == (DERMIS_MAX_BLUR_TAPS + 3) * 16, "SssBlurBlock must match std140");

@@ -58,7 +58,7 @@ std::shared_ptr<const EnvironmentLight> splitEnvironmentLight(std::string source
     const SplitSh split = projectLatLongSplit(light->lit());
     light->mapSh = split.total();
     light->mapSmoothSh = split.smooth;
-    light->irradiance = makeIrradianceMap(light->lit());
+    light->irradiancePowers = makeIrradiancePowerMaps(light->lit());
     return light;
 }
 

@@ -33,7 +33,7 @@ struct EnvironmentLight {
     Image remainder;                          // the map without them; empty when nothing was taken out
     Sh9 mapSh;                                // projectLatLongWithoutRinging(lit()): smooth + hot
     Sh9 mapSmoothSh;                          // its smooth part alone (env/RingingFreeSh.h)
-    Image irradiance;                         // makeIrradianceMap(lit()): the exact diffuse light per normal
+    std::vector<Image> irradiancePowers;      // makeIrradiancePowerMaps(lit()): [0] the exact diffuse light per normal
 
     // What the diffuse and specular environment light is made from.
     const Image& lit() const { return extracted.empty() ? map : remainder; }

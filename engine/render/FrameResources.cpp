@@ -74,7 +74,10 @@ Status FrameResources::prepare(const FramePlan& plan, SceneGeometry& geometry) {
     if (plan.environment.transfer) {
         for (size_t c = 0; c < plan.characters.size(); ++c) {
             const bool animated = !mGpuScene.characters()[c].rig.empty();
-            if (const Status made = mEnvironment.prepareTransfer(c, geometry.mesh(c), animated); !made.ok()) return made;
+            if (const Status made = mEnvironment.prepareTransfer(c, geometry.mesh(c), animated, plan.environment,
+                                                                 glm::mat3(plan.characters[c].worldFromObject));
+                !made.ok())
+                return made;
             GpuEnvironment::attachTransfer(mGpuScene.characters()[c].mesh.vertexArray.get(), mEnvironment.drawnTransfer(c));
         }
     }

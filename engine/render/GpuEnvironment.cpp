@@ -6,10 +6,43 @@
 #include "core/Log.h"
 #include "gl/TexturePool.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace dermis {
 namespace {
+
+// The visible share reads the lit map at this width (by area): 256 rays per
+// vertex meet texels of 2.8 degrees, so a small bright texel adds no more
+// noise to the share than to the rays' own sampling.
+constexpr int kShareMapWidth = 128;
+
+// Lat-long maps of one size stacked down one RGBA32F texture, each between
+// copies of its first and last rows, so that a bilinear read inside one never
+// reaches the next (the v clamp of a texture of its own); u repeats
+// (shaders/include/Environment.glsl, irradiancePower).
+gl::Texture uploadStackedLatLong(const std::vector<Image>& maps, std::string_view label) {
+    const int width = maps.front().width;
+    const int tile = maps.front().height + 2;
+    std::vector<glm::vec4> texels;
+    texels.reserve(size_t(width) * size_t(tile) * maps.size());
+    for (const Image& map : maps) {
+        for (int row = -1; row <= map.height; ++row) {
+            const int source = std::clamp(row, 0, map.height - 1);
+            texels.insert(texels.end(), map.texels.begin() + ptrdiff_t(source) * width,
+                          map.texels.begin() + ptrdiff_t(source + 1) * width);
+        }
+    }
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D, label);
+    const auto height = GLsizei(tile * int(maps.size()));
+    glTextureStorage2D(texture.get(), 1, GL_RGBA32F, width, height);
+    glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    return texture;
+}
 
 // An RGBA16F lat-long texture of `levels` (level 0 first), u repeating, v clamped, trilinear.
 gl::Texture uploadLatLong(const std::vector<Image>& levels, std::string_view label) {
@@ -47,10 +80,30 @@ std::vector<float> hemisphericalAverageAlbedo(const std::vector<float>& energyTa
     return average;
 }
 
+std::vector<glm::vec4> rhoDtCubicFits(const std::vector<float>& energyTable, int size) {
+    std::vector<glm::vec4> fits(size_t(size), glm::vec4(0.0f));
+    for (int row = 0; row < size; ++row) {
+        glm::dmat4 normal(0.0);  // sum w p p^T
+        glm::dvec4 right(0.0);   // sum w p rho
+        for (int column = 0; column < size; ++column) {
+            const double mu = double(column) / (size - 1);
+            const double trapezoid = (column == 0 || column == size - 1 ? 0.5 : 1.0) / (size - 1);
+            const double weight = mu * trapezoid;
+            const glm::dvec4 powers(1.0, mu, mu * mu, mu * mu * mu);
+            normal += weight * glm::outerProduct(powers, powers);
+            right += weight * powers * double(energyTable[size_t(row * size + column)]);
+        }
+        fits[size_t(row)] = glm::vec4(glm::inverse(normal) * right);
+    }
+    return fits;
+}
+
 GpuEnvironment::GpuEnvironment() {
     mUniforms = gl::createBuffer("environment: EnvironmentBlock");
     glNamedBufferStorage(mUniforms.get(), sizeof(gpu::EnvironmentBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    mAverageAlbedo = hemisphericalAverageAlbedo(makeEnergyTable(kEnergyTableSize), kEnergyTableSize);
+    const std::vector<float> energyTable = makeEnergyTable(kEnergyTableSize);
+    mAverageAlbedo = hemisphericalAverageAlbedo(energyTable, kEnergyTableSize);
+    mRhoDtFits = rhoDtCubicFits(energyTable, kEnergyTableSize);
 }
 
 void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
@@ -60,7 +113,8 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
             const PrefilteredEnvironment prefiltered = PrefilteredEnvironment::build(plan.light->lit());
             mMap = uploadLatLong(prefiltered.levels(), "environment: prefiltered map");
             mMapLevels = static_cast<int>(prefiltered.levels().size());
-            mIrradiance = uploadLatLong({plan.light->irradiance}, "environment: irradiance map");
+            mIrradiance = uploadStackedLatLong(plan.light->irradiancePowers, "environment: irradiance map and cosine powers");
+            mShareMap = resampleLatLongByArea(plan.light->lit(), kShareMapWidth, kShareMapWidth / 2);
             const Image& base = prefiltered.levels().front();
             mBackground = plan.light->extracted.empty()
                               ? gl::Texture()
@@ -82,6 +136,7 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
         block.skybox = plan.skybox ? 1.0f : 0.0f;
         block.diffuseMode = float(int(environment.diffuse));
         for (size_t i = 0; i < mAverageAlbedo.size(); ++i) block.averageAlbedo[i / 4][int(i % 4)] = mAverageAlbedo[i];
+        for (size_t i = 0; i < mRhoDtFits.size(); ++i) block.rhoDtFits[i] = mRhoDtFits[i];
     }
     glNamedBufferSubData(mUniforms.get(), 0, sizeof block, &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_ENVIRONMENT, mUniforms.get());
@@ -89,16 +144,42 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
     glBindTextureUnit(DERMIS_UNIT_ENVIRONMENT_IRRADIANCE, mIrradiance.get());
 }
 
-Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, bool animated) {
-    if (character < mTransfers.size() && mTransfers[character].rest.isValid()) return success();
-    auto loaded = loadOrComputeShTransfer(mesh);
-    if (!loaded.ok()) return loaded.error();
+Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, bool animated, const EnvironmentPlan& plan,
+                                       const glm::mat3& worldFromObject) {
     if (mTransfers.size() <= character) mTransfers.resize(character + 1);
-    const std::vector<ShScalar9>& perVertex = loaded->transfer.perVertex;
-    const auto bytes = static_cast<GLsizeiptr>(perVertex.size() * sizeof(ShScalar9));
     Transfer& transfer = mTransfers[character];
+    if (transfer.traced.perVertex.empty()) {
+        auto loaded = loadOrComputeShTransfer(mesh);
+        if (!loaded.ok()) return loaded.error();
+        transfer.traced = std::move(loaded->transfer);
+    }
+    // The rotation part of the character's transform (its columns' lengths are the scale).
+    glm::mat3 objectRotation = worldFromObject;
+    for (int c = 0; c < 3; ++c) objectRotation[c] = glm::normalize(objectRotation[c]);
+    const glm::mat3 mapFromObject = glm::transpose(plan.worldFromMap) * objectRotation;
+    const EnvironmentLight* light = plan.light.get();
+    const bool current = transfer.rest.isValid() && light == transfer.light && mapFromObject == transfer.mapFromObject;
+    if (current || (transfer.rest.isValid() && animated)) return success();
+
+    const Transfer* same = nullptr;
+    for (const Transfer& other : mTransfers)
+        if (&other != &transfer && other.mesh == &mesh && other.light == light && other.mapFromObject == mapFromObject &&
+            !other.uploaded.empty())
+            same = &other;
+    transfer.uploaded = same ? same->uploaded
+                        : light ? visibleShareTransfer(mesh, transfer.traced, mShareMap, mapFromObject)
+                                : transfer.traced.perVertex;
+    transfer.light = light;
+    transfer.mapFromObject = mapFromObject;
+    transfer.mesh = &mesh;
+    const std::vector<ShScalar9>& perVertex = transfer.uploaded;
+    const auto bytes = static_cast<GLsizeiptr>(perVertex.size() * sizeof(ShScalar9));
+    if (transfer.rest.isValid()) {
+        glNamedBufferSubData(transfer.rest.get(), 0, bytes, perVertex.data());
+        return success();
+    }
     transfer.rest = gl::createBuffer("environment: SH transfer of character " + std::to_string(character));
-    glNamedBufferStorage(transfer.rest.get(), bytes, perVertex.data(), 0);
+    glNamedBufferStorage(transfer.rest.get(), bytes, perVertex.data(), GL_DYNAMIC_STORAGE_BIT);
     if (animated) {
         // The rest pose's until the skinning pass turns it (PoseCache re-skins once the transfer exists).
         transfer.posed = gl::createBuffer("environment: posed SH transfer of character " + std::to_string(character));

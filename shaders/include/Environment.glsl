@@ -43,7 +43,17 @@
 #include "ShBasis.glsl"
 
 layout(binding = DERMIS_UNIT_ENVIRONMENT) uniform sampler2D uEnvironmentMap;
+// The cosine powers E_1 .. E_4 (env/IrradianceMap.h; E_1 the irradiance),
+// stacked down one texture, each between copies of its first and last rows
+// so that bilinear reads stay inside it (render/GpuEnvironment.cpp).
 layout(binding = DERMIS_UNIT_ENVIRONMENT_IRRADIANCE) uniform sampler2D uEnvironmentIrradiance;
+
+// E_(k+1) at lat-long coordinates uv.
+vec3 irradiancePower(vec2 uv, int k) {
+    float rows = float(textureSize(uEnvironmentIrradiance, 0).y);
+    float tile = rows / 4.0;
+    return textureLod(uEnvironmentIrradiance, vec2(uv.x, (float(k) * tile + 1.0 + uv.y * (tile - 2.0)) / rows), 0.0).rgb;
+}
 
 #if DERMIS_SH_COEFFICIENTS != 9
 #error "Environment.glsl evaluates bands 0-2: nine coefficients"
@@ -57,8 +67,7 @@ int environmentDiffuseMode() { return int(uEnvironment.diffuseMode + 0.5); }
 // The map's exact irradiance at N, bilinear between its texels as
 // env/IrradianceMap.h's sampleIrradianceMap reads it.
 vec3 mapIrradiance(vec3 N) {
-    return textureLod(uEnvironmentIrradiance, latLongUv(mat3(uEnvironment.mapFromWorld) * N), 0.0).rgb *
-           uEnvironment.intensity;
+    return irradiancePower(latLongUv(mat3(uEnvironment.mapFromWorld) * N), 0) * uEnvironment.intensity;
 }
 vec3 environmentIrradiance(vec3 N) {
     return environmentDiffuseMode() == DERMIS_ENV_DIFFUSE_MAP ? mapIrradiance(N) : shIrradiance(uEnvironment.sh, N);
@@ -76,16 +85,28 @@ vec3 transferredIrradiance(vec4 transfer, vec3 N) {
     return transfer.rgb + shIrradiance(uEnvironment.hotSh, N) * transfer.a;
 }
 
-// The share of the environment's (near uniform) light the specular lobe
-// leaves to the diffuse: 1 - rho_s rho_avg(m), rho_avg the cosine-weighted
-// hemispherical mean of rho_dt (Chappuis 2011 §2.6 applied per direction and
-// averaged; exact for a uniform environment, the white-furnace case).
-float environmentDiffuseShare(float m, float rhoS) {
+// The share of the environment's light the specular lobe leaves to the
+// diffuse (Chappuis 2011 §2.6 applied per direction, as the CPU reference
+// does): sum L cos (1 - rho_s rho_dt(cos, m)) dw over sum L cos dw.
+//   map: rho_dt(cos, m) as a cubic in cos (EnvironmentBlock.rhoDtFits) over
+//        the map's cosine powers E_1 .. E_4 at N: 1 - rho_s sum_k c_k E_(k+1) / E_1;
+//   sh:  1 - rho_s rho_avg(m), rho_avg the cosine-weighted hemispherical
+//        mean of rho_dt: the light taken as uniform (exact for a uniform map,
+//        the white furnace, where the map's form gives the same).
+vec3 environmentDiffuseShare(vec3 N, float m, float rhoS) {
     float x = clamp(m, 0.0, 1.0) * float(DERMIS_AVERAGE_ALBEDO_SIZE - 1);
     int i = min(int(x), DERMIS_AVERAGE_ALBEDO_SIZE - 2);
+    float f = x - float(i);
+    if (environmentDiffuseMode() == DERMIS_ENV_DIFFUSE_MAP) {
+        vec4 c = mix(uEnvironment.rhoDtFits[i], uEnvironment.rhoDtFits[i + 1], f);
+        vec2 uv = latLongUv(mat3(uEnvironment.mapFromWorld) * N);
+        vec3 e1 = irradiancePower(uv, 0);
+        vec3 taken = c.x * e1 + c.y * irradiancePower(uv, 1) + c.z * irradiancePower(uv, 2) + c.w * irradiancePower(uv, 3);
+        return clamp(1.0 - rhoS * taken / max(e1, vec3(1e-8)), 0.0, 1.0);
+    }
     float a = uEnvironment.averageAlbedo[i / 4][i % 4];
     float b = uEnvironment.averageAlbedo[(i + 1) / 4][(i + 1) % 4];
-    return clamp(1.0 - rhoS * mix(a, b, x - float(i)), 0.0, 1.0);
+    return vec3(clamp(1.0 - rhoS * mix(a, b, f), 0.0, 1.0));
 }
 
 // Specular occlusion from a cosine-weighted visibility (Lagarde & de Rousiers

@@ -137,6 +137,7 @@ DERMIS_BLOCK(EnvironmentBlock, DERMIS_BINDING_ENVIRONMENT) {
     vec4 averageAlbedo[DERMIS_AVERAGE_ALBEDO_SIZE / 4];  // rho_dt(mu, m) averaged 2 int mu dmu, at m = i / (SIZE - 1)
     vec4 hotSh[DERMIS_SH_COEFFICIENTS];  // rgb: sh's hot, windowed part (env/RingingFreeSh.h), which occlusion
                                          // "transfer" lights at the normal, times the vertices' visible share
+    vec4 rhoDtFits[DERMIS_AVERAGE_ALBEDO_SIZE];  // rho_dt(mu, m) ~ c0 + c1 mu + c2 mu^2 + c3 mu^3 at m = i / (SIZE - 1)
 } DERMIS_BLOCK_END(uEnvironment)
 
 // Per character, indexed by object id (G-buffer albedo alpha x 255).

@@ -3,6 +3,8 @@
 // cache, rotation, and the skinned-pose approximation on the bending
 // cylinder (tests/support/TestContent.h).
 #include "TestContent.h"
+#include "TestSupport.h"
+#include "core/Luminance.h"
 #include "anim/Rig.h"
 #include "env/EnvironmentMap.h"
 #include "env/ShTransfer.h"
@@ -12,6 +14,7 @@
 #include "raytrace/ParallelFor.h"
 
 #include <gtest/gtest.h>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <unistd.h>
 
@@ -444,4 +447,89 @@ TEST(ShTransfer, SkinnedCylinderBindTransferTurnedWithItsVertices) {
     EXPECT_LT(turned.rms, 0.35);
     EXPECT_LT(turned.worst, 1.3f);
     EXPECT_LT(turned.rms, 0.7 * unturned.rms);
+}
+
+// ---- the visible share --------------------------------------------------
+
+namespace {
+
+// A vertex on the ground facing up, 0.2 m from a wall that fills the whole
+// half-space x > 0.2 as seen from it (1 km tall and wide): every ray with
+// x > 0 is blocked, every other escapes. The vertex is not on a triangle; the
+// wall is the only geometry.
+MeshData vertexBesideAWall() {
+    MeshData mesh;
+    mesh.name = "vertex beside a wall";
+    Vertex probe;
+    probe.normal = {0.0f, 1.0f, 0.0f};
+    mesh.vertices.push_back(probe);
+    for (const glm::vec3& corner : {glm::vec3(0.2f, 0.0f, -1e3f), glm::vec3(0.2f, 1e3f, -1e3f), glm::vec3(0.2f, 1e3f, 1e3f),
+                                    glm::vec3(0.2f, 0.0f, 1e3f)}) {
+        Vertex v;
+        v.position = corner;
+        v.normal = {-1.0f, 0.0f, 0.0f};
+        mesh.vertices.push_back(v);
+    }
+    mesh.indices = {1, 2, 3, 1, 3, 4};
+    return mesh;
+}
+
+// A map of radiance 1 on the side x > 0 of its own space, 0 on the other.
+Image halfSpaceMap(float sign) {
+    return test::latLongImage(128, 64, [sign](const glm::vec3& d) { return glm::vec3(sign * d.x > 0.0f ? 1.0f : 0.0f); });
+}
+
+// The irradiance L . T over the unoccluded A_l L_lm Y_lm(N), from the band-limited projections.
+float shShare(const Sh9& light, const ShScalar9& transfer, const glm::vec3& normal) {
+    float lit = 0.0f;
+    for (size_t i = 0; i < transfer.size(); ++i) lit += relativeLuminance(light.coefficients[i]) * transfer[i];
+    return lit / relativeLuminance(shIrradiance(light, normal));
+}
+
+}  // namespace
+
+// Closed forms: light only behind the wall reaches nothing (share 0), light
+// only on the open side all of it (share 1), a uniform map half its
+// cosine-weighted hemisphere (1/2), and turning the map by 180 degrees swaps
+// the first two. Bounds: 0 and 1 are exact for this geometry (a ray is
+// blocked or not); under the uniform map the share is the fraction of the
+// 256 cosine-weighted rays that escape, so it moves in steps of 1/256 with
+// the strata's turn: two steps, 8e-3 (measured 0.4961, one step). The
+// band-limited share of the same vertex (the SH transfer over its
+// unoccluded value, what the shaders used before) reads 0.173 behind the
+// wall and 0.819 on the open side; it must miss the closed forms by more
+// than 0.05, so the test tells the two apart.
+TEST(ShTransfer, VisibleShareMatchesTheWallsClosedForms) {
+    const MeshData mesh = vertexBesideAWall();
+    auto traced = computeShTransfer(mesh, quietOptions(256));
+    ASSERT_TRUE(traced) << traced.error().message();
+    ASSERT_EQ(traced->visibility.size(), mesh.vertices.size() * visibilityWords(256));
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    const float unoccludedT00 = 0.886227f;
+    auto shareOf = [&](const Image& map, const glm::mat3& mapFromObject) {
+        return visibleShareTransfer(mesh, *traced, map, mapFromObject)[0][0] / unoccludedT00;
+    };
+    const glm::mat3 identity(1.0f);
+    const glm::mat3 halfTurn = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::pi<float>(), up));
+    const Image behind = halfSpaceMap(1.0f);
+    const Image open = halfSpaceMap(-1.0f);
+    const Image uniform = test::latLongImage(128, 64, [](const glm::vec3&) { return glm::vec3(1.0f); });
+    EXPECT_EQ(shareOf(behind, identity), 0.0f);
+    EXPECT_NEAR(shareOf(open, identity), 1.0f, 1e-6f);
+    EXPECT_NEAR(shareOf(uniform, identity), 0.5f, 8e-3f);
+    EXPECT_NEAR(shareOf(behind, halfTurn), 1.0f, 1e-6f);
+    EXPECT_EQ(shareOf(open, halfTurn), 0.0f);
+
+    // Every coefficient is the share times the unoccluded transfer A_l Y_lm(N).
+    const ShScalar9 openTransfer = visibleShareTransfer(mesh, *traced, open, identity)[0];
+    const ShScalar9 basis = shBasis(up);
+    const float band[9] = {1.0f, 2.0f / 3.0f, 2.0f / 3.0f, 2.0f / 3.0f, 0.25f, 0.25f, 0.25f, 0.25f, 0.25f};
+    for (size_t i = 0; i < 9; ++i) EXPECT_NEAR(openTransfer[i], glm::pi<float>() * band[i] * basis[i], 1e-5f) << i;
+
+    const float shBehind = shShare(projectLatLong(behind), traced->perVertex[0], up);
+    const float shOpen = shShare(projectLatLong(open), traced->perVertex[0], up);
+    std::printf("[ measured ] band-limited share: behind the wall %.3f (exact 0), open side %.3f (exact 1)\n", shBehind,
+                shOpen);
+    EXPECT_GT(std::abs(shBehind), 0.05f);
+    EXPECT_GT(std::abs(1.0f - shOpen), 0.05f);
 }
