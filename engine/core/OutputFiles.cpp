@@ -121,19 +121,21 @@ Status OutputFiles::commit() {
         }
         discard();
     };
+    // rollBack() discards mStaged, so each failure names its target from a copy.
     for (const Staged& s : mStaged) {
         std::error_code error;
         Moved m{s.target, {}};
+        const std::string target = s.target.string();
         if (fs::is_directory(fs::symlink_status(s.target, error))) {
             rollBack();
-            return makeError(s.target.string(), "is a directory");
+            return makeError(target, "is a directory");
         }
         if (fs::exists(fs::symlink_status(s.target, error))) {
             m.backup = hiddenBeside(s.target, uniqueSuffix() + "-was");
             fs::rename(s.target, m.backup, error);
             if (error) {
                 rollBack();
-                return makeError(s.target.string(), "could not replace the existing file: " + error.message());
+                return makeError(target, "could not replace the existing file: " + error.message());
             }
         }
         fs::rename(s.temporary, s.target, error);
@@ -143,7 +145,7 @@ Status OutputFiles::commit() {
                 fs::rename(m.backup, m.target, ignored);
             }
             rollBack();
-            return makeError(s.target.string(), "could not move the written file into place: " + error.message());
+            return makeError(target, "could not move the written file into place: " + error.message());
         }
         moved.push_back(m);
     }
