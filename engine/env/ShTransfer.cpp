@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace dermis {
 namespace {
@@ -129,7 +130,47 @@ private:
     std::vector<float> mTexels;
 };
 
+// fillBuriedFromNeighbours on `stride` floats per vertex.
+void fillFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& buried, size_t stride, float* values) {
+    if (buried.size() != mesh.vertices.size()) return;
+    std::vector<uint8_t> known(buried.size());
+    size_t unknown = 0;
+    for (size_t v = 0; v < buried.size(); ++v) {
+        known[v] = buried[v] ? 0 : 1;
+        unknown += buried[v] ? 1 : 0;
+    }
+    if (unknown == 0) return;
+    std::vector<float> sum(mesh.vertices.size() * stride);
+    std::vector<uint32_t> count(mesh.vertices.size());
+    while (unknown > 0) {
+        std::fill(sum.begin(), sum.end(), 0.0f);
+        std::fill(count.begin(), count.end(), 0u);
+        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) {
+                    const uint32_t to = mesh.indices[t + size_t(a)], from = mesh.indices[t + size_t(b)];
+                    if (known[to] || !known[from]) continue;
+                    for (size_t k = 0; k < stride; ++k) sum[to * stride + k] += values[from * stride + k];
+                    ++count[to];
+                }
+        size_t filled = 0;
+        for (size_t v = 0; v < known.size(); ++v) {
+            if (known[v] || count[v] == 0) continue;
+            for (size_t k = 0; k < stride; ++k) values[v * stride + k] = sum[v * stride + k] / float(count[v]);
+            known[v] = 1;
+            ++filled;
+        }
+        if (filled == 0) break;  // the rest has no path to the outside
+        unknown -= filled;
+    }
+}
+
 }  // namespace
+
+void fillBuriedFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& buried, std::vector<ShScalar9>& values) {
+    if (values.size() != mesh.vertices.size()) return;
+    fillFromNeighbours(mesh, buried, std::tuple_size<ShScalar9>::value, values.empty() ? nullptr : values[0].data());
+}
 
 Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptions& options) {
     const int strataPerSide = int(std::lround(std::sqrt(double(std::max(options.raysPerVertex, 0)))));
@@ -149,6 +190,7 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
     out.perVertex.assign(mesh.vertices.size(), ShScalar9{});
     const size_t words = visibilityWords(options.raysPerVertex);
     out.visibility.assign(mesh.vertices.size() * words, 0u);
+    out.buried.assign(mesh.vertices.size(), 0u);
     const std::string label = options.progressLabel.empty()
                                   ? std::string()
                                   : options.progressLabel + " " + std::to_string(mesh.vertices.size()) + " vertices";
@@ -161,15 +203,25 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
             const glm::vec3 origin = vertex.position + offset * normal;
             uint32_t* escaped = out.visibility.data() + vertexIndex * words;
             ShScalar9 sum{};
+            int insideHits = 0;
             forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
-                if (bvh.anyHit(raytrace::Ray{origin, direction}, 0.0f, tMax)) return;
+                raytrace::BvhHit hit;
+                if (bvh.closestHit(raytrace::Ray{origin, direction}, 0.0f, tMax, &hit)) {
+                    // Counter-clockwise triangles face out: a ray along the facet's normal met its inside.
+                    const glm::vec3* corner = &corners[3 * size_t(hit.triangle)];
+                    if (glm::dot(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), direction) > 0.0f)
+                        ++insideHits;
+                    return;
+                }
                 escaped[i / 32] |= 1u << (i % 32);
                 const ShScalar9 basis = shBasis(direction);
                 for (size_t k = 0; k < basis.size(); ++k) sum[k] += basis[k];
             });
             for (size_t i = 0; i < sum.size(); ++i) out.perVertex[vertexIndex][i] = sum[i] * weightPerRay;
+            out.buried[vertexIndex] = 2 * insideHits > options.raysPerVertex ? 1 : 0;
         },
         label);
+    fillBuriedFromNeighbours(mesh, out.buried, out.perVertex);
     return out;
 }
 
@@ -183,7 +235,7 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
     constexpr float kBand2 = kPi / 4.0f;
     const float clampedCosine[9] = {kPi, kBand1, kBand1, kBand1, kBand2, kBand2, kBand2, kBand2, kBand2};
     const LuminanceCube luminance(lit);
-    std::vector<ShScalar9> out(mesh.vertices.size(), ShScalar9{});
+    std::vector<float> shares(mesh.vertices.size(), 0.0f);
     raytrace::parallelFor(mesh.vertices.size(), 0, [&](size_t vertexIndex) {
         glm::vec3 normal;
         if (!unitNormal(mesh.vertices[vertexIndex], normal)) return;
@@ -195,10 +247,16 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
             all += radiance;
             if (escaped[i / 32] & (1u << (i % 32))) visible += radiance;
         });
-        const float share = all > 0.0 ? float(visible / all) : 0.0f;
-        const ShScalar9 basis = shBasis(normal);
-        for (size_t k = 0; k < basis.size(); ++k) out[vertexIndex][k] = share * clampedCosine[k] * basis[k];
+        shares[vertexIndex] = all > 0.0 ? float(visible / all) : 0.0f;
     });
+    fillFromNeighbours(mesh, transfer.buried, 1, shares.data());
+    std::vector<ShScalar9> out(mesh.vertices.size(), ShScalar9{});
+    for (size_t vertexIndex = 0; vertexIndex < mesh.vertices.size(); ++vertexIndex) {
+        glm::vec3 normal;
+        if (!unitNormal(mesh.vertices[vertexIndex], normal)) continue;
+        const ShScalar9 basis = shBasis(normal);
+        for (size_t k = 0; k < basis.size(); ++k) out[vertexIndex][k] = shares[vertexIndex] * clampedCosine[k] * basis[k];
+    }
     return out;
 }
 

@@ -44,12 +44,19 @@ struct ShTransferOptions {
     std::string progressLabel = "SH transfer";   // empty: no progress bar
 };
 
-// One transfer vector per vertex, in the mesh's vertex order, and which of
-// the vertex's rays escaped: visibilityWords(raysPerVertex) words per
-// vertex, bit i of the ray forEachTransferRay gives as i.
+// One transfer vector per vertex, in the mesh's vertex order; which of the
+// vertex's rays escaped: visibilityWords(raysPerVertex) words per vertex, bit
+// i of the ray forEachTransferRay gives as i; and which vertices lie inside
+// the body (buried: more than half of their rays meet the inside of a surface
+// first, as from the skull under an ear whose root is sunk into it). A buried
+// vertex is no surface the light reaches: its transfer is its neighbours'
+// (fillBuriedFromNeighbours), so that a triangle that passes into the body
+// takes the light of its part outside, not a fade to black from its buried
+// corner (docs/environment.md, "Vertices inside the body").
 struct ShTransfer {
     std::vector<ShScalar9> perVertex;
     std::vector<uint32_t> visibility;
+    std::vector<uint8_t> buried;
     int raysPerVertex = 0;
 };
 
@@ -81,6 +88,13 @@ ShScalar9 rotateTransfer(const ShScalar9& transfer, const glm::mat3& rotation);
 // unchanged when it holds no visibility.
 std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransfer& transfer, const Image& lit,
                                             const glm::mat3& mapFromObject);
+
+// Each buried vertex (buried[v] != 0) takes the mean of its neighbours'
+// values (vertices that share a triangle with it) that are not buried, or
+// were filled in an earlier round: rounds grow the filled region inward from
+// the outside surface until nothing changes. A part wholly inside the body
+// keeps its values.
+void fillBuriedFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& buried, std::vector<ShScalar9>& values);
 
 // The rotation of a linear-blend skinning matrix: the orthonormal factor of
 // its upper 3 x 3's polar decomposition (the closest rotation to it; Higham

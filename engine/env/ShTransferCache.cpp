@@ -5,6 +5,7 @@
 #include "core/ContentHash.h"
 #include "core/Log.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -39,10 +40,14 @@ Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTra
     load.transfer.raysPerVertex = options.raysPerVertex;
     load.transfer.perVertex.resize(mesh.vertices.size());
     load.transfer.visibility.resize(mesh.vertices.size() * visibilityWords(options.raysPerVertex));
+    load.transfer.buried.resize(mesh.vertices.size());
     const size_t transferBytes = load.transfer.perVertex.size() * sizeof(ShScalar9);
     const size_t visibilityBytes = load.transfer.visibility.size() * sizeof(uint32_t);
+    const size_t buriedBytes = load.transfer.buried.size();
     if (readCacheFileOrWarn(load.cacheFile, kShTransferFile, key,
-                            {{load.transfer.perVertex.data(), transferBytes}, {load.transfer.visibility.data(), visibilityBytes}})) {
+                            {{load.transfer.perVertex.data(), transferBytes},
+                             {load.transfer.visibility.data(), visibilityBytes},
+                             {load.transfer.buried.data(), buriedBytes}})) {
         load.fromCache = true;
         return load;
     }
@@ -57,10 +62,14 @@ Result<ShTransferLoad> loadOrComputeShTransfer(const MeshData& mesh, const ShTra
     line.precision(3);
     line << "SH transfer of " << (mesh.name.empty() ? std::string("a mesh") : mesh.name) << ": "
          << mesh.vertices.size() << " vertices x " << options.raysPerVertex << " rays in " << seconds << " s ("
-         << (seconds > 0.0 ? rays / seconds * 1e-6 : 0.0) << " Mrays/s)";
+         << (seconds > 0.0 ? rays / seconds * 1e-6 : 0.0) << " Mrays/s), "
+         << std::count(load.transfer.buried.begin(), load.transfer.buried.end(), uint8_t(1))
+         << " vertices inside the body";
     log::info(line.str());
     writeCacheFileOrWarn(load.cacheFile, kShTransferFile, key,
-                         {{load.transfer.perVertex.data(), transferBytes}, {load.transfer.visibility.data(), visibilityBytes}});
+                         {{load.transfer.perVertex.data(), transferBytes},
+                          {load.transfer.visibility.data(), visibilityBytes},
+                          {load.transfer.buried.data(), buriedBytes}});
     return load;
 }
 

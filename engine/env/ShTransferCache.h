@@ -8,8 +8,9 @@
 // core/CacheDirectory.h. File sh-transfer-<16 hex digits>.bin, laid out as
 // core/CacheFile.h says, whose payload is vertex count x 9 float32 (the
 // transfer, vertex by vertex), then vertex count x visibilityWords(rays)
-// uint32 (which rays escaped). A file that fails any check (size, magic,
-// version, key, payload hash) is ignored with one warning and recomputed; a
+// uint32 (which rays escaped), then vertex count bytes (1: buried). A file
+// that fails any check (size, magic, version, key, payload hash) is ignored
+// with one warning and recomputed; a
 // directory that cannot be written gives a warning, never an error.
 
 #include "core/Result.h"
@@ -22,7 +23,7 @@
 
 namespace dermis {
 
-constexpr uint32_t kShTransferCacheVersion = 3;
+constexpr uint32_t kShTransferCacheVersion = 4;
 
 uint64_t shTransferCacheKey(const MeshData& mesh, int raysPerVertex);
 
