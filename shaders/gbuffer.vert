@@ -26,7 +26,7 @@ void main() {
     vViewPositionM = (uFrame.viewFromWorld * worldPosition).xyz;
     vColour = aColour.rgb;
 #ifdef GBUFFER_TRANSFER
-    vEnvironment = transferIrradiance(aNormal);
+    vEnvironment = transferIrradiance();
 #endif
     gl_Position = uFrame.clipFromWorld * worldPosition;
 }

@@ -30,7 +30,7 @@ void main() {
     vDPduM = mat3(uObject.worldFromObject) * aDPdu;
     vDPdvM = mat3(uObject.worldFromObject) * aDPdv;
     vColour = aColour.rgb;
-    vEnvironment = transferIrradiance(aNormal);
+    vEnvironment = transferIrradiance();
     // Texel (x, y) of an N x N target holds uv = ((x, y) + 0.5) / N, so that
     // texture(map, uv) reads back what was written here.
     gl_Position = vec4(aUv * 2.0 - 1.0, 0.0, 1.0);
