@@ -126,7 +126,8 @@ void wallErrors(const ShTransfer& transfer, float& rms, float& worst) {
 
 bool sameBytes(const ShTransfer& a, const ShTransfer& b) {
     return a.perVertex.size() == b.perVertex.size() &&
-           std::memcmp(a.perVertex.data(), b.perVertex.data(), a.perVertex.size() * sizeof(ShScalar9)) == 0;
+           std::memcmp(a.perVertex.data(), b.perVertex.data(), a.perVertex.size() * sizeof(ShScalar9)) == 0 &&
+           a.visibility == b.visibility && a.buried == b.buried;
 }
 
 }  // namespace
@@ -279,6 +280,21 @@ TEST(ShTransfer, CacheSecondCallLoadsTheSameBytes) {
     EXPECT_TRUE(sameBytes(first->transfer, second->transfer));
     // No temporary file is left behind.
     EXPECT_EQ(std::distance(fs::directory_iterator(cacheDir), fs::directory_iterator()), 1);
+}
+
+// The head has vertices inside the body (the ears' roots); the sphere has
+// none, so only the head shows a cache that loses which ones they are
+// (reading the file without its last block leaves every flag 0 and fails).
+TEST(ShTransfer, CacheKeepsWhichVerticesAreBuried) {
+    const TemporaryCacheDirectory cacheDirectory;
+    const MeshData head = proceduralMesh("head");
+    Result<ShTransferLoad> first = loadOrComputeShTransfer(head, quietOptions(16));
+    ASSERT_TRUE(first) << first.error().message();
+    Result<ShTransferLoad> second = loadOrComputeShTransfer(head, quietOptions(16));
+    ASSERT_TRUE(second) << second.error().message();
+    EXPECT_TRUE(second->fromCache);
+    EXPECT_GT(std::count(second->transfer.buried.begin(), second->transfer.buried.end(), uint8_t(1)), 500);
+    EXPECT_TRUE(sameBytes(first->transfer, second->transfer));
 }
 
 TEST(ShTransfer, CacheAnotherMeshOrRayCountHasAnotherKey) {
