@@ -10,8 +10,8 @@
 // transfer, vertex by vertex), then vertex count x visibilityWords(rays)
 // uint32 (which rays escaped), then vertex count bytes (1: buried). A file
 // that fails any check (size, magic, version, key, payload hash) is ignored
-// with one warning and recomputed; a
-// directory that cannot be written gives a warning, never an error.
+// with one warning and recomputed; a directory that cannot be written gives a
+// warning, never an error.
 
 #include "core/Result.h"
 #include "env/ShTransfer.h"

@@ -1,6 +1,7 @@
 #include "render/GpuEnvironment.h"
 
 #include "brdf/EnergyTable.h"
+#include "env/IrradianceMap.h"
 #include "env/PrefilteredEnvironment.h"
 #include "env/ShTransferCache.h"
 #include "core/Log.h"
@@ -17,37 +18,11 @@ namespace {
 // noise to the share than to the rays' own sampling.
 constexpr int kShareMapWidth = 128;
 
-// Lat-long maps of one size stacked down one RGBA32F texture, each between
-// copies of its first and last rows, so that a bilinear read inside one never
-// reaches the next (the v clamp of a texture of its own); u repeats
-// (shaders/include/Environment.glsl, irradiancePower).
-gl::Texture uploadStackedLatLong(const std::vector<Image>& maps, std::string_view label) {
-    const int width = maps.front().width;
-    const int tile = maps.front().height + 2;
-    std::vector<glm::vec4> texels;
-    texels.reserve(size_t(width) * size_t(tile) * maps.size());
-    for (const Image& map : maps) {
-        for (int row = -1; row <= map.height; ++row) {
-            const int source = std::clamp(row, 0, map.height - 1);
-            texels.insert(texels.end(), map.texels.begin() + ptrdiff_t(source) * width,
-                          map.texels.begin() + ptrdiff_t(source + 1) * width);
-        }
-    }
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D, label);
-    const auto height = GLsizei(tile * int(maps.size()));
-    glTextureStorage2D(texture.get(), 1, GL_RGBA32F, width, height);
-    glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    return texture;
-}
-
-// An RGBA16F lat-long texture of `levels` (level 0 first), u repeating, v clamped, trilinear.
-gl::Texture uploadLatLong(const std::vector<Image>& levels, std::string_view label) {
+// An RGBA lat-long texture of `levels` (level 0 first), u repeating, v clamped, trilinear.
+gl::Texture uploadLatLong(const std::vector<Image>& levels, std::string_view label,
+                          graph::TextureFormat format = graph::TextureFormat::Rgba16F) {
     gl::Texture texture = gl::createTexture2D({static_cast<uint32_t>(levels.front().width),
-                                               static_cast<uint32_t>(levels.front().height), graph::TextureFormat::Rgba16F},
+                                               static_cast<uint32_t>(levels.front().height), format},
                                               label, static_cast<int>(levels.size()));
     for (size_t level = 0; level < levels.size(); ++level) {
         glTextureSubImage2D(texture.get(), static_cast<GLint>(level), 0, 0, levels[level].width, levels[level].height,
@@ -60,9 +35,30 @@ gl::Texture uploadLatLong(const std::vector<Image>& levels, std::string_view lab
     return texture;
 }
 
+// Lat-long maps of one size stacked down one RGBA32F texture, each between
+// copies of its first and last rows, so that a bilinear read inside one never
+// reaches the next (the v clamp of a texture of its own); u repeats
+// (shaders/include/Environment.glsl, irradiancePower).
+gl::Texture uploadStackedLatLong(const std::vector<Image>& maps, std::string_view label) {
+    Image stacked;
+    stacked.width = maps.front().width;
+    stacked.height = (maps.front().height + 2) * int(maps.size());
+    stacked.texels.reserve(size_t(stacked.width) * size_t(stacked.height));
+    for (const Image& map : maps) {
+        for (int row = -1; row <= map.height; ++row) {
+            const int source = std::clamp(row, 0, map.height - 1);
+            stacked.texels.insert(stacked.texels.end(), map.texels.begin() + ptrdiff_t(source) * map.width,
+                                  map.texels.begin() + ptrdiff_t(source + 1) * map.width);
+        }
+    }
+    return uploadLatLong({stacked}, label, graph::TextureFormat::Rgba32F);
+}
+
 }  // namespace
 
 static_assert(DERMIS_AVERAGE_ALBEDO_SIZE == kEnergyTableSize, "one average per energy-table row");
+static_assert(DERMIS_IRRADIANCE_POWERS == kIrradiancePowers && kIrradiancePowers == glm::vec4::length(),
+              "the shaders read one stacked cosine power per coefficient of rho_dt's cubic");
 static_assert(sizeof(ShScalar9) == DERMIS_SH_COEFFICIENTS * sizeof(float), "three vec3 attributes per vertex");
 
 std::vector<float> hemisphericalAverageAlbedo(const std::vector<float>& energyTable, int size) {

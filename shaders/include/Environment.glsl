@@ -51,7 +51,7 @@ layout(binding = DERMIS_UNIT_ENVIRONMENT_IRRADIANCE) uniform sampler2D uEnvironm
 // E_(k+1) at lat-long coordinates uv.
 vec3 irradiancePower(vec2 uv, int k) {
     float rows = float(textureSize(uEnvironmentIrradiance, 0).y);
-    float tile = rows / 4.0;
+    float tile = rows / float(DERMIS_IRRADIANCE_POWERS);
     return textureLod(uEnvironmentIrradiance, vec2(uv.x, (float(k) * tile + 1.0 + uv.y * (tile - 2.0)) / rows), 0.0).rgb;
 }
 

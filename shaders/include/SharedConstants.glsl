@@ -176,6 +176,9 @@
 #define DERMIS_UNIT_FIRST_PASS_EXTRA 17
 #define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 17  // ts_gather.frag: the lighting pass's irradiance
 #define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
+// The irradiance map's cosine powers E_1 .. E_4 stacked in one texture (env/IrradianceMap.h
+// kIrradiancePowers; Environment.glsl irradiancePower): one per coefficient of rho_dt's cubic.
+#define DERMIS_IRRADIANCE_POWERS 4
 
 // Fresnel reflectance at normal incidence for skin (d'Eon & Luebke 2007, after
 // Donner & Jensen): Schlick's F0 of the specular and of its energy table.
