@@ -84,8 +84,8 @@ public:
         for (int face = 0; face < 6; ++face)
             for (int y = 0; y < kFaceSize; ++y)
                 for (int x = 0; x < kFaceSize; ++x) {
-                    const glm::vec2 uv = latLongUv(direction(face, (x + 0.5f) / kFaceSize * 2.0f - 1.0f,
-                                                             (y + 0.5f) / kFaceSize * 2.0f - 1.0f));
+                    const glm::vec2 uv = latLongUv(direction(face, (float(x) + 0.5f) / float(kFaceSize) * 2.0f - 1.0f,
+                                                             (float(y) + 0.5f) / float(kFaceSize) * 2.0f - 1.0f));
                     const int u = std::clamp(int(uv.x * float(latLong.width)), 0, latLong.width - 1);
                     const int v = std::clamp(int(uv.y * float(latLong.height)), 0, latLong.height - 1);
                     mTexels[size_t((face * kFaceSize + y) * kFaceSize + x)] = relativeLuminance(glm::vec3(latLong.at(u, v)));
@@ -207,10 +207,7 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
             forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
                 raytrace::BvhHit hit;
                 if (bvh.closestHit(raytrace::Ray{origin, direction}, 0.0f, tMax, &hit)) {
-                    // Counter-clockwise triangles face out: a ray along the facet's normal met its inside.
-                    const glm::vec3* corner = &corners[3 * size_t(hit.triangle)];
-                    if (glm::dot(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), direction) > 0.0f)
-                        ++insideHits;
+                    if (hit.backFace) ++insideHits;  // counter-clockwise triangles face out
                     return;
                 }
                 escaped[i / 32] |= 1u << (i % 32);

@@ -153,6 +153,7 @@ Bvh Bvh::build(const std::vector<glm::vec3>& cornersM) {
     }
 
     bvh.mTriangleIds = order;
+    bvh.mCornersM.assign(cornersM.begin(), cornersM.begin() + std::ptrdiff_t(3 * size_t(count)));
     bvh.mTriangles.resize(count);
     for (uint32_t slot = 0; slot < count; ++slot) {
         const size_t base = 3 * size_t(order[slot]);
@@ -193,7 +194,8 @@ bool Bvh::traverse(const Ray& ray, float tMin, float tMax, BvhHit* hit) const {
                 if constexpr (kAnyHit) return true;
                 tMax = t;
                 found = true;
-                *hit = BvhHit{t, mTriangleIds[slot], u, v};
+                // det = -dot(cross(edge1, edge2), direction).
+                *hit = BvhHit{t, mTriangleIds[slot], u, v, det < 0.0f};
             }
             continue;
         }

@@ -57,6 +57,7 @@ EmbreeBvh EmbreeBvh::build(const std::vector<glm::vec3>& cornersM) {
     rtcSetSceneFlags(scene(bvh.mScene), RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene(bvh.mScene), RTC_BUILD_QUALITY_HIGH);
     bvh.mTriangleCount = cornersM.size() / 3;
+    bvh.mCornersM.assign(cornersM.begin(), cornersM.begin() + std::ptrdiff_t(3 * bvh.mTriangleCount));
     if (bvh.mTriangleCount > 0) {
         RTCGeometry geometry = rtcNewGeometry(device(bvh.mDevice), RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -78,13 +79,15 @@ EmbreeBvh EmbreeBvh::build(const std::vector<glm::vec3>& cornersM) {
 }
 
 EmbreeBvh::EmbreeBvh(EmbreeBvh&& other) noexcept
-    : mDevice(std::exchange(other.mDevice, nullptr)),
+    : TriangleScene(std::move(other)),
+      mDevice(std::exchange(other.mDevice, nullptr)),
       mScene(std::exchange(other.mScene, nullptr)),
       mTriangleCount(other.mTriangleCount) {}
 
 EmbreeBvh& EmbreeBvh::operator=(EmbreeBvh&& other) noexcept {
     if (this != &other) {
         release();
+        TriangleScene::operator=(std::move(other));
         mDevice = std::exchange(other.mDevice, nullptr);
         mScene = std::exchange(other.mScene, nullptr);
         mTriangleCount = other.mTriangleCount;
@@ -110,7 +113,10 @@ bool EmbreeBvh::closestHit(const Ray& ray, float tMin, float tMax, BvhHit* hit) 
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene(mScene), &context, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    *hit = BvhHit{query.ray.tfar, query.hit.primID, query.hit.u, query.hit.v};
+    // Embree's geometry normal is the counter-clockwise one, cross(v1 - v0, v2 - v0), unnormalised.
+    const float alongNormal =
+        query.hit.Ng_x * query.ray.dir_x + query.hit.Ng_y * query.ray.dir_y + query.hit.Ng_z * query.ray.dir_z;
+    *hit = BvhHit{query.ray.tfar, query.hit.primID, query.hit.u, query.hit.v, alongNormal > 0.0f};
     return true;
 }
 

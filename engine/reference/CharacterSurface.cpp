@@ -18,7 +18,7 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
 
 }  // namespace
 
-Result<CharacterSurface> CharacterSurface::create(const Character& character, Model model) {
+Result<CharacterSurface> CharacterSurface::create(const Character& character, Model model, uint32_t firstTracedTriangle) {
     const MeshData& mesh = model.mesh;
     if (mesh.indices.size() % 3 != 0) return makeError("character '" + character.name + "'", "index count is not a multiple of 3");
     for (uint32_t index : mesh.indices) {
@@ -28,6 +28,7 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
     }
     CharacterSurface surface;
     surface.mName = character.name;
+    surface.mFirstTracedTriangle = firstTracedTriangle;
     const glm::mat4 worldFromObject = character.transform.worldFromObject(character.metresPerUnit);
     const glm::mat3 normalWorldFromObject = glm::inverseTranspose(glm::mat3(worldFromObject));
     const glm::mat3 linear(worldFromObject);
@@ -131,6 +132,7 @@ SurfacePoint CharacterSurface::pointAt(size_t triangle, float b1, float b2, bool
     if (backFacing) n = -n;
     point.smoothNormal = n;
     point.rayLiftM = smoothSurfacePoint(point.positionM, {b0, b1, b2}, {i0, i1, i2}, backFacing) - point.positionM;
+    point.tracedTriangle = mFirstTracedTriangle + static_cast<uint32_t>(triangle);
     const SurfaceMaterial& material = mMaterials[mTriangleMaterials[triangle]];
     if (!material.normalMap.empty()) {
         const glm::vec4 tangent = b0 * mTangents[i0] + b1 * mTangents[i1] + b2 * mTangents[i2];
@@ -164,7 +166,7 @@ double CharacterSurface::areaM2() const {
 }
 
 void CharacterSurface::hashContent(ContentHash& hash) const {
-    hash.text(mName).values(mPositionsM).values(mNormals).values(mTangents).values(mUvs).values(mRawUvs);
+    hash.text(mName).number(mFirstTracedTriangle).values(mPositionsM).values(mNormals).values(mTangents).values(mUvs).values(mRawUvs);
     hash.values(mColours).values(mIndices).values(mTriangleMaterials);
     auto hashMap = [&](const MipPyramid& map) {
         if (map.empty()) {

@@ -32,6 +32,12 @@ struct SurfacePoint {
     // where the interpolated normal still faces the light (the shadow terminator).
     glm::vec3 rayLiftM{0.0f};
     glm::vec3 smoothNormal{0.0f, 0.0f, 1.0f};  // unit: the interpolated normal, before the normal map
+    // The point's triangle among all the triangles that rays are traced against
+    // (the scene's, in the renderer's order): its own facets do not shadow it
+    // near the terminator (ReferenceLighting.cpp). kNoTracedTriangle for a point
+    // made by hand: every triangle may shadow it.
+    static constexpr uint32_t kNoTracedTriangle = 0xFFFFFFFFu;
+    uint32_t tracedTriangle = kNoTracedTriangle;
     glm::vec3 albedo{0.0f};                        // linear
     float roughness = 0.3f;
     float rhoS = 0.0f;
@@ -48,7 +54,9 @@ struct SurfaceScattering {
 class CharacterSurface {
 public:
     // Takes the model in object units and places it with the character's transform.
-    static Result<CharacterSurface> create(const Character& character, Model model);
+    // `firstTracedTriangle`: where its triangles start among those rays are traced
+    // against (0 when it is traced alone).
+    static Result<CharacterSurface> create(const Character& character, Model model, uint32_t firstTracedTriangle = 0);
 
     const std::string& name() const { return mName; }
     size_t triangleCount() const { return mIndices.size() / 3; }
@@ -82,6 +90,7 @@ private:
                                  bool backFacing) const;
 
     std::string mName;
+    uint32_t mFirstTracedTriangle = 0;
     std::vector<glm::vec3> mPositionsM;
     std::vector<glm::vec3> mNormals;   // normal matrix applied, not normalised (interpolated first, as on the GPU)
     std::vector<glm::vec4> mTangents;  // xyz world tangent, w bitangent sign

@@ -267,8 +267,8 @@ glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point, ui
             cosines[i - first] = cosTheta;
             // A map-drawn direction towards a black texel has density 0 and was not drawn.
             const bool counts = cosTheta > 0.0f && (i >= mapSamples || sample.radiance != glm::vec3(0.0f));
-            lit[i - first] = counts && !mOccluders->anyHit(Ray{rayOrigin(point, sample.direction), sample.direction},
-                                                           0.0f, std::numeric_limits<float>::infinity());
+            lit[i - first] =
+                counts && !occluded(point, sample.direction, std::numeric_limits<float>::infinity());
         }
         for (size_t i = std::max(first, mapSamples); i < last; ++i) {
             EnvironmentSample& sample = batch[i - first];
@@ -286,7 +286,6 @@ glm::vec3 ReferenceLighting::environmentIrradiance(const SurfacePoint& point, ui
 float ReferenceLighting::lightVisibility(size_t index, const SurfacePoint& point, const glm::vec3& l, float distanceM,
                                          LightVisibility* visibility) const {
     const PreparedLight& light = mLights[index];
-    const glm::vec3 origin = rayOrigin(point, l);
     // The light's angular radius seen from the point; a sphere around the point is a delta light.
     float sinRadius = light.sinAngularRadius;
     if (light.type != DERMIS_LIGHT_DIRECTIONAL) sinRadius = light.radiusM < distanceM ? light.radiusM / distanceM : 0.0f;
@@ -304,7 +303,7 @@ float ReferenceLighting::lightVisibility(size_t index, const SurfacePoint& point
         } else if (light.type != DERMIS_LIGHT_DIRECTIONAL) {
             lengthM = distanceM - light.radiusM;
         }
-        if (!mOccluders->anyHit(Ray{origin, direction}, 0.0f, lengthM)) ++unblocked;
+        if (!occluded(point, direction, lengthM)) ++unblocked;
     }
     if (visibility) {
         const uint64_t bit = uint64_t(1) << index;
@@ -313,6 +312,47 @@ float ReferenceLighting::lightVisibility(size_t index, const SurfacePoint& point
         if (unblocked == 0) visibility->blocked |= bit;
     }
     return float(unblocked) / float(rays);
+}
+
+// Near the terminator of a coarse mesh the interpolated normal can face the
+// direction while the point's facet turns away from it. The smooth surface the
+// mesh stands for lets such a ray out; the ray itself leaves under the facets
+// and meets them first: its own facet or a neighbour from the front when
+// Hanika's lift put the origin above them, a neighbour from the inside where
+// the lift is too small to clear it (it goes to zero at the corners and is none
+// in a hollow). On the head scan's shoulders, under the back spot light, the
+// neighbours' inside faces blocked points 0.09 to 2 mm away, and nothing else
+// lay towards the light (docs/reference.md, "Shadow rays on a coarse mesh").
+// Such a ray passes under the point's own facets (its triangle and those that
+// share a corner with it) once: in through their outside faces, out through
+// their inside faces. Once it is out, whatever it meets is an occluder, its own
+// facets too: a hollow that rises across the ray shadows the point.
+bool ReferenceLighting::occluded(const SurfacePoint& point, const glm::vec3& direction, float lengthM) const {
+    const Ray ray{rayOrigin(point, direction), direction};
+    const bool underTheFacets =
+        glm::dot(point.smoothNormal, direction) >= 0.0f && glm::dot(point.geometricNormal, direction) < 0.0f;
+    const uint32_t own = point.tracedTriangle;
+    if (!underTheFacets || own >= mOccluders->triangleCount()) return mOccluders->anyHit(ray, 0.0f, lengthM);
+    const std::array<glm::vec3, 3> corners{mOccluders->corner(own, 0), mOccluders->corner(own, 1), mOccluders->corner(own, 2)};
+    auto ownFacet = [&](uint32_t triangle) {
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 c = mOccluders->corner(triangle, k);
+            if (c == corners[0] || c == corners[1] || c == corners[2]) return true;
+        }
+        return false;
+    };
+    // A ray under the facets crosses one to three of them (measured on the scan
+    // and on a coarse saddle); one still among them after this many is taken as blocked.
+    constexpr int kMaxFacetsPassed = 8;
+    float tMin = 0.0f;
+    for (int passed = 0; passed < kMaxFacetsPassed; ++passed) {
+        raytrace::BvhHit hit;
+        if (!mOccluders->closestHit(ray, tMin, lengthM, &hit)) return false;
+        if (!ownFacet(hit.triangle)) return true;
+        if (hit.backFace) return mOccluders->anyHit(ray, hit.t, lengthM);  // out from under the facets
+        tMin = hit.t;
+    }
+    return true;
 }
 
 float ReferenceLighting::outgoingFactor(const SurfacePoint& point, const glm::vec3& towardsViewer) const {

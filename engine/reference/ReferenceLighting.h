@@ -116,6 +116,11 @@ public:
     float energyLeftForDiffuse(float cosTheta, float roughness, float rhoS) const;
 
 private:
+    // Whether something blocks the ray from the point towards the unit `direction`
+    // before lengthM (infinity: none); the point's own facets near the terminator
+    // do not (ReferenceLighting.cpp).
+    bool occluded(const SurfacePoint& point, const glm::vec3& direction, float lengthM) const;
+
     struct PreparedLight {
         int type = 0;  // DERMIS_LIGHT_*
         glm::vec3 positionM{0.0f};

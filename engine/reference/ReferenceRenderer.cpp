@@ -72,9 +72,10 @@ Result<ReferenceRenderer> ReferenceRenderer::create(const Scene& scene, std::vec
     renderer.mOptions.engineIrradiance.clear();  // kept once, as EngineIrradiance below
     std::vector<glm::vec3> corners;
     for (size_t c = 0; c < scene.characters.size(); ++c) {
-        auto surface = CharacterSurface::create(scene.characters[c], std::move(models[c]));
+        const auto firstTriangle = static_cast<uint32_t>(corners.size() / 3);
+        auto surface = CharacterSurface::create(scene.characters[c], std::move(models[c]), firstTriangle);
         if (!surface.ok()) return surface.error();
-        renderer.mFirstTriangle.push_back(static_cast<uint32_t>(corners.size() / 3));
+        renderer.mFirstTriangle.push_back(firstTriangle);
         for (size_t t = 0; t < surface->triangleCount(); ++t) {
             for (int i = 0; i < 3; ++i) corners.push_back(surface->corner(t, i));
         }

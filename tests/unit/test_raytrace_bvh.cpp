@@ -1,6 +1,7 @@
 // The reference's ray tracers against brute force, the in-house BVH and
-// Embree's alike: the same nearest hits and the same any-hit answers on random
-// rays through random (and some degenerate) triangles.
+// Embree's alike: the same nearest hits (and which side of the triangle they
+// meet) and the same any-hit answers on random rays through random (and some
+// degenerate) triangles.
 #include "raytrace/Bvh.h"
 #include "raytrace/EmbreeBvh.h"
 
@@ -59,8 +60,11 @@ TYPED_TEST(ReferenceBvh, ClosestAndAnyHitsMatchBruteForce) {
     const Scene scene = randomTriangles(rng, 2000);
     const TypeParam bvh = TypeParam::build(scene.corners);
     ASSERT_EQ(bvh.triangleCount(), scene.corners.size() / 3);
+    for (uint32_t t = 0; t < bvh.triangleCount(); t += 97) {
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(bvh.corner(t, k), scene.corners[3 * t + size_t(k)]) << "triangle " << t;
+    }
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-    int hits = 0;
+    int hits = 0, backFaces = 0;
     for (int i = 0; i < 2000; ++i) {
         const glm::vec3 origin(1.5f * unit(rng), 1.5f * unit(rng), 1.5f * unit(rng));
         glm::vec3 direction(unit(rng), unit(rng), unit(rng));
@@ -94,7 +98,12 @@ TYPED_TEST(ReferenceBvh, ClosestAndAnyHitsMatchBruteForce) {
                         c = scene.corners[3 * hit.triangle + 2];
         const glm::vec3 p = a + hit.u * (b - a) + hit.v * (c - a);
         EXPECT_LT(glm::length(p - (origin + hit.t * direction)), 1e-4f) << "ray " << i;
+        const bool backFace = glm::dot(glm::cross(glm::dvec3(b - a), glm::dvec3(c - a)), glm::dvec3(direction)) > 0.0;
+        EXPECT_EQ(hit.backFace, backFace) << "ray " << i;
+        backFaces += backFace ? 1 : 0;
     }
+    EXPECT_GT(backFaces, 100);  // both sides are met
+    EXPECT_LT(backFaces, hits - 100);
     EXPECT_GT(hits, 300);  // the test means something
 }
 
