@@ -94,6 +94,11 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     if (!sssCentre(colour, depthKey, pixel, uDiskSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
     float pxPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     if (uDiskSss.largestRadiusMm * pxPerMm < kDiskSssSkipPx) return centre;
+    // Per screen axis, over the skin's stretch along it (SssChain.glsl, SLANT).
+    SssSlant slantX = sssSlant(depthKey, pixel, ivec2(1, 0), centreKey, viewDepthM);
+    SssSlant slantY = sssSlant(depthKey, pixel, ivec2(0, 1), centreKey, viewDepthM);
+    vec2 pxPerMmOnSkin = pxPerMm / vec2(slantX.stretch, slantY.stretch);
+    vec2 depthPerPxM = vec2(slantX.depthPerPxM, slantY.depthPerPxM);
 
 #if DISK_SSS_ROTATE
     float angle = 6.28318530718 * hashToUnit(uvec2(pixel));
@@ -112,8 +117,10 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
         vec4 sampleMm = uDiskSss.samples[j];
         vec3 weight = uDiskSss.weights[j].rgb;
         float scalarWeight = sampleMm.w;
-        ivec2 tapPixel = clamp(pixel + ivec2(floor(rotation * sampleMm.xy * pxPerMm + 0.5)), ivec2(0), size - 1);
-        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uDiskSss.edges);
+        ivec2 offsetPx = ivec2(floor(rotation * sampleMm.xy * pxPerMmOnSkin + 0.5));
+        ivec2 tapPixel = clamp(pixel + offsetPx, ivec2(0), size - 1);
+        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, dot(vec2(offsetPx), depthPerPxM),
+                                     uDiskSss.edges);
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
         scalarWeight *= edge.weight;

@@ -106,8 +106,9 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
     float viewDepthM;
     if (!sssCentre(chain, depthKey, pixel, uSeparableSss.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
-    float pixelsPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     ivec2 direction = uSeparableSss.direction;
+    SssSlant slant = sssSlant(depthKey, pixel, direction, centreKey, viewDepthM);
+    float pixelsPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM / slant.stretch;
     int count = min(uSeparableSss.tapCount, DERMIS_MAX_SEPARABLE_SAMPLES);
 
     SssValues sum;
@@ -153,7 +154,8 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
                 bool use = true;
                 if (pendingOffset != 0) {
                     ivec2 tapPixel = clamp(pixel + direction * pendingOffset, ivec2(0), size - 1);
-                    SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uSeparableSss.edges);
+                    SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r,
+                                                 float(pendingOffset) * slant.depthPerPxM, uSeparableSss.edges);
                     use = edge.weight > 0.0;
                     weight *= edge.weight;
                     if (use && edge.toCentre < 1.0) {

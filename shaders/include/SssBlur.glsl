@@ -43,7 +43,8 @@
 //   depth z metres, where P = uFrame.pixelsPerMetreAtUnitDepth is the number of pixels per
 //   metre at 1 m (height / (2 tan(fov/2))). World space is in metres, so each
 //   character's metres_per_unit is already in z. The centre pixel's depth
-//   sets the width, as in Jimenez's SeparableSSS.
+//   sets the width, as in Jimenez's SeparableSSS, divided by the skin's
+//   stretch along the pass's direction (SssChain.glsl, SLANT).
 //
 // SAMPLING AND WEIGHTS (per pixel, from its own width in pixels sigma_px)
 //   Taps fetch whole texels (texelFetch): a bilinear fetch at a silhouette
@@ -134,8 +135,9 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     float viewDepthM;
     if (!sssCentre(colour, depthKey, pixel, uSssBlur.edges.slot, centre, centreKey, viewDepthM)) return centre;
 
-    float sigmaPx = uSssBlur.sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM;
     vec2 direction = uSssBlur.direction;
+    SssSlant slant = sssSlant(depthKey, pixel, ivec2(direction), centreKey, viewDepthM);
+    float sigmaPx = uSssBlur.sigmaMm * 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM / slant.stretch;
     int taps = uSssBlur.taps;
     int halfTaps = min(taps / 2, kSssMaxHalfTaps);
     float halfWeights[kSssMaxHalfTaps + 1];
@@ -147,7 +149,8 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     for (int j = -halfTaps; j <= halfTaps; ++j) {
         ivec2 tapPixel = clamp(pixel + ivec2(direction * (float(j) * spacingPx)), ivec2(0), size - 1);
         float weight = halfWeights[abs(j)];
-        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r, uSssBlur.edges);
+        SssEdgeTap edge = sssEdgeTap(centreKey, texelFetch(depthKey, tapPixel, 0).r,
+                                     float(j) * spacingPx * slant.depthPerPxM, uSssBlur.edges);
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
         if (edge.toCentre < 1.0) {

@@ -7,7 +7,8 @@
 // one test rejects taps across silhouettes, on the background, on opaque
 // objects and on other profiles:
 //   - bilateral (Vila Verde 2015 §4.3.2): the tap's kernel weight is
-//     multiplied by exp(-d^2 / (2 s^2)), d = depth difference in mm, s =
+//     multiplied by exp(-d^2 / (2 s^2)), d = the tap's depth difference in mm
+//     from the centre's plane (SssChain.glsl, SLANT), s =
 //     bilateralDepthMm, and the caller renormalises by the weights' sum. No
 //     light crosses an edge: no halo, no background bleed. A tap on another
 //     profile or the background gets weight 0.
@@ -31,12 +32,17 @@ struct SssEdgeTap {
     float toCentre;  // the tap's value is mix(tap, centre, toCentre)
 };
 
-SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, SssEdgeParams params) {
+// `planeOffsetM`: how much deeper than the centre the tap lies on the centre's
+// plane (the skin's slope times the tap's offset, SssChain.glsl SLANT); the
+// depth difference d is the tap's depth against that.
+SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, float planeOffsetM, SssEdgeParams params) {
     int edges = params.mode;
     float bilateralDepthMm = params.bilateralDepthMm;
     float controlScalePerMm = params.controlScalePerMm;
     SssEdgeTap result = SssEdgeTap(1.0, 0.0);
     float distanceMm = keyDistanceMm(centreKey, tapKey);
+    if (distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5)
+        distanceMm = abs(viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
     bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
     if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) {
         result.weight = sameProfile ? 1.0 : 0.0;

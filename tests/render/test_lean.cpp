@@ -437,7 +437,10 @@ TEST_F(Lean, BilateralBlurLeaksClearlyLessBackdropLightThanTheControl) {
                 100.0 * bilateral.mean, 100.0 * bilateral.worst, 100.0 * defaultControl.mean,
                 100.0 * defaultControl.worst);
     EXPECT_NEAR(none.mean, 0.0, 1e-6);
-    EXPECT_GT(control.mean, 0.01);  // C visibly bleeds the backdrop in
+    // C visibly bleeds the backdrop in: 0.68% of the silhouette's light on the mean, 19.4% in
+    // the worst pixel (1.71% and 23.4% before the width followed the skin's slant, which
+    // narrows the kernel on the steep skin by the silhouette: SssChain.glsl, SLANT).
+    EXPECT_GT(control.mean, 0.004);
     EXPECT_GT(control.worst, 0.1);
     EXPECT_LT(bilateral.mean, 0.05 * control.mean);  // LBB: at least twenty times less
     EXPECT_LT(bilateral.worst, 0.01);
