@@ -14,13 +14,15 @@ using dermis::test::TempDir;
 // `dermis compare content/scenes/lee_perry_smith.json --errors --size 320x180
 // --change-spp 4` (about 55 s on 2 cores; no environment, so the references
 // have no noise and the figures repeat to the last digit). Measured, all SSS
-// pixels: scatter 1.14% (ss) and 1.19% (ts), irradiance 2.19% and 2.21%.
+// pixels: scatter 1.17% (ss) and 1.22% (ts), irradiance 1.83% and 1.82%.
 // Bounds and what they catch:
 // - scatter 1.5% in both modes: the back-normal transmittance clamping the
 //   thickness to 0 where a pixel is the surface its light meets (the
 //   shoulders that the back light grazes) reads 3.97% in screen space.
-// - irradiance 2.5%: delta lights' shadows drawn with pcf4x4's four-texel
-//   ramp instead of bilinear PCF read 2.78%.
+// - irradiance 2%: the reference's shadow rays stopped by the point's own
+//   facets near the terminator (ReferenceLighting::occluded without passing
+//   under them) read 2.19% and 2.21%; delta lights' shadows drawn with
+//   pcf4x4's four-texel ramp instead of bilinear PCF read 2.78% before that.
 // ctest: slow content cost=70
 TEST(ScanErrors, TheDiagnosedCausesStayFixed) {
     if (!std::filesystem::exists(std::filesystem::path(dermis::test::sharedContentDir()) / "LeePerrySmith")) {
@@ -40,6 +42,6 @@ TEST(ScanErrors, TheDiagnosedCausesStayFixed) {
         std::printf("%s: total %.2f%%, irradiance %.2f%%, scatter %.2f%%\n", mode, 100 * error(mode, "total"),
                     100 * error(mode, "irradiance"), 100 * error(mode, "scatter"));
         EXPECT_LT(error(mode, "scatter"), 0.015) << mode;
-        EXPECT_LT(error(mode, "irradiance"), 0.025) << mode;
+        EXPECT_LT(error(mode, "irradiance"), 0.02) << mode;
     }
 }
