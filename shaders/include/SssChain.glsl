@@ -59,6 +59,7 @@
 //   kernel is trimmed towards the outline as before. On the head scan that
 //   is worth 1.20% against 1.17% of scatter error (the shoulders' rim), with
 //   g clamped at 4 and measured against the plane all the way.
+//
 // EDGES (include/SssEdges.glsl)
 //   bilateral (the default of lbb), control (c, lcb) or fetch-only (the
 //   benchmarks' bandwidth floor: the fetches of colour and key of every tap

@@ -40,10 +40,8 @@ SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, float planeOffsetM, SssEdgePa
     float bilateralDepthMm = params.bilateralDepthMm;
     float controlScalePerMm = params.controlScalePerMm;
     SssEdgeTap result = SssEdgeTap(1.0, 0.0);
-    float distanceMm = keyDistanceMm(centreKey, tapKey);
-    if (distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5)
-        distanceMm = abs(viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
-    bool sameProfile = distanceMm < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
+    bool sameProfile = keyDistanceMm(centreKey, tapKey) < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
+    float distanceMm = abs(viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
     if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) {
         result.weight = sameProfile ? 1.0 : 0.0;
     } else if (edges == DERMIS_BLUR_EDGES_BILATERAL) {
