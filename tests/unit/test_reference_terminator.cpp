@@ -6,6 +6,7 @@
 // point clear them on the convex sphere but not in the saddle's hollows, where
 // the reference passes over the point's own facets. Either way the irradiance
 // must be the closed form max(N.L, 0) x radiance.
+#include "procedural/ProceduralGrid.h"
 #include "raytrace/Bvh.h"
 #include "reference/CharacterSurface.h"
 #include "reference/ReferenceLighting.h"
@@ -65,24 +66,16 @@ constexpr float kSaddleHalfSizeM = 0.1f;
 
 Model coarseSaddle() {
     Model model;
-    MeshData& mesh = model.mesh;
-    for (int j = 0; j <= kSaddleQuads; ++j) {
-        for (int i = 0; i <= kSaddleQuads; ++i) {
-            const float x = kSaddleHalfSizeM * (2.0f * float(i) / kSaddleQuads - 1.0f);
-            const float y = kSaddleHalfSizeM * (2.0f * float(j) / kSaddleQuads - 1.0f);
-            Vertex v;
-            v.position = glm::vec3(x, y, kSaddleCurvaturePerM * (x * x - y * y));
-            v.normal = glm::normalize(glm::vec3(-2.0f * kSaddleCurvaturePerM * x, 2.0f * kSaddleCurvaturePerM * y, 1.0f));
-            v.uv = glm::vec2(float(i), float(j)) / float(kSaddleQuads);
-            mesh.vertices.push_back(v);
-        }
-    }
-    for (int j = 0; j < kSaddleQuads; ++j) {
-        for (int i = 0; i < kSaddleQuads; ++i) {
-            const uint32_t a = uint32_t(j * (kSaddleQuads + 1) + i), b = a + 1, c = a + kSaddleQuads + 1, d = c + 1;
-            mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});  // counter-clockwise seen from +z
-        }
-    }
+    // Rows along x, columns along y: appendGrid's triangles face cross(+x, +y) = +z.
+    appendGrid(model.mesh, kSaddleQuads, kSaddleQuads, [](int column, int row) {
+        const float x = kSaddleHalfSizeM * (2.0f * float(row) / kSaddleQuads - 1.0f);
+        const float y = kSaddleHalfSizeM * (2.0f * float(column) / kSaddleQuads - 1.0f);
+        Vertex v;
+        v.position = glm::vec3(x, y, kSaddleCurvaturePerM * (x * x - y * y));
+        v.normal = glm::normalize(glm::vec3(-2.0f * kSaddleCurvaturePerM * x, 2.0f * kSaddleCurvaturePerM * y, 1.0f));
+        v.uv = glm::vec2(float(row), float(column)) / float(kSaddleQuads);
+        return v;
+    });
     return model;
 }
 
@@ -97,31 +90,16 @@ constexpr int kPipeFacetsAlong = 4;
 
 Model coarseHalfPipe() {
     Model model;
-    MeshData& mesh = model.mesh;
-    for (int j = 0; j <= kPipeFacetsAlong; ++j) {
-        for (int i = 0; i <= kPipeFacetsAcross; ++i) {
-            const float theta = glm::pi<float>() * (1.0f + float(i) / kPipeFacetsAcross);
-            Vertex v;
-            v.position = glm::vec3(kPipeRadiusM * (2.0f * float(j) / kPipeFacetsAlong - 1.0f),
-                                   kPipeRadiusM * std::sin(theta), kPipeRadiusM * std::cos(theta));
-            v.normal = -glm::vec3(0.0f, std::sin(theta), std::cos(theta));
-            v.uv = glm::vec2(float(i) / kPipeFacetsAcross, float(j) / kPipeFacetsAlong);
-            mesh.vertices.push_back(v);
-        }
-    }
-    for (int j = 0; j < kPipeFacetsAlong; ++j) {
-        for (int i = 0; i < kPipeFacetsAcross; ++i) {
-            const uint32_t a = uint32_t(j * (kPipeFacetsAcross + 1) + i), b = a + 1, c = a + kPipeFacetsAcross + 1,
-                           d = c + 1;
-            for (const glm::uvec3& t : {glm::uvec3(a, b, d), glm::uvec3(a, d, c)}) {
-                // Counter-clockwise seen from the side the normals point to.
-                const glm::vec3 face = glm::cross(mesh.vertices[t.y].position - mesh.vertices[t.x].position,
-                                                  mesh.vertices[t.z].position - mesh.vertices[t.x].position);
-                const bool outward = glm::dot(face, mesh.vertices[t.x].normal) > 0.0f;
-                mesh.indices.insert(mesh.indices.end(), {t.x, outward ? t.y : t.z, outward ? t.z : t.y});
-            }
-        }
-    }
+    // Rows across, columns along x: appendGrid's triangles face cross(d/dtheta, +x), inward.
+    appendGrid(model.mesh, kPipeFacetsAlong, kPipeFacetsAcross, [](int column, int row) {
+        const float theta = glm::pi<float>() * (1.0f + float(row) / kPipeFacetsAcross);
+        Vertex v;
+        v.position = glm::vec3(kPipeRadiusM * (2.0f * float(column) / kPipeFacetsAlong - 1.0f),
+                               kPipeRadiusM * std::sin(theta), kPipeRadiusM * std::cos(theta));
+        v.normal = -glm::vec3(0.0f, std::sin(theta), std::cos(theta));
+        v.uv = glm::vec2(float(row) / kPipeFacetsAcross, float(column) / kPipeFacetsAlong);
+        return v;
+    });
     return model;
 }
 
