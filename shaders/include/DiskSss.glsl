@@ -50,9 +50,11 @@
 //     changes nothing).
 //
 // EDGES (include/SssEdges.glsl, shared with the d'Eon chain)
-//   Each sample goes through sssEdgeTap: bilateral weights or control lerps.
-//   The sums are renormalised per channel by the sum of the weights actually
-//   used, so light that the edge test keeps out does not darken the result.
+//   Each sample goes through sssEdgeTap: both edges lerp a rejected sample's
+//   value to the centre's (bilateral by the depth test's Gaussian, control
+//   linearly), so light that the edge test keeps out neither crosses the
+//   edge nor darkens the result. The sums are divided per channel by the
+//   sum of the weights used.
 //
 // EXTRA TARGETS AND ALPHA
 //   As SssChain.glsl's section of that name: the colour's alpha and the extra

@@ -52,10 +52,10 @@
 //   space.md, "Separable SSS", has both measured).
 //
 // EDGES (include/SssEdges.glsl, shared with the other techniques)
-//   bilateral: a tap's weight is multiplied by the depth test's weight and
-//   the sum is renormalised per channel (and for the scalar weight, below);
-//   control: the tap's value is lerped to the centre's, weights unchanged;
-//   fetch-only: the benchmarks' floor.
+//   bilateral: the tap's value is lerped to the centre's by 1 - the depth
+//   test's Gaussian; control: linearly in the depth difference; weights
+//   unchanged, and the sum divided per channel by them (and for the scalar
+//   weight, below); fetch-only: the benchmarks' floor.
 //
 // EXTRA TARGETS AND ALPHA
 //   As in SssChain.glsl ("EXTRA TARGETS AND ALPHA"): the colour's alpha and

@@ -19,8 +19,9 @@
 //     convex combination of moments, i.e. the moments of a mixture, whose
 //     covariance M - B B^T is positive semi-definite (a per-channel or
 //     per-target weight would not be: B and M must come from one mixture);
-//   - every step above is itself convex (bilateral: renormalised weights;
-//     control: a lerp towards the centre), so nothing leaves that set;
+//   - every step above is itself convex (bilateral and control: a lerp
+//     towards the centre, weights divided by their sum), so nothing leaves
+//     that set;
 //   - the specular lobe is white: no channel of the profile has a claim on
 //     it, and the mean is the profile's average reach.
 //   An alpha of 1 therefore stays 1.

@@ -31,14 +31,14 @@ constexpr const char* kSoftJson =
 
 // The furnace with silhouettes: a 20 mm plane, uniformly lit, seen from 3 cm (3.4 px/mm, so the
 // disk spans tens of pixels) so that its left and right edges lie in the frame against the
-// background. A normalised kernel keeps uniform irradiance uniform, and the per-channel
-// renormalisation keeps it so beside the silhouette, where the edge test drops the background's
-// samples: every plane pixel must equal the same frame without SSS.
+// background. A normalised kernel keeps uniform irradiance uniform, and beside the silhouette the
+// edge test gives the background's samples over to the centre's value: every plane pixel must
+// equal the same frame without SSS.
 // Bound 0.1%: both are half-float irradiance through float sums of weights that add to 1 (the
 // d'Eon chain's furnace measures 0.065% against its closed form); measured below.
-// Broken on purpose: without the renormalisation (colour sums not divided by the weights kept) the
-// pixels at the silhouettes lost 52%/42%/40% (R/G/B, 40 samples; 71% red at 8) with the bilateral
-// test; the control test lerps rejected samples to the centre and was unaffected (0%), as designed.
+// Broken on purpose: with a bilateral sample off the profile given its own value instead of the
+// centre's (the background's zero comes in) the pixels at the silhouettes lose 52%/42%/40% (R/G/B,
+// 40 samples; 71% red at 8); the control test is unaffected (0%), as designed.
 TEST_F(DiskSss, FurnaceStaysUniformUpToTheSilhouettes) {
     const std::vector<std::string> scene = {"camera.position_m=[0,0.03,0]", "characters.0.transform.scale=0.02"};
     auto with = [&](std::vector<std::string> extra) {

@@ -66,19 +66,19 @@ std::pair<double, size_t> worstRatio(const Image& irradiance, const Image& diffu
 }  // namespace
 
 // Uniform irradiance must stay uniform on every SSS pixel, also beside the
-// silhouettes, where the bilateral test drops the taps on the background and
-// the sum is renormalised per channel (and control lerps them to the centre).
+// silhouettes, where both edge tests give the taps on the background over to
+// the centre's value (bilateral and control alike).
 // Bound 0.1%, as the d'Eon chain's furnace (test_sss.cpp): the chain's
 // temporary is half float (2^-11), the weights sum to 1 in float. Measured:
 // 0 (bit exact: 1 in fp16 and the renormalised sum) at 7, 17 and 33 samples
 // in both modes.
-// Broken on purpose: without the renormalisation (the division by the
-// weights' sums removed), bilateral's worst pixel beside the silhouettes is
-// off by 0.39 / 0.64 / 0.66 at 7 / 17 / 33 samples and fails (control, whose
-// weights stay, is unaffected: 1.2e-7). With blue's weight dropped from every
-// tap but the centre, this test still passes (the renormalisation makes any
-// non-negative kernel a furnace); the edge test below catches that (max
-// error 0.2685 at every sample count).
+// Broken on purpose: with a bilateral tap off the profile given its own
+// value instead of the centre's (the background's zero comes in),
+// bilateral's worst pixel beside the silhouettes is off by 0.39 / 0.64 /
+// 0.66 at 7 / 17 / 33 samples and fails (control is unaffected). With blue's
+// weight dropped from every tap but the centre, this test still passes (the
+// division by the weights' sum makes any non-negative kernel a furnace); the
+// edge test below catches that (max error 0.2685 at every sample count).
 TEST_F(SeparableSss, FurnaceWithSilhouettesStaysUniform) {
     for (const char* blur : {"bilateral", "control"}) {
         for (int samples : {7, 17, 33}) {
@@ -232,8 +232,9 @@ TEST_F(SeparableEdge, RowIsTheKernelAppliedToItsIrradianceRow) {
 // and the lobe's sensitivity to them), so the bound is the chain's own
 // departure (x1.1) and 5% of the peak. Measured for separable: worst 3.9e-4,
 // 1.76e-4 away from the silhouettes.
-// Broken on purpose without the renormalisation: separable's worst becomes
-// 1.06e-2 (the moments beside the silhouettes shrink) and fails.
+// Broken on purpose with a bilateral tap off the profile given its own value
+// instead of the centre's: separable's worst becomes 1.06e-2 (the moments
+// beside the silhouettes shrink) and fails.
 TEST_F(SeparableSss, LeanMomentsStayFiniteAndAUniformLobeStaysUniform) {
     test::TempDir dir;
     Image flat;
