@@ -44,8 +44,20 @@ const float kSameSurfacePerDepth = 1e-4;
 // read 0.09 from the texture and showed a diffuse of 0.105 where 512^2 and
 // 1024^2 show 0.36). For those Gaussians the lighting pass's irradiance at
 // this pixel, the same light (ts_irradiance.frag) at this very point, stands
-// in; from 0.5 to 1 texel (the coarser of u and v) it gives way to the
-// texture.
+// in; from 0.5 to 1 texel (the coarser of u and v, or the pixel's footprint
+// where that is coarser) it gives way to the texture.
+//
+// The pixel resolves no more than the texel does: where a texel is smaller
+// than the pixel's footprint, a Gaussian narrower than the footprint keeps
+// the texels' detail (the normal map's bumps, lit) that the pixel cannot
+// show, and the bilinear read at the pixel's centre picks one texel's worth
+// of it: speckle. The same rule then measures the Gaussian against the
+// footprint, where the lighting pass's irradiance is the light of the
+// footprint's filtered normal, as in screen space. Against the matched
+// reference at 640x360 (docs/texture-space.md, "Gaussians under a pixel"):
+// with the texture at 2048^2 instead of the default's choice, the default
+// head 1.41% -> 1.33% and the scan 1.51% -> 1.19%; at the default size
+// 1.364% -> 1.345% and 1.145% -> 1.140% (the matched change at spp 16).
 const float kUnresolvedTexels = 0.5;
 const float kResolvedTexels = 1.0;
 
@@ -70,6 +82,8 @@ void main() {
     vec3 local = texture(uBlurred[0], vUv).rgb;
     vec3 pixelIrradiance = texelFetch(uPixelIrradiance, ivec2(gl_FragCoord.xy), 0).rgb;
     float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.texelUv;
+    float mmPerPixel = viewDepthM / uFrame.pixelsPerMetreAtUnitDepth * 1000.0;
+    float mmResolved = max(mmPerTexel, mmPerPixel);
     vec3 sum = vec3(0.0);
     vec3 weightSum = vec3(0.0);
     vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
@@ -78,7 +92,7 @@ void main() {
         blurred[i] = texture(uBlurred[i], vUv);
         float sigmaMm = sqrt(uTs.gaussians[i].a);
         float trust = seamBlend > 0.0 ? smoothstep(0.0, seamBlend * sigmaMm, borderMm) : 1.0;
-        float resolved = smoothstep(kUnresolvedTexels, kResolvedTexels, sigmaMm / max(mmPerTexel, kTiny));
+        float resolved = smoothstep(kUnresolvedTexels, kResolvedTexels, sigmaMm / max(mmResolved, kTiny));
         vec3 light = mix(pixelIrradiance, blurred[i].rgb, resolved);
         sum += uTs.gaussians[i].rgb * mix(local, light, trust);
         weightSum += uTs.gaussians[i].rgb;
