@@ -224,7 +224,16 @@ Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
         auto renderer = reference::ReferenceRenderer::load(scene, options);
         if (!renderer.ok()) return renderer.error();
         return sharedOrComputed(identity + "\nengine irradiance " + std::to_string(captured.value()), *renderer,
-                                mSettings, [&] { return renderer->renderScatterChange(mSettings.width, mSettings.height); });
+                                mSettings, [&] {
+                                    Image change = renderer->renderScatterChange(mSettings.width, mSettings.height);
+                                    if (const size_t empty = renderer->stats().emptyIrradianceReads; empty > 0)
+                                        log::warn("the matched reference read the engine's irradiance " +
+                                                  std::to_string(empty) +
+                                                  " times where no texel within 3 was covered (a gap in the UV "
+                                                  "layout); those reads count as 0 light (docs/reference.md, "
+                                                  "\"Matched-irradiance mode\")");
+                                    return change;
+                                });
     });
 }
 
