@@ -1,5 +1,7 @@
 #include "mesh/MeshLod.h"
 
+#include "mesh/SurfaceDistance.h"
+
 #include <meshoptimizer.h>
 
 #include <algorithm>
@@ -21,15 +23,16 @@ std::vector<LodLevel> makeLodLevels(const MeshData& mesh, const std::vector<Subm
             const uint32_t* source = mesh.indices.data() + range.firstIndex;
             std::vector<uint32_t> out(range.indexCount);
             const size_t target = size_t(float(range.indexCount / 3) * share) * 3;
-            float relativeError = 0.0f;
-            // A target error of 1 (the mesh's whole extent): the triangle count decides; the error is reported.
+            // A target error of 1 (the mesh's whole extent): the triangle count decides; the error is measured below.
             out.resize(meshopt_simplify(out.data(), source, range.indexCount, positions, mesh.vertices.size(), sizeof(Vertex),
-                                        target, 1.0f, meshopt_SimplifyLockBorder, &relativeError));
-            lod.errorObject = std::max(lod.errorObject, kLodErrorMargin * relativeError * scale);
+                                        target, 1.0f, meshopt_SimplifyLockBorder, nullptr));
             lod.ranges.push_back({uint32_t(lod.indices.size()), uint32_t(out.size()), range.material});
             lod.indices.insert(lod.indices.end(), out.begin(), out.end());
         }
-        if (lod.triangleCount() * 10 > previousTriangles * 9 || lod.errorObject > kLodErrorMargin * kMaxLodRelativeError * scale) break;
+        if (lod.triangleCount() * 10 > previousTriangles * 9) break;
+        const float limit = kMaxLodRelativeError * scale;
+        lod.errorObject = sampledHausdorffDistance(mesh, mesh.indices, lod.indices, kLodErrorSamplesPerEdge, limit);
+        if (lod.errorObject >= limit) break;
         previousTriangles = lod.triangleCount();
         levels.push_back(std::move(lod));
     }

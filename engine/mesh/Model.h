@@ -61,8 +61,12 @@ struct LodLevel {
     std::vector<uint32_t> indices;  // triangle list over the model's vertices
     std::vector<Submesh> ranges;    // one per draw range of the full mesh, same order, into `indices`
     // How far the surface moved from the full mesh's, object units: the
-    // simplifier's estimate with a margin (mesh/MeshLod.h kLodErrorMargin).
+    // sampled Hausdorff distance between the two surfaces (mesh/MeshLod.h).
     float errorObject = 0.0f;
+    // Per Model::materials entry, the material's normal map re-expressed in
+    // this level's tangent frame (mesh/LodNormalMaps.h); an empty Image: the
+    // material's own map (it has none, or no levels' maps were baked).
+    std::vector<Image> normalMaps;
     size_t triangleCount() const { return indices.size() / 3; }
 };
 

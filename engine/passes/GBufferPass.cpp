@@ -77,15 +77,19 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                     glDisable(GL_CULL_FACE);
                 }
                 glBindVertexArray(character.mesh.vertexArray.get());
-                const std::vector<GpuSubmesh>& submeshes = character.submeshesAt(frame.plan.characters[index].lod);
+                const int lod = frame.plan.characters[index].lod;
+                const std::vector<GpuSubmesh>& submeshes = character.submeshesAt(lod);
                 for (size_t s = 0; s < submeshes.size(); ++s) {
                     const GpuSubmesh& submesh = submeshes[s];
                     const GpuMaterial& material = character.material(submesh.material);
                     frame.gl->uploadObject(frame.objectBlock(index, s));
                     glStencilFunc(GL_ALWAYS, frame.plan.sss.slotOf(index, s), 0xFF);
                     bindMaterialMaps(material);
-                    glBindTextureUnit(2, material.leanMap1.get());
-                    glBindTextureUnit(3, material.leanMap2.get());
+                    // A level of detail reads its own normal (and LEAN) maps: the full mesh's normals in its frame.
+                    const GpuNormalMaps* levelMaps = character.lodNormalMapsAt(lod, submesh.material);
+                    if (levelMaps) glBindTextureUnit(1, levelMaps->normalMap.get());
+                    glBindTextureUnit(2, (levelMaps ? levelMaps->leanMap1 : material.leanMap1).get());
+                    glBindTextureUnit(3, (levelMaps ? levelMaps->leanMap2 : material.leanMap2).get());
                     glBindTextureUnit(DERMIS_UNIT_SCATTER_MAP, material.scatterMap.get());
                     glBindTextureUnit(DERMIS_UNIT_THICKNESS_MAP, material.thicknessMap.get());
                     submesh.draw();

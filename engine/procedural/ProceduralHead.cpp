@@ -1,6 +1,6 @@
 #include "procedural/ProceduralHead.h"
 
-#include "procedural/ProceduralBake.h"
+#include "mesh/UvBake.h"
 #include "procedural/ProceduralEar.h"
 #include "procedural/ProceduralGrid.h"
 #include "procedural/ProceduralHeadShape.h"

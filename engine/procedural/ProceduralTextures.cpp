@@ -1,6 +1,6 @@
 #include "procedural/ProceduralTextures.h"
 
-#include "procedural/ProceduralBake.h"
+#include "mesh/UvBake.h"
 #include "procedural/ProceduralHeadShape.h"
 #include "procedural/ProceduralNoise.h"
 

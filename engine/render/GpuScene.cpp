@@ -162,22 +162,31 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     const std::string owner = material.name.empty() ? "material (unnamed)" : "material '" + material.name + "'";
     const char* const mapNames[] = {"albedo", "normal", "metallic-roughness", "roughness", "specular", "scatter", "thickness"};
     for (size_t i = 0; i < std::size(maps); ++i)
-        if (!maps[i].first->empty()) *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
+        if (!maps[i].first->empty() && maps[i].first != &material.normalMap)
+            *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
     if (!material.normalMap.empty()) {
-        const Image& normals = material.normalMap;
-        const GLsizei levels = static_cast<GLsizei>(leanMipLevelCount(normals.width, normals.height));
-        gpu.leanMap1 = createMipmappedTexture(levels, GL_RGBA16F, normals.width, normals.height,
-                                              owner + ": LEAN map 1 (B, M.xx, M.yy)");
-        gpu.leanMap2 = createMipmappedTexture(levels, GL_RG16F, normals.width, normals.height,
-                                              owner + ": LEAN map 2 (M.xy)");
-        // Each band and level goes to the GPU as it is made (lean/LeanBake.h).
-        const Status baked =
-            bakeLeanLevels(normals, 0.0f, [&](int level, int firstRow, const Image& lean1, const Image& lean2) {
-                uploadLevel(gpu.leanMap1, level, lean1, firstRow);
-                uploadLevel(gpu.leanMap2, level, lean2, firstRow);
-            });
-        if (!baked.ok()) return baked.error();
+        auto normals = uploadNormalMaps(material.normalMap, owner);
+        if (!normals.ok()) return normals.error();
+        gpu.normalMap = std::move(normals->normalMap);
+        gpu.leanMap1 = std::move(normals->leanMap1);
+        gpu.leanMap2 = std::move(normals->leanMap2);
     }
+    return gpu;
+}
+
+Result<GpuNormalMaps> uploadNormalMaps(const Image& normals, const std::string& owner) {
+    GpuNormalMaps gpu;
+    gpu.normalMap = uploadImage(normals, owner + ": normal map");
+    const GLsizei levels = static_cast<GLsizei>(leanMipLevelCount(normals.width, normals.height));
+    gpu.leanMap1 = createMipmappedTexture(levels, GL_RGBA16F, normals.width, normals.height,
+                                          owner + ": LEAN map 1 (B, M.xx, M.yy)");
+    gpu.leanMap2 = createMipmappedTexture(levels, GL_RG16F, normals.width, normals.height, owner + ": LEAN map 2 (M.xy)");
+    // Each band and level goes to the GPU as it is made (lean/LeanBake.h).
+    const Status baked = bakeLeanLevels(normals, 0.0f, [&](int level, int firstRow, const Image& lean1, const Image& lean2) {
+        uploadLevel(gpu.leanMap1, level, lean1, firstRow);
+        uploadLevel(gpu.leanMap2, level, lean2, firstRow);
+    });
+    if (!baked.ok()) return baked.error();
     return gpu;
 }
 
@@ -189,6 +198,14 @@ void GpuSubmesh::draw() const {
 const std::vector<GpuSubmesh>& GpuCharacter::submeshesAt(int lod) const {
     if (lod <= 0 || lods.empty()) return submeshes;
     return lods[size_t(std::min(lod, int(lods.size())) - 1)].submeshes;
+}
+
+const GpuNormalMaps* GpuCharacter::lodNormalMapsAt(int lod, size_t material) const {
+    if (lod <= 0 || lods.empty()) return nullptr;
+    const GpuLod& level = lods[size_t(std::min(lod, int(lods.size())) - 1)];
+    if (!level.normalMaps || material >= level.normalMaps->size()) return nullptr;
+    const GpuNormalMaps& maps = (*level.normalMaps)[material];
+    return maps.normalMap.isValid() ? &maps : nullptr;
 }
 
 GpuSubmesh GpuCharacter::wholeMeshAt(int lod) const {
@@ -256,6 +273,17 @@ Result<SharedUpload> makeSharedUpload(const Model& model) {
                                      static_cast<size_t>(range.material)});
         }
         shared.indices.insert(shared.indices.end(), level.indices.begin(), level.indices.end());
+        lod.normalMaps = std::make_shared<std::vector<GpuNormalMaps>>();
+        for (size_t m = 0; m < level.normalMaps.size(); ++m) {
+            GpuNormalMaps maps;
+            if (!level.normalMaps[m].empty()) {
+                auto uploaded = uploadNormalMaps(level.normalMaps[m], "level " + std::to_string(shared.lods.size() + 1) +
+                                                                          " of material " + std::to_string(m));
+                if (!uploaded.ok()) return uploaded.error();
+                maps = std::move(*uploaded);
+            }
+            lod.normalMaps->push_back(std::move(maps));
+        }
         shared.lods.push_back(std::move(lod));
     }
     shared.closedOutward = isClosedOutward(model.mesh);

@@ -81,10 +81,20 @@ struct GpuSubmesh {
     void draw() const;  // with the vertex array bound
 };
 
+// A normal map and the LEAN maps baked from it.
+struct GpuNormalMaps {
+    gl::Texture normalMap;
+    gl::Texture leanMap1;
+    gl::Texture leanMap2;
+};
+
 // A level of detail (mesh/MeshLod.h): its triangles in the mesh's index buffer.
 struct GpuLod {
     GpuSubmesh whole;                   // all of them (material unused)
     std::vector<GpuSubmesh> submeshes;  // per submesh of the full mesh, same order
+    // Per material, its normal map in this level's frame (mesh/LodNormalMaps.h);
+    // empty textures: the material's own. Shared by the characters that share the model.
+    std::shared_ptr<std::vector<GpuNormalMaps>> normalMaps;
 };
 
 struct GpuCharacter {
@@ -102,6 +112,8 @@ struct GpuCharacter {
     // The triangles to draw at level of detail `lod` (0: the full mesh; past the last level, the last).
     const std::vector<GpuSubmesh>& submeshesAt(int lod) const;
     GpuSubmesh wholeMeshAt(int lod) const;
+    // The level's normal maps for `material`, or null where it draws the material's own.
+    const GpuNormalMaps* lodNormalMapsAt(int lod, size_t material) const;
 };
 
 class GpuScene {
@@ -122,6 +134,8 @@ private:
 
 // A material's maps, and the LEAN maps baked from its normal map.
 Result<GpuMaterial> uploadMaterial(const ModelMaterial& material);
+// A normal map, and the LEAN maps baked from it (lean/LeanBake.h).
+Result<GpuNormalMaps> uploadNormalMaps(const Image& normals, const std::string& owner);
 
 // Uploads with a full mip chain; sRGB images get an sRGB 8-bit format, data
 // maps RGBA16F.

@@ -4,6 +4,7 @@
 #include "core/Log.h"
 #include "import/EnvironmentSource.h"
 #include "import/ModelLoader.h"
+#include "mesh/LodNormalMaps.h"
 #include "mesh/MeshLod.h"
 #include "pose/CharacterPose.h"
 #include "scene/SceneLoader.h"
@@ -79,7 +80,15 @@ Result<SceneModels> loadSharedSceneModels(const Scene& scene) {
                 return atSceneKey(scene, "/characters/" + std::to_string(index) + (gltf ? "/mesh/gltf" : ""), made.error());
             }
             if (made->mesh.indices.empty()) return makeError(character.name, "mesh has no triangles");
-            addLevelsOfDetail(*made, levelsOfDetail);
+            // Levels only for a scene that draws them: measuring them and baking their
+            // normal maps takes seconds per distinct mesh (docs/crowds.md).
+            if (scene.settings.lod.maxErrorPx > 0.0f) addLevelsOfDetail(*made, levelsOfDetail);
+            if (!made->lods.empty()) {
+                const auto start = std::chrono::steady_clock::now();
+                bakeLodNormalMaps(*made, character.material.flipV);
+                const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+                log::info("levels' normal maps baked (" + std::to_string(int(ms)) + " ms)");
+            }
             model = std::make_shared<const Model>(std::move(*made));
             loaded.emplace(key, index);
         }

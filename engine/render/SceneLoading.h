@@ -19,7 +19,10 @@ namespace dermis {
 // material and materials) share one: a crowd of one head loads it once, and
 // GpuScene uploads its maps once. Errors name the character; a mesh without
 // triangles is one, and so is an animation clip the model does not have (the
-// message lists those it has).
+// message lists those it has). With settings.lod.max_error_px above 0 each
+// distinct mesh gets its levels of detail (mesh/MeshLod.h) and their normal
+// maps (mesh/LodNormalMaps.h); a scene that turns levels on after loading
+// draws full meshes.
 Result<SceneModels> loadSharedSceneModels(const Scene& scene);
 // The same, each character with a copy of its own (for code that changes them).
 Result<std::vector<Model>> loadSceneModels(const Scene& scene);

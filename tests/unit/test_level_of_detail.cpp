@@ -88,9 +88,13 @@ TEST(LevelOfDetail, EachLevelHasAboutAQuarterOfTheTrianglesAndKeepsTheRanges) {
 }
 
 // The reported error bounds how far each level's surface lies from the true
-// sphere, plus the full mesh's own deviation, measured on a barycentric grid
-// of every triangle. Without kLodErrorMargin (the simplifier's own estimate)
-// it fails: the deviation, less the full mesh's, reaches 1.81x that estimate here.
+// sphere, plus the full mesh's own deviation, measured on a finer barycentric
+// grid of every triangle (6 steps per edge, against the engine's 3), and is
+// not far above it: at most 1.5x the deviation, since the full mesh lies within
+// its own small deviation of the sphere. With the simplifier's own estimate
+// (meshopt_simplify's result error times the mesh's scale, as before the
+// error was measured) it fails: the deviation, less the full mesh's, reached
+// 1.81x that estimate here.
 TEST(LevelOfDetail, TheReportedErrorBoundsTheDeviationFromTheSphere) {
     const Model sphere = unitSphere(128, 64);
     const double fullDeviation = sphereDeviation(sphere.mesh, sphere.mesh.indices);
@@ -102,9 +106,10 @@ TEST(LevelOfDetail, TheReportedErrorBoundsTheDeviationFromTheSphere) {
         std::printf("[ measured ] level %zu: %zu triangles, reported error %.5f, deviation %.5f (full mesh %.5f)\n",
                     l + 1, levels[l].triangleCount(), levels[l].errorObject, deviation, fullDeviation);
         EXPECT_LE(deviation, double(levels[l].errorObject) + fullDeviation) << "level " << l + 1;
+        EXPECT_LE(double(levels[l].errorObject), 1.5 * deviation) << "level " << l + 1;
         EXPECT_GT(deviation, fullDeviation) << "level " << l + 1 << " is no coarser than the full mesh";
         EXPECT_GE(levels[l].errorObject, previousError) << "a coarser level reports less error";
-        EXPECT_LE(levels[l].errorObject, kMaxLodRelativeError * 2.0f * kLodErrorMargin) << "kept past the relative error limit";
+        EXPECT_LE(levels[l].errorObject, kMaxLodRelativeError * 2.0f) << "kept past the relative error limit";
         previousError = levels[l].errorObject;
     }
 }

@@ -1,4 +1,4 @@
-#include "procedural/ProceduralBake.h"
+#include "mesh/UvBake.h"
 
 #include <algorithm>
 #include <cmath>
