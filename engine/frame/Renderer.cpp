@@ -41,7 +41,8 @@ Renderer::Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene
       mGpuScene(std::move(gpuScene)),
       mPrograms(std::move(programs)),
       mBackend(mProfiler),
-      mResources(std::make_unique<FrameResources>(mGpuScene, *mPrograms, mBackend.framebuffers())) {}
+      mResources(std::make_unique<FrameResources>(mGpuScene, *mPrograms, mBackend.framebuffers())),
+      mLevelsMadeAtLoad(scene.settings.lod.maxErrorPx > 0.0f) {}
 
 // Once per character, when texture-space mode first plans it.
 void Renderer::warnOfFallbacks(const FramePlan& plan) {
@@ -53,7 +54,16 @@ void Renderer::warnOfFallbacks(const FramePlan& plan) {
     }
 }
 
+// Once, when levels of detail are asked for after a load that made none.
+void Renderer::warnOfMissingLevels() {
+    if (mWarnedMissingLevels || mLevelsMadeAtLoad || !(mScene.settings.lod.maxErrorPx > 0.0f)) return;
+    mWarnedMissingLevels = true;
+    log::warn(mScene.path + ": settings.lod.max_error_px is above 0, but the scene was loaded without levels of detail "
+                            "(they are made at load, render/SceneLoading.h): full meshes are drawn until it is loaded again");
+}
+
 Status Renderer::renderFrame(const FrameRequest& frameRequest) {
+    warnOfMissingLevels();
     if (const Status loaded = loadEnvironment(mScene, mGeometry); !loaded.ok()) return loaded.error();
     FrameRequest request = frameRequest;
     if (request.previousLods.empty() && mPlan) {

@@ -90,6 +90,7 @@ public:
 private:
     Renderer(const Scene& scene, SceneGeometry geometry, GpuScene gpuScene, std::shared_ptr<Programs> programs);
     void warnOfFallbacks(const FramePlan& plan);
+    void warnOfMissingLevels();
 
     const Scene& mScene;
     SceneGeometry mGeometry;
@@ -106,6 +107,8 @@ private:
     FrameRequest mLastRequest;
     uint64_t mFrame = 0;
     std::set<int> mWarnedFallbacks;  // characters whose texture-space fall-back was logged
+    bool mLevelsMadeAtLoad = false;  // render/SceneLoading.h makes levels of detail only when asked at load
+    bool mWarnedMissingLevels = false;
 };
 
 }  // namespace dermis

@@ -104,6 +104,21 @@ TEST_F(LevelsOfDetail, AStillFrameKeepsItsLevels) {
     EXPECT_EQ(largest, 0.0f);
 }
 
+// Levels are made at load, only when the scene asks for them: turned on
+// afterwards, every head keeps its full mesh, and the renderer says why once.
+TEST_F(LevelsOfDetail, LevelsTurnedOnAfterLoadingDrawFullMeshesAndSaySo) {
+    mScene->settings.lod.maxErrorPx = 0.5f;
+    testing::internal::CaptureStderr();
+    (void)render(Aov::Diffuse, kWidth, kHeight);
+    (void)render(Aov::Diffuse, kWidth, kHeight);
+    const std::string log = testing::internal::GetCapturedStderr();
+    for (int level : levels()) EXPECT_EQ(level, 0);
+    const std::string warning = "loaded without levels of detail";
+    const size_t first = log.find(warning);
+    EXPECT_NE(first, std::string::npos) << log;
+    EXPECT_EQ(log.find(warning, first + 1), std::string::npos) << "said more than once:\n" << log;
+}
+
 }  // namespace
 
 namespace {
