@@ -1,5 +1,7 @@
 #include "passes/ShadowPass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace dermis {
@@ -9,6 +11,27 @@ struct ShadowData {
     graph::TextureHandle depthM;
     graph::TextureHandle zBuffer;
 };
+
+// The map's max-depth mip chain from level 2 up (shaders/shadow_max.comp;
+// level 1 is never read).
+void buildMaxDepthMips(const FrameContext& frame, GLuint map, const graph::TextureDesc& desc) {
+    const int levels = 1 + static_cast<int>(std::floor(std::log2(double(std::max(desc.width, desc.height)))));
+    glUseProgram(frame.gl->programs->shadowMax.get());
+    for (int level = 2; level < levels; ++level) {
+        const int finer = level == 2 ? 0 : level - 1;
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        glUniform1i(0, 1 << (level - finer));
+        glUniform1i(1, finer);
+        glBindTextureUnit(0, map);
+        glBindImageTexture(1, map, level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        const GLuint width = std::max(1u, desc.width >> level);
+        const GLuint height = std::max(1u, desc.height >> level);
+        glDispatchCompute((width + 7) / 8, (height + 7) / 8, 1);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindTextureUnit(0, 0);
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+}
 
 }  // namespace
 
@@ -41,7 +64,7 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 attachments.depth = resources.texture(d.zBuffer);
                 frame.gl->framebuffers->bind(attachments);
                 frame.gl->setViewport(static_cast<int>(desc.width), static_cast<int>(desc.height));
-                const float farClear[4] = {1e30f, 0.0f, 0.0f, 0.0f};
+                const float farClear[4] = {DERMIS_SHADOW_NO_SURFACE_M, 0.0f, 0.0f, 0.0f};
                 glClearBufferfv(GL_COLOR, 0, farClear);
                 glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
                 glEnable(GL_DEPTH_TEST);
@@ -64,6 +87,9 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                     }
                 }
                 glDisable(GL_DEPTH_TEST);
+                // Only the transmittance reads the mips, and only a back light's map.
+                if (frame.plan.lights.block.lights[lightIndex].backLight > 0.5f && !cube)
+                    buildMaxDepthMips(frame, resources.texture(d.depthM), desc);
             });
         handles.push_back(data.depthM);
     }

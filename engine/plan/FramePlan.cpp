@@ -214,6 +214,7 @@ Result<FramePlan> planFrame(const Scene& scene, SceneGeometry& geometry, const F
     plan.height = request.height;
     plan.aov = request.aov;
     plan.materialMipBias = request.materialMipBias;
+    plan.transmittanceSkipSigmas = request.transmittanceSkipSigmas;
     plan.view = makeViewParams(scene.camera, request.width, request.height);
     plan.lean = frameUsesLean(scene.settings);
 

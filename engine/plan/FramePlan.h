@@ -53,6 +53,10 @@ struct FrameRequest {
     // Added to the mip level of material maps (albedo, normal, LEAN); tests
     // force level 0 with a large negative bias for supersampled references.
     float materialMipBias = 0.0f;
+    // The transmittance skips the rings of a point whose back surfaces all lie
+    // this many sigmas beyond its profile's reach (include/Transmittance.glsl);
+    // tests set 0 to compare with the full integral everywhere.
+    float transmittanceSkipSigmas = DERMIS_TRANSMITTANCE_SKIP_SIGMAS;
     // The frame's time, seconds: each animated character's clip time is
     // animation.time_s + animation.speed x timeS (scene/Scene.h).
     float timeS = 0.0f;
@@ -104,6 +108,7 @@ struct FramePlan {
     int height = 0;
     Aov aov = Aov::Final;
     float materialMipBias = 0.0f;
+    float transmittanceSkipSigmas = DERMIS_TRANSMITTANCE_SKIP_SIGMAS;
     ViewParams view;
     bool lean = false;  // the frame carries LEAN moments (plan/SssVariant.h, frameUsesLean)
     std::vector<CharacterPlacement> characters;  // one per scene character

@@ -6,6 +6,7 @@
 #include "scene/SssTechniques.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dermis {
 namespace {
@@ -117,6 +118,7 @@ void FrameResources::uploadFrameBlocks(const FramePlan& plan) {
     frame.pixelsPerMetreAtUnitDepth = plan.view.pixelsPerMetreAtUnitDepth();
     frame.ssaoStrength = settings.ssao.strength;
     frame.materialMipBias = plan.materialMipBias;
+    frame.transmittanceSkipSigmas = plan.transmittanceSkipSigmas;
     glNamedBufferSubData(mFrameUniforms.get(), 0, sizeof frame, &frame);
     glNamedBufferSubData(mLightUniforms.get(), 0, sizeof(gpu::LightsBlock), &plan.lights.block);
     glBindBufferBase(GL_UNIFORM_BUFFER, DERMIS_BINDING_FRAME, mFrameUniforms.get());
@@ -182,7 +184,9 @@ void FrameResources::prepareShadowMaps(const FramePlan& plan) {
         ShadowMap& map = mShadowMaps[slot];
         const graph::TextureDesc& desc = plan.shadows[slot].desc;
         if (map.texture.isValid() && map.desc == desc) continue;
-        map.texture = gl::createTexture2D(desc, "shadow map " + std::to_string(slot));
+        // With a max-depth mip chain (shaders/shadow_max.comp); lookups read level 0.
+        const int levels = 1 + static_cast<int>(std::floor(std::log2(double(std::max(desc.width, desc.height)))));
+        map.texture = gl::createTexture2D(desc, "shadow map " + std::to_string(slot), levels);
         // Outside the map means "unoccluded": clamp to a far border.
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

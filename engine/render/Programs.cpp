@@ -75,6 +75,7 @@ Result<Programs> Programs::build(bool specialize) {
     add(programs.tsBlur, "fullscreen.vert", "ts_blur.frag");
     add(programs.tsGather, "ts_gather.vert", "ts_gather.frag");
     add(programs.skinning, "", "", {}, "skinning.comp");
+    add(programs.shadowMax, "", "", {}, "shadow_max.comp");
     add(programs.transferRotate, "", "", {}, "transfer_rotate.comp");
 
     // Variants of shaders by a define: the LEAN variants (plan/SssVariant.h)

@@ -72,6 +72,7 @@ struct Programs {
     gl::Program tsBlur;
     gl::Program tsGather;
     gl::Program skinning;      // passes/SkinningPass.cpp (compute)
+    gl::Program shadowMax;     // passes/ShadowPass.cpp: a shadow map's max-depth mips (compute)
     gl::Program transferRotate;  // passes/SkinningPass.cpp: the environment transfer turned with the skinning (compute)
 
     gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments

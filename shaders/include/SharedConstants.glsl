@@ -80,6 +80,13 @@
 #define DERMIS_OWN_SURFACE_RAMP_END_MM 0.75
 // Where the widest Gaussian spans fewer pixels, the slab's closed form stands in for the integral.
 #define DERMIS_TRANSMITTANCE_SLAB_BELOW_PX 1.0
+// A point whose every back surface within the rings' reach lies at least this
+// many of the widest Gaussian's sigmas in front of it (by the shadow map's
+// max-depth mips) skips the rings: they could carry at most exp(-6^2 / 2) =
+// 1.5e-8 of the light (FrameBlock::transmittanceSkipSigmas; 0 never skips).
+#define DERMIS_TRANSMITTANCE_SKIP_SIGMAS 6.0
+// What a shadow map stores where no caster covers a texel (m, "infinitely far").
+#define DERMIS_SHADOW_NO_SURFACE_M 1e30
 
 // Outputs of the aov pass (FrameBlock::aov); C++: Aov.
 #define DERMIS_AOV_FINAL 0

@@ -37,6 +37,10 @@
 //     carries; from there to DERMIS_OWN_SURFACE_RAMP_END_MM it counts in part
 //     (smoothstep). The shading normal's tilt spreads its own surface over
 //     a few tenths of a millimetre at the outer rings.
+//   - A point whose back surfaces all lie DERMIS_TRANSMITTANCE_SKIP_SIGMAS
+//     widest sigmas beyond the rings' reach (backSurfaceBeyondReach, from the
+//     back light's max-depth mips) skips the rings: they would add under
+//     1.5e-8 of the light.
 //   Calibration (default.json and the head scan, `dermis compare --errors`
 //   at 320x180, scatter error ss): ramp end 0.5 mm: 1.97% / 1.23%; 0.75 mm:
 //   1.96% / 1.16%; 1.0 mm: 2.06% / 1.14%. docs/screen-space.md has the table.
@@ -153,6 +157,49 @@ vec3 backSurfaceTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams
     return t;
 }
 
+// True when the rings around x cannot carry more than exp(-k^2 / 2) of the
+// light, k = uFrame.transmittanceSkipSigmas (0: never): every first surface
+// over the rings' footprint lies at least k sigmaMaxMm in front of x along
+// the ray. A tap p at distance r <= reach from x has light depth at least
+// x's less r, its first surface at most the deepest the map's max-depth mips
+// (shaders/shadow_max.comp) hold over the footprint, and delta >= their
+// difference (depthPerRayM <= 1); each Gaussian's masses over the rings sum
+// to 1 and its weight is at most 1, so T <= exp(-(k sigma_max)^2 / 2v_max).
+// The block level is the first whose blocks are wider than the footprint, so
+// its four corners' blocks cover it. Not for cube atlases (their faces).
+bool backSurfaceBeyondReach(sampler2D shadowMap, GpuLight light, vec3 x, vec3 towardsLight, float centreMm,
+                            float sigmaMaxMm) {
+    float skipSigmas = uFrame.transmittanceSkipSigmas;
+    if (!(skipSigmas > 0.0) || isCubeShadow(light) || centreMm < skipSigmas * sigmaMaxMm) return false;
+    float reachMm = kBackRingRadii[kBackRings - 1] * sigmaMaxMm;
+    vec4 clip = light.shadowClipFromWorld * vec4(x, 1.0);
+    if (clip.w <= kTiny) return false;
+    vec2 size = vec2(textureSize(shadowMap, 0));
+    vec2 centreTexel = (clip.xy / clip.w * 0.5 + 0.5) * size;
+    vec3 ray = -towardsLight;
+    vec3 across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    vec3 across2 = cross(ray, across1);
+    float radiusTexels = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        vec3 offset = (k < 2 ? across1 : across2) * ((k % 2 == 0 ? 1.0 : -1.0) * reachMm * 1e-3);
+        vec4 edge = light.shadowClipFromWorld * vec4(x + offset, 1.0);
+        if (edge.w <= kTiny) return false;
+        radiusTexels = max(radiusTexels, length((edge.xy / edge.w * 0.5 + 0.5) * size - centreTexel));
+    }
+    radiusTexels += 1.0;  // the nearest-texel reads round to a neighbour
+    int level = int(ceil(log2(2.0 * radiusTexels + 1.0)));
+    if (level >= textureQueryLevels(shadowMap)) return false;
+    ivec2 levelSize = textureSize(shadowMap, level);
+    ivec2 lo = clamp(ivec2(floor(centreTexel - radiusTexels)), ivec2(0), ivec2(size) - 1) >> level;
+    ivec2 hi = clamp(ivec2(floor(centreTexel + radiusTexels)), ivec2(0), ivec2(size) - 1) >> level;
+    lo = min(lo, levelSize - 1);
+    hi = min(hi, levelSize - 1);
+    float deepestM = max(max(texelFetch(shadowMap, lo, level).r, texelFetch(shadowMap, ivec2(hi.x, lo.y), level).r),
+                         max(texelFetch(shadowMap, ivec2(lo.x, hi.y), level).r, texelFetch(shadowMap, hi, level).r));
+    float nearestMm = (lightLinearDepth(light, x) - deepestM) * 1000.0 - reachMm;
+    return nearestMm >= skipSigmas * sigmaMaxMm;
+}
+
 // T(x) / radiance where x's thickness along the ray is centreMm (not -1):
 // the integral above, or the slab's closed form where the widest Gaussian is
 // under DERMIS_TRANSMITTANCE_SLAB_BELOW_PX pixels (pixelsPerMm at x), so that
@@ -163,6 +210,7 @@ vec3 thinRegionTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams 
     if (sigmaMaxMm * pixelsPerMm < DERMIS_TRANSMITTANCE_SLAB_BELOW_PX) {
         return profileTransmittance(profile, centreMm) * backLightFactor(N, towardsLight);
     }
+    if (backSurfaceBeyondReach(shadowMap, light, x, towardsLight, centreMm, sigmaMaxMm)) return vec3(0.0);
     return backSurfaceTransmittance(shadowMap, light, profile, x, N, towardsLight, centreMm, sigmaMaxMm);
 }
 

@@ -58,7 +58,7 @@ DERMIS_BLOCK(FrameBlock, DERMIS_BINDING_FRAME) {
     float nearM;
     float farM;
     int toneMap;            // DERMIS_TONE_MAP_*
-    float unused1;
+    float transmittanceSkipSigmas;  // DERMIS_TRANSMITTANCE_SKIP_SIGMAS, or 0 (tests): include/Transmittance.glsl
     vec4 ambient;           // rgb: uniform ambient irradiance
     vec4 background;        // rgb: background radiance
     float exposure;
