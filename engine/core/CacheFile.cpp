@@ -81,10 +81,12 @@ Status writeCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t 
     return success();
 }
 
-Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
-    std::ifstream in(file, std::ios::binary);
+namespace {
+
+// Opens `file` and checks its header against kind and key.
+Status readHeader(std::ifstream& in, const fs::path& file, const CacheFileKind& kind, uint64_t key, Header& header) {
+    in.open(file, std::ios::binary);
     if (!in) return makeError(file.string(), "cannot be opened");
-    Header header{};
     if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return makeError(file.string(), "shorter than its header");
     if (std::memcmp(header.magic, kind.magic.data(), sizeof header.magic) != 0)
         return makeError(file.string(), "not a " + kind.name + " cache file");
@@ -92,6 +94,10 @@ Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t k
         return makeError(file.string(),
                          "version " + std::to_string(header.version) + ", expected " + std::to_string(kind.version));
     if (header.key != key) return makeError(file.string(), "made from other content (another key)");
+    return success();
+}
+
+Status readPayload(std::ifstream& in, const fs::path& file, const Header& header, const std::vector<MutableBytes>& parts) {
     const uint64_t expected = totalSize(parts);
     if (header.payloadBytes != expected)
         return makeError(file.string(), "holds " + std::to_string(header.payloadBytes) + " bytes of payload, expected " +
@@ -105,6 +111,33 @@ Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t k
     return success();
 }
 
+// Marks a file read as used now, for removeLeastRecentlyUsed.
+void touch(const fs::path& file) {
+    std::error_code error;
+    fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // a read-only cache stays usable
+}
+
+}  // namespace
+
+Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
+    std::ifstream in;
+    Header header{};
+    if (Status opened = readHeader(in, file, kind, key, header); !opened) return opened;
+    return readPayload(in, file, header, parts);
+}
+
+Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t key, std::vector<uint8_t>& payload,
+                     uint64_t maxBytes) {
+    std::ifstream in;
+    Header header{};
+    if (Status opened = readHeader(in, file, kind, key, header); !opened) return opened;
+    if (header.payloadBytes > maxBytes)
+        return makeError(file.string(), "holds " + std::to_string(header.payloadBytes) + " bytes of payload, more than the " +
+                                            std::to_string(maxBytes) + " such a file can hold");
+    payload.resize(size_t(header.payloadBytes));
+    return readPayload(in, file, header, {{payload.data(), payload.size()}});
+}
+
 bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
     std::error_code error;
     if (file.empty() || !fs::exists(file, error)) return false;
@@ -112,7 +145,19 @@ bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64
         log::warn("ignoring the " + kind.name + " cache: " + read.error().message() + "; recomputing");
         return false;
     }
-    fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // used now; a read-only cache stays usable
+    touch(file);
+    return true;
+}
+
+bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, std::vector<uint8_t>& payload,
+                         uint64_t maxBytes) {
+    std::error_code error;
+    if (file.empty() || !fs::exists(file, error)) return false;
+    if (Status read = readCacheFile(file, kind, key, payload, maxBytes); !read) {
+        log::warn("ignoring the " + kind.name + " cache: " + read.error().message() + "; recomputing");
+        return false;
+    }
+    touch(file);
     return true;
 }
 

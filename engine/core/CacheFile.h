@@ -48,12 +48,18 @@ Status writeCacheFile(const std::filesystem::path& file, const CacheFileKind& ki
 Status readCacheFile(const std::filesystem::path& file, const CacheFileKind& kind, uint64_t key,
                      const std::vector<MutableBytes>& parts);
 
+// The same for a payload whose size only the file knows (at most maxBytes).
+Status readCacheFile(const std::filesystem::path& file, const CacheFileKind& kind, uint64_t key,
+                     std::vector<uint8_t>& payload, uint64_t maxBytes);
+
 // What a cache does around the two: reads `file` when it exists, warning
 // once ("ignoring the <name> cache: <why>; recomputing") when it cannot be
 // used. True when `parts` hold the file's payload. Reading marks the file as
 // used now, for removeLeastRecentlyUsed.
 bool readCacheFileOrWarn(const std::filesystem::path& file, const CacheFileKind& kind, uint64_t key,
                          const std::vector<MutableBytes>& parts);
+bool readCacheFileOrWarn(const std::filesystem::path& file, const CacheFileKind& kind, uint64_t key,
+                         std::vector<uint8_t>& payload, uint64_t maxBytes);
 
 // Writes `file`, warning ("<name> not cached: <why>") when it cannot; an
 // empty path (no cache directory) warns that nothing is cached.

@@ -1,11 +1,11 @@
 #include "render/SceneLoading.h"
 
-#include "core/ContentHash.h"
 #include "core/Log.h"
 #include "import/EnvironmentSource.h"
 #include "import/ModelLoader.h"
 #include "mesh/LodNormalMaps.h"
 #include "mesh/MeshLod.h"
+#include "mesh/MeshLodCache.h"
 #include "pose/CharacterPose.h"
 #include "scene/SceneLoader.h"
 
@@ -17,31 +17,24 @@ namespace dermis {
 
 namespace {
 
-uint64_t lodKey(const Model& model) {
-    uint64_t hash = kFnvOffsetBasis;
-    for (const Vertex& vertex : model.mesh.vertices) hash = fnv1a(&vertex.position, sizeof vertex.position, hash);
-    hash = fnv1a(model.mesh.indices.data(), model.mesh.indices.size() * sizeof(uint32_t), hash);
-    for (const Submesh& range : model.drawRanges()) hash = fnv1a(&range, sizeof range, hash);
-    return hash;
-}
-
 // The model's levels of detail, made once per distinct mesh in the scene (two
-// models may share a mesh with different materials); tens of ms each (mesh/MeshLod.h).
+// models may share a mesh with different materials), and cached on disk (mesh/MeshLodCache.h).
 void addLevelsOfDetail(Model& model, std::map<uint64_t, std::vector<LodLevel>>& made) {
-    const uint64_t key = lodKey(model);
+    const uint64_t key = lodCacheKey(model.mesh, model.drawRanges());
     if (auto found = made.find(key); found != made.end()) {
         model.lods = found->second;
         return;
     }
     const auto start = std::chrono::steady_clock::now();
-    model.lods = makeLodLevels(model.mesh, model.drawRanges());
+    bool fromCache = false;
+    model.lods = loadOrMakeLodLevels(model.mesh, model.drawRanges(), &fromCache);
     if (!model.lods.empty()) {
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::string levels;
         for (const LodLevel& level : model.lods) levels += " " + std::to_string(level.triangleCount());
         char line[160];
-        std::snprintf(line, sizeof line, "levels of detail of %zu triangles:%s triangles (%.0f ms)",
-                      model.mesh.triangleCount(), levels.c_str(), ms);
+        std::snprintf(line, sizeof line, "levels of detail of %zu triangles:%s triangles (%.0f ms%s)",
+                      model.mesh.triangleCount(), levels.c_str(), ms, fromCache ? ", from the cache" : "");
         log::info(line);
     }
     made.emplace(key, model.lods);

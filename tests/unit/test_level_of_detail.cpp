@@ -2,7 +2,10 @@
 // (plan/LevelOfDetail.h), against closed forms: a sphere's true surface for
 // the levels' error, and the rule's thresholds for the choice.
 #include "mesh/MeshLod.h"
+#include "mesh/MeshLodCache.h"
 #include "plan/LevelOfDetail.h"
+
+#include "TestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -112,6 +115,47 @@ TEST(LevelOfDetail, TheReportedErrorBoundsTheDeviationFromTheSphere) {
         EXPECT_LE(levels[l].errorObject, kMaxLodRelativeError * 2.0f) << "kept past the relative error limit";
         previousError = levels[l].errorObject;
     }
+}
+
+bool sameLevels(const std::vector<LodLevel>& a, const std::vector<LodLevel>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t l = 0; l < a.size(); ++l) {
+        if (a[l].indices != b[l].indices || a[l].errorObject != b[l].errorObject || a[l].ranges.size() != b[l].ranges.size())
+            return false;
+        for (size_t r = 0; r < a[l].ranges.size(); ++r) {
+            const Submesh &x = a[l].ranges[r], &y = b[l].ranges[r];
+            if (x.firstIndex != y.firstIndex || x.indexCount != y.indexCount || x.material != y.material) return false;
+        }
+    }
+    return true;
+}
+
+// The disk cache (mesh/MeshLodCache.h) gives back the levels made in this
+// process, bit for bit, and a file that holds other content is refused.
+TEST(LevelOfDetail, CachedLevelsAreTheMadeOnes) {
+    const test::TempDir dir;
+    const test::ScopedEnvironmentVariable cache("DERMIS_CACHE_DIR", dir.path().c_str());
+    const Model sphere = unitSphere(128, 64);
+    const std::vector<LodLevel> made = makeLodLevels(sphere.mesh, sphere.drawRanges());
+    bool fromCache = true;
+    const std::vector<LodLevel> first = loadOrMakeLodLevels(sphere.mesh, sphere.drawRanges(), &fromCache);
+    EXPECT_FALSE(fromCache) << "an empty cache directory";
+    const std::vector<LodLevel> second = loadOrMakeLodLevels(sphere.mesh, sphere.drawRanges(), &fromCache);
+    EXPECT_TRUE(fromCache);
+    ASSERT_FALSE(made.empty());
+    EXPECT_TRUE(sameLevels(made, first));
+    EXPECT_TRUE(sameLevels(made, second));
+
+    // The payload's checks: an index past the mesh's vertices, a cut payload, trailing bytes.
+    std::vector<uint8_t> bytes = encodeLodLevels(made);
+    std::vector<LodLevel> decoded;
+    EXPECT_TRUE(decodeLodLevels(bytes, sphere.mesh.vertices.size(), decoded));
+    EXPECT_TRUE(sameLevels(made, decoded));
+    EXPECT_FALSE(decodeLodLevels(bytes, 10, decoded)) << "indices past 10 vertices";
+    std::vector<uint8_t> cut(bytes.begin(), bytes.end() - 4);
+    EXPECT_FALSE(decodeLodLevels(cut, sphere.mesh.vertices.size(), decoded));
+    bytes.push_back(0);
+    EXPECT_FALSE(decodeLodLevels(bytes, sphere.mesh.vertices.size(), decoded));
 }
 
 TEST(LevelOfDetail, SmallMeshesGetNoLevels) {
