@@ -111,12 +111,6 @@ Status readPayload(std::ifstream& in, const fs::path& file, const Header& header
     return success();
 }
 
-// Marks a file read as used now, for removeLeastRecentlyUsed.
-void touch(const fs::path& file) {
-    std::error_code error;
-    fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // a read-only cache stays usable
-}
-
 }  // namespace
 
 Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
@@ -138,27 +132,30 @@ Status readCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t k
     return readPayload(in, file, header, {{payload.data(), payload.size()}});
 }
 
-bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
+namespace {
+
+// What both readCacheFileOrWarn do around their read.
+template <class Read>
+bool readOrWarn(const fs::path& file, const CacheFileKind& kind, Read read) {
     std::error_code error;
     if (file.empty() || !fs::exists(file, error)) return false;
-    if (Status read = readCacheFile(file, kind, key, parts); !read) {
-        log::warn("ignoring the " + kind.name + " cache: " + read.error().message() + "; recomputing");
+    if (Status status = read(); !status) {
+        log::warn("ignoring the " + kind.name + " cache: " + status.error().message() + "; recomputing");
         return false;
     }
-    touch(file);
+    fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // used now; a read-only cache stays usable
     return true;
+}
+
+}  // namespace
+
+bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<MutableBytes>& parts) {
+    return readOrWarn(file, kind, [&] { return readCacheFile(file, kind, key, parts); });
 }
 
 bool readCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, std::vector<uint8_t>& payload,
                          uint64_t maxBytes) {
-    std::error_code error;
-    if (file.empty() || !fs::exists(file, error)) return false;
-    if (Status read = readCacheFile(file, kind, key, payload, maxBytes); !read) {
-        log::warn("ignoring the " + kind.name + " cache: " + read.error().message() + "; recomputing");
-        return false;
-    }
-    touch(file);
-    return true;
+    return readOrWarn(file, kind, [&] { return readCacheFile(file, kind, key, payload, maxBytes); });
 }
 
 void writeCacheFileOrWarn(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<ConstBytes>& parts) {

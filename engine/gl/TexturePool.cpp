@@ -43,6 +43,12 @@ uint64_t textureBytes(const graph::TextureDesc& desc) {
     return uint64_t(desc.width) * desc.height * texelBytes;
 }
 
+int fullMipLevelCount(uint32_t width, uint32_t height) {
+    int levels = 1;
+    for (uint32_t size = std::max(width, height); size > 1; size >>= 1) ++levels;
+    return levels;
+}
+
 Texture createTexture2D(const graph::TextureDesc& desc, std::string_view label, int levels) {
     Texture texture = createTexture(GL_TEXTURE_2D, label);
     glTextureStorage2D(texture.get(), levels, internalFormat(desc.format), static_cast<GLsizei>(desc.width),

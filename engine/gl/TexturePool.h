@@ -14,6 +14,9 @@ GLenum internalFormat(graph::TextureFormat format);
 // The bytes of one level of `desc` in its internal format (a driver may pad).
 uint64_t textureBytes(const graph::TextureDesc& desc);
 
+// Levels of a full mip chain down to 1x1 for a width x height base.
+int fullMipLevelCount(uint32_t width, uint32_t height);
+
 // Immutable single-level 2-D storage, clamp-to-edge, linear filtering for
 // colour and nearest for depth and integer formats.
 Texture createTexture2D(const graph::TextureDesc& desc, std::string_view label, int levels = 1);

@@ -3,7 +3,6 @@
 #include "mesh/UvBake.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 

@@ -1,7 +1,6 @@
 #include "passes/ShadowPass.h"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 namespace dermis {
@@ -12,10 +11,11 @@ struct ShadowData {
     graph::TextureHandle zBuffer;
 };
 
-// The map's max-depth mip chain from level 2 up (shaders/shadow_max.comp;
-// level 1 is never read).
+// The map's max-depth mip chain from level 2 up to its last level
+// (shaders/shadow_max.comp; level 1 is never read).
 void buildMaxDepthMips(const FrameContext& frame, GLuint map, const graph::TextureDesc& desc) {
-    const int levels = 1 + static_cast<int>(std::floor(std::log2(double(std::max(desc.width, desc.height)))));
+    GLint levels = 1;
+    glGetTextureParameteriv(map, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
     glUseProgram(frame.gl->programs->shadowMax.get());
     for (int level = 2; level < levels; ++level) {
         const int finer = level == 2 ? 0 : level - 1;

@@ -6,7 +6,6 @@
 #include "scene/SssTechniques.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace dermis {
 namespace {
@@ -185,8 +184,7 @@ void FrameResources::prepareShadowMaps(const FramePlan& plan) {
         const graph::TextureDesc& desc = plan.shadows[slot].desc;
         if (map.texture.isValid() && map.desc == desc) continue;
         // With a max-depth mip chain (shaders/shadow_max.comp); lookups read level 0.
-        const int levels = 1 + static_cast<int>(std::floor(std::log2(double(std::max(desc.width, desc.height)))));
-        map.texture = gl::createTexture2D(desc, "shadow map " + std::to_string(slot), levels);
+        map.texture = gl::createTexture2D(desc, "shadow map " + std::to_string(slot), gl::fullMipLevelCount(desc.width, desc.height));
         // Outside the map means "unoccluded": clamp to a far border.
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(map.texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

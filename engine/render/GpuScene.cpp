@@ -3,6 +3,7 @@
 
 #include "mesh/MeshTopology.h"
 
+#include "gl/TexturePool.h"
 #include "lean/LeanBake.h"
 #include "plan/SceneGeometry.h"
 #include "gpu/UniformBlocks.h"
@@ -153,17 +154,16 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     gpu.scatter = material.profile.empty() ? -1.0f : material.scatter;
     gpu.thicknessMm = material.thicknessMm;
     const std::pair<const Image*, gl::Texture*> maps[] = {{&material.albedoMap, &gpu.albedoMap},
-                                                          {&material.normalMap, &gpu.normalMap},
                                                           {&material.metallicRoughnessMap, &gpu.metallicRoughnessMap},
                                                           {&material.roughnessMap, &gpu.roughnessMap},
                                                           {&material.specularMap, &gpu.specularMap},
                                                           {&material.scatterMap, &gpu.scatterMap},
                                                           {&material.thicknessMap, &gpu.thicknessMap}};
     const std::string owner = material.name.empty() ? "material (unnamed)" : "material '" + material.name + "'";
-    const char* const mapNames[] = {"albedo", "normal", "metallic-roughness", "roughness", "specular", "scatter", "thickness"};
+    const char* const mapNames[] = {"albedo", "metallic-roughness", "roughness", "specular", "scatter", "thickness"};
     for (size_t i = 0; i < std::size(maps); ++i)
-        if (!maps[i].first->empty() && maps[i].first != &material.normalMap)
-            *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
+        if (!maps[i].first->empty()) *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
+    // The normal map goes up with the LEAN maps baked from it.
     if (!material.normalMap.empty()) {
         auto normals = uploadNormalMaps(material.normalMap, owner);
         if (!normals.ok()) return normals.error();
@@ -218,7 +218,7 @@ bool GpuCharacter::hasLeanMaps() const {
 }
 
 gl::Texture uploadImage(const Image& image, const std::string& label) {
-    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+    const int levels = gl::fullMipLevelCount(uint32_t(image.width), uint32_t(image.height));
     // Colour as sRGB 8-bit. Data maps stay half floats even from an 8-bit
     // file: filtered as RGBA8, llvmpipe interpolates in 8-bit steps, and the
     // scan's texture-space irradiance error (SSS off on both sides, 320x180)

@@ -103,6 +103,12 @@ const float kBackRingRadii[kBackRings] = float[](0.0, 0.175, 0.375, 0.75, 1.5, 2
 // A Gaussian with less of its mass in a ring is left out there (the narrow ones in the outer rings).
 const float kNegligibleMass = 1e-5;
 
+// Two unit vectors across the ray and each other, the rings' axes.
+void acrossRay(vec3 ray, out vec3 across1, out vec3 across2) {
+    across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    across2 = cross(ray, across1);
+}
+
 // The profile's widest Gaussian's sigma (mm): variances increase.
 float widestSigmaMm(ProfileParams profile) { return sqrt(max(profile.gaussians[max(profile.gaussianCount - 1, 0)].a, 1e-6)); }
 
@@ -113,8 +119,8 @@ vec3 backSurfaceTransmittance(sampler2D shadowMap, GpuLight light, ProfileParams
                               vec3 towardsLight, float centreMm, float sigmaMaxMm) {
     int count = profile.gaussianCount;
     vec3 ray = -towardsLight;
-    vec3 across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-    vec3 across2 = cross(ray, across1);
+    vec3 across1, across2;
+    acrossRay(ray, across1, across2);
     // Light-space depth runs along the light's axis (2-D maps) or the ray (cube maps).
     float depthPerRayM = isCubeShadow(light) ? 1.0 : max(dot(ray, light.direction), 0.05);
     vec3 t = vec3(0.0);
@@ -176,9 +182,8 @@ bool backSurfaceBeyondReach(sampler2D shadowMap, GpuLight light, vec3 x, vec3 to
     if (clip.w <= kTiny) return false;
     vec2 size = vec2(textureSize(shadowMap, 0));
     vec2 centreTexel = (clip.xy / clip.w * 0.5 + 0.5) * size;
-    vec3 ray = -towardsLight;
-    vec3 across1 = normalize(cross(ray, abs(ray.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-    vec3 across2 = cross(ray, across1);
+    vec3 across1, across2;
+    acrossRay(-towardsLight, across1, across2);
     float radiusTexels = 0.0;
     for (int k = 0; k < 4; ++k) {
         vec3 offset = (k < 2 ? across1 : across2) * ((k % 2 == 0 ? 1.0 : -1.0) * reachMm * 1e-3);
