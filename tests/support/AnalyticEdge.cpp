@@ -1,7 +1,5 @@
 #include "AnalyticEdge.h"
 
-#include "Quadrature.h"
-
 #include "sss/BurleyProfile.h"
 #include "sss/DiffusionProfile.h"
 
@@ -43,14 +41,25 @@ std::string writeEdgeScene(const TempDir& dir, const std::string& profile, const
     return dir.file("edge.json");
 }
 
-double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals) {
-    if (xMm == 0.0) return 0.5;
+double bickleyKi1(double x) {
+    // Trapezoid rule on [0, inf): the integrand is even and analytic in the strip |Im t| < pi/2
+    // (the poles of 1/cosh), so the error falls like exp(-pi^2 / h) (Trefethen & Weideman 2014,
+    // Theorem 5.1): about 1e-43 at h = 0.1, far below double rounding.
+    constexpr double h = 0.1;
+    double sum = 0.5 * std::exp(-x);
+    for (int k = 1;; ++k) {
+        const double c = std::cosh(k * h);
+        const double term = std::exp(-x * c) / c;
+        sum += term;
+        if (term < 1e-17 * sum) break;
+    }
+    return h * sum;
+}
+
+double burleyEdgeResponse(double xMm, double shapeDistanceMm) {
     const double a = std::fabs(xMm);
-    const double dMm = shapeDistanceMm;
-    const double dark = quadrature::simpson([&](double t) {
-        const double r = a * std::cosh(t);
-        return 2.0 * M_PI * r * burleyRadialProfile(r, dMm) * std::acos(1.0 / std::cosh(t)) / M_PI * a * std::sinh(t);
-    }, 0.0, std::acosh(std::fmax(200.0 * dMm / a, 1.0)), intervals);
+    const double d = shapeDistanceMm;
+    const double dark = (bickleyKi1(a / d) + 3.0 * bickleyKi1(a / (3.0 * d))) / (4.0 * M_PI);
     return xMm < 0.0 ? dark : 1.0 - dark;
 }
 

@@ -34,11 +34,18 @@ struct EdgeError {
     double rms = 0.0;
 };
 
+// The Bickley-Naylor function Ki_1(x) = integral over t in [0, inf) of exp(-x cosh t) / cosh t
+// (Abramowitz & Stegun 1964, 11.2.17; x >= 0).
+double bickleyKi1(double x);
+
 // Burley's normalized diffusion's edge response (docs/reference.md) at x mm for shape distance
-// d mm, by numerical integration: a point at distance a on the dark side receives the light of
-// each ring of radius r > a in proportion to the angle 2 acos(a / r) that lies in the lit half,
-// with r = a cosh(t), up to r = 200 d (Simpson, `intervals` even).
-double burleyEdgeResponse(double xMm, double shapeDistanceMm, int intervals = 40000);
+// d mm, in closed form. A point at distance a on the dark side receives the light of each ring of
+// radius r > a in proportion to the angle 2 acos(a / r) that lies in the lit half:
+// dark(a) = integral over r > a of R(r) 2 r acos(a / r) dr. For each of the profile's two terms
+// e^(-r/l) / (8 pi d r) (l = d, 3d), integrating by parts and setting r = a cosh t leaves
+// (l / (4 pi d)) Ki_1(a / l), so dark(a) = (Ki_1(a/d) + 3 Ki_1(a/3d)) / (4 pi); at a = 0,
+// Ki_1(0) = pi/2 gives 1/2.
+double burleyEdgeResponse(double xMm, double shapeDistanceMm);
 
 // The diffuse AOV's middle row against the profile's edge response (skin when null).
 EdgeError edgeError(const Image& diffuse, int width, int height, const DiffusionProfile* profile = nullptr);

@@ -117,6 +117,36 @@ TEST(BurleyProfile, GaussianCdfOfTheFitIsItsRadialProfileIntegrated) {
     }
 }
 
+// The edge response's closed form (AnalyticEdge.h) against two independent computations:
+// - the defining integral over rings, dark(a) = int_a^inf R(r) 2 r acos(a/r) dr with r = a cosh t,
+//   by Simpson's rule (to r = 200 d; 40000 intervals reach 1e-9 there);
+// - the Bickley function's derivative, d/dx Ki_1(x) = -K_0(x) (Abramowitz & Stegun 1964,
+//   11.2.12), against std::cyl_bessel_k, with Ki_1(0) = pi/2.
+// Bounds: 1e-9 for the integral (the Simpson sum's own error), 1e-8 relative for the central
+// difference (step 1e-6: truncation h^2 K_0''/6 K_0, 4e-10 at x = 0.01; rounding about 1e-10). Broken on
+// purpose: dropping the e^(-r/3d) term's factor 3 is off by 0.25 at x = 0 and fails both; a
+// trapezoid step of 1.0 instead of 0.1 is off by up to 9e-5 and fails the first.
+TEST(BurleyProfile, EdgeResponseClosedFormMatchesItsIntegral) {
+    for (double d : {0.176, 0.739}) {
+        for (double x : {-6.0, -1.5, -0.3, -0.02, 0.001, 0.05, 0.4, 2.0}) {
+            const double a = std::fabs(x);
+            const double dark = simpson([&](double t) {
+                const double r = a * std::cosh(t);
+                return 2.0 * r * burleyRadialProfile(r, d) * std::acos(1.0 / std::cosh(t)) * a * std::sinh(t);
+            }, 0.0, std::acosh(200.0 * d / a), 40000);
+            EXPECT_NEAR(test::burleyEdgeResponse(x, d), x < 0.0 ? dark : 1.0 - dark, 1e-9) << "x " << x << " d " << d;
+        }
+    }
+    EXPECT_NEAR(test::bickleyKi1(0.0), kPi / 2.0, 1e-15);
+    EXPECT_NEAR(test::burleyEdgeResponse(0.0, 0.5), 0.5, 1e-15);
+    for (double x : {0.01, 0.1, 1.0, 5.0, 20.0}) {
+        constexpr double h = 1e-6;
+        const double derivative = (test::bickleyKi1(x + h) - test::bickleyKi1(x - h)) / (2.0 * h);
+        const double k0 = std::cyl_bessel_k(0.0, x);
+        EXPECT_NEAR(-derivative / k0, 1.0, 1e-8) << "x " << x;
+    }
+}
+
 TEST(BurleyProfile, FitEdgeResponseIsWithinHalfItsCdfError) {
     Result<DiffusionProfile> fit = fitBurleyGaussians(kSkin1);
     ASSERT_TRUE(fit.ok()) << fit.error().message();
