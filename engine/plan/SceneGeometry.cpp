@@ -24,7 +24,13 @@ SceneGeometry::SceneGeometry(const SceneModels& models) {
 
 const UvLayout& SceneGeometry::uvLayout(size_t character) {
     Character& c = mCharacters[character];
-    if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh));
+    if (!c.uvLayout) {
+        // Characters that share a model share its layout.
+        for (const Character& other : mCharacters) {
+            if (other.model == c.model && other.uvLayout) c.uvLayout = other.uvLayout;
+        }
+        if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh));
+    }
     return *c.uvLayout;
 }
 

@@ -49,7 +49,8 @@ public:
     // first (mesh/Model.h LodLevel); empty: the character has no levels.
     const std::vector<float>& lodErrorsObject(size_t character) const { return mCharacters[character].lodErrorsObject; }
     // The character's UV layout, analysed on first use (CPU; the procedural
-    // head takes a fraction of a second).
+    // head takes a fraction of a second) and shared by the characters that
+    // share its model.
     const UvLayout& uvLayout(size_t character);
     // The environment's map, extracted light and SH as loaded
     // (render/SceneLoading.h); null before loading. It stays while the scene has none.

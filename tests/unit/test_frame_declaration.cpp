@@ -154,13 +154,14 @@ DeclaredFrames crowd(size_t count, const std::vector<std::string>& overrides = {
     EXPECT_TRUE(scene.ok()) << scene.error().message();
     if (!scene.ok()) return DeclaredFrames(Scene{}, SceneGeometry{});
     scene->characters.resize(count);
-    static const std::vector<Model> head = [] {
+    // Every character shares the one head, as the renderer's loader shares a model that characters
+    // repeat (render/SceneLoading.h): copying its maps 32 times took most of these tests' time.
+    static const std::shared_ptr<const Model> head = [] {
         auto models = loadSceneModels(*loadScene(test::contentScene("default.json")));
         EXPECT_TRUE(models.ok());
-        return models.ok() ? std::move(*models) : std::vector<Model>{};
+        return models.ok() ? std::make_shared<const Model>(std::move(models->front())) : nullptr;
     }();
-    std::vector<Model> models;
-    for (size_t c = 0; c < count && !head.empty(); ++c) models.push_back(head.front());
+    const SceneModels models(head ? count : 0, head);
     return DeclaredFrames(std::move(*scene), SceneGeometry(models));
 }
 
