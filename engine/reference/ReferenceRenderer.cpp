@@ -478,7 +478,64 @@ Image ReferenceRenderer::renderDiffuseProgressive(int width, int height, const P
 }
 
 Image ReferenceRenderer::renderScatterChange(int width, int height) {
-    return renderPixels(Quantity::ScatterChange, width, height);
+    const int spp = mOptions.samplesPerPixel;
+    if (strataPerSide(spp) <= 1) return renderPixels(Quantity::ScatterChange, width, height);
+    // The change box-filters the surface that the engine's pixel shows, which is the one at the
+    // pixel's centre. Sub-samples that meet the background or another character are not that
+    // surface: averaging their 0 (or another surface's change) in scaled an outline pixel's
+    // change by its coverage. A pixel whose sub-samples do not all meet the centre's character
+    // averages those that do, or takes its centre's value when none does.
+    const CameraRays camera(mScene.camera, width, height);
+    const float tMin = mScene.camera.nearM, tMax = mScene.camera.farM;
+    const size_t pixels = size_t(width) * size_t(height);
+    std::vector<int> centreCharacter(pixels, -1);
+    std::vector<uint8_t> mixed(pixels, 0);
+    parallelFor(size_t(height), mOptions.threads, [&](size_t y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t p = y * size_t(width) + size_t(x);
+            centreCharacter[p] = trace(camera.through(float(x) + 0.5f, float(y) + 0.5f), tMin, tMax).character;
+            for (const glm::vec2& offset : subSampleOffsets(x, int(y), spp)) {
+                const Ray ray = camera.through(float(x) + offset.x, float(y) + offset.y);
+                mixed[p] = mixed[p] || trace(ray, tMin, tMax).character != centreCharacter[p];
+            }
+        }
+    });
+    std::vector<uint32_t> uniform;
+    std::vector<Ray> rays;
+    std::vector<uint32_t> rayPixel;
+    for (uint32_t p = 0; p < uint32_t(pixels); ++p) {
+        if (!mixed[p]) {
+            uniform.push_back(p);
+            continue;
+        }
+        const int x = int(p % uint32_t(width)), y = int(p / uint32_t(width));
+        for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
+            rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
+            rayPixel.push_back(p);
+        }
+        rays.push_back(camera.through(float(x) + 0.5f, float(y) + 0.5f));  // the centre: each pixel's last ray
+        rayPixel.push_back(p);
+    }
+    Image image = renderPixels(Quantity::ScatterChange, width, height, &uniform);
+    if (rays.empty()) return image;
+    std::vector<int> rayCharacter(rays.size());
+    parallelFor(rays.size(), mOptions.threads, [&](size_t r) { rayCharacter[r] = trace(rays[r], tMin, tMax).character; });
+    const std::vector<glm::vec4> values =
+        evaluate(Quantity::ScatterChange, rays, tMin, tMax, &camera, 32 * size_t(spp + 1));
+    glm::dvec4 sum(0.0);
+    int count = 0;
+    for (size_t r = 0; r < rays.size(); ++r) {
+        const uint32_t p = rayPixel[r];
+        if (r + 1 == rays.size() || rayPixel[r + 1] != p) {
+            image.texels[p] = count > 0 ? glm::vec4(sum / double(count)) : values[r];
+            sum = glm::dvec4(0.0);
+            count = 0;
+        } else if (rayCharacter[r] == centreCharacter[p]) {
+            sum += glm::dvec4(values[r]);
+            ++count;
+        }
+    }
+    return image;
 }
 
 uint64_t ReferenceRenderer::contentHash() const {

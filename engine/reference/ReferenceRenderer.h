@@ -139,8 +139,10 @@ public:
     // pass) and the quadrature's error (the density) is not noise: docs/reference.md
     // gives both.
     Image renderDiffuseProgressive(int width, int height, const ProgressiveSettings& settings);
-    // Delta at the same sub-samples as renderDiffuse: 0 on characters without SSS or
-    // without an engine texture, and everywhere when SSS is off.
+    // Delta at the same sub-samples as renderDiffuse, averaged over those that meet
+    // the character at the pixel's centre (the surface the engine's pixel shows; the
+    // centre itself where none does): 0 on characters without SSS or without an
+    // engine texture, and everywhere when SSS is off.
     Image renderScatterChange(int width, int height);
     // At each pixel centre's hit: the distance in mm along minus the geometric normal
     // (turned to the viewer's side) to the next surface of the same character,

@@ -194,8 +194,8 @@ TEST(BenchCli, LeavingOutSssIsScatterError) {
 // The default head's scatter error, where the ear carries the back light
 // through (include/Transmittance.glsl; docs/screen-space.md, "Transmittance
 // against the reference"): `compare --errors` at 320x180 with cheap
-// references (density 1, the irradiance at 1024^2; 31 s on 2 cores).
-// Measured 1.88% (ss) and 2.27% (ts). The thickness along the ray at the
+// references (density 1, the irradiance at 1024^2; 27 s on 2 cores).
+// Measured 1.57% (ss) and 1.76% (ts). The thickness along the ray at the
 // pixel alone (Jimenez et al. 2010) read 3.33%, and the translucent shadow
 // map in texture space 3.77%: 2.5% fails both.
 // ctest: cost=35

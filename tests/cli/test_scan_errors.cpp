@@ -14,7 +14,7 @@ using dermis::test::TempDir;
 // `dermis compare content/scenes/lee_perry_smith.json --errors --size 320x180
 // --change-spp 4` (about 55 s on 2 cores; no environment, so the references
 // have no noise and the figures repeat to the last digit). Measured, all SSS
-// pixels: scatter 1.17% (ss) and 1.22% (ts), irradiance 1.83% and 1.82%.
+// pixels: scatter 1.16% (ss) and 1.21% (ts), irradiance 1.83% and 1.82%.
 // Bounds and what they catch:
 // - scatter 1.5% in both modes: the back-normal transmittance clamping the
 //   thickness to 0 where a pixel is the surface its light meets (the

@@ -277,3 +277,60 @@ TEST(ReferenceMatched, EmptyTexelsTakeTheNearestCoveredOneWithinReach) {
     EXPECT_FLOAT_EQ((*rows)->sampleAt(glm::vec2(0.5f, 0.25f)).r, 1.0f);
     EXPECT_FLOAT_EQ((*rows)->sampleAt(glm::vec2(0.5f, 0.75f)).r, 3.0f);
 }
+
+// The change at an outline pixel box-filters the surface the engine's pixel shows, the one at
+// its centre, over the sub-samples that meet it. The plane's edge (x = 0.5 m) runs down the
+// frame 0.3 pixels left of a column's right side, so that column's centres lie on the plane and
+// its right-hand sub-samples partly off it. Pixels are 0.01 mm: across the covered 0.7 of a
+// pixel the exact change of a uniform texture, E (edge response - 1) near an edge, moves by
+// about 1% of its value (the skin profile's steepest slope, w_0 phi(0) / sigma_0 = 1.2 per mm,
+// over 0.007 mm, against |change| of about E / 2). Bound: each such pixel's change within 5% of
+// its centre's (spp 1); measured 2.5%. Broken on purpose: averaging every sub-sample, the
+// background's 0 included (the old rule), scales those pixels by their coverage: 25 of the 32
+// rows are partly covered, and they are off by up to 51%.
+TEST(ReferenceMatched, OutlinePixelsAverageTheSurfaceAtTheirCentre) {
+    Scene scene = bareScene();
+    scene.lights.push_back(sunFromAbove());
+    scene.characters.push_back(proceduralCharacter("plane", "plane", "skin"));
+    constexpr int kSize = 32;
+    constexpr float kPixelM = 1e-5f;
+    constexpr float kFovDeg = 10.0f;
+    const float heightM = 0.5f * kSize * kPixelM / std::tan(glm::radians(0.5f * kFovDeg));
+    const float edgeColumn = 15.7f;  // where the edge crosses the frame, in pixels from the left
+    scene.camera.positionM = glm::vec3(0.5f + (0.5f * kSize - edgeColumn) * kPixelM, heightM, 0.0f);
+    scene.camera.targetM = glm::vec3(scene.camera.positionM.x, 0.0f, 0.0f);
+    scene.camera.up = glm::vec3(0.0f, 0.0f, -1.0f);
+    scene.camera.verticalFovDeg = kFovDeg;
+    scene.camera.nearM = 1e-4f;
+    scene.camera.farM = 1.0f;
+    Image texture;
+    texture.width = 8;
+    texture.height = 4;
+    texture.texels.assign(32, glm::vec4(0.9f, 0.7f, 0.4f, 1.0f));
+    auto changeAt = [&](int samplesPerPixel) {
+        reference::ReferenceOptions options;
+        options.engineIrradiance.push_back(texture);
+        options.samplesPerPixel = samplesPerPixel;
+        auto renderer = reference::ReferenceRenderer::create(scene, planeModels(), options);
+        EXPECT_TRUE(renderer.ok());
+        return renderer.ok() ? renderer->renderScatterChange(kSize, kSize) : Image{};
+    };
+    const Image centre = changeAt(1);
+    const Image box = changeAt(4);
+    ASSERT_EQ(box.texels.size(), centre.texels.size());
+    const int column = int(edgeColumn);
+    int compared = 0;
+    float worst = 0.0f;
+    for (int y = 0; y < kSize; ++y) {
+        ASSERT_EQ(centre.at(column, y).a, 1.0f) << "the column's centres must lie on the plane";
+        ASSERT_EQ(centre.at(column + 1, y).a, 0.0f) << "the next column's must not";
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_LT(centre.at(column, y)[c], -0.1f * texture.texels[0][c]) << "the edge should take light";
+            worst = std::max(worst, std::fabs(box.at(column, y)[c] / centre.at(column, y)[c] - 1.0f));
+        }
+        EXPECT_EQ(box.at(column, y).a, 1.0f);
+        ++compared;
+    }
+    std::printf("outline column: largest |box / centre - 1| %.4f over %d pixels\n", double(worst), compared);
+    EXPECT_LT(worst, 0.05f);
+}

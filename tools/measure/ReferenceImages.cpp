@@ -201,7 +201,8 @@ Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
     scene.settings.sss.enabled = scatters;
     const std::string identity =
         identityOf(scene, mSettings, "scatter change, engine irradiance " + std::to_string(mSettings.irradianceSizeTexels) +
-                                         ", spp " + std::to_string(mSettings.changeSamplesPerPixel));
+                                         ", spp " + std::to_string(mSettings.changeSamplesPerPixel) +
+                                         " over the centre's surface");
     // One file per lighting setup, named by its identity's hash.
     char name[64];
     std::snprintf(name, sizeof name, "scatter_change_%016zx", std::hash<std::string>{}(identity));
