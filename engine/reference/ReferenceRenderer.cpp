@@ -250,7 +250,8 @@ std::vector<glm::vec4> ReferenceRenderer::scatterChangeAlongRays(const std::vect
 }
 
 std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin,
-                                                   float tMax, const CameraRays* camera, size_t itemSize) {
+                                                   float tMax, const CameraRays* camera, size_t itemSize,
+                                                   std::vector<int>* hitCharacters) {
     const int threads = mOptions.threads;
     const size_t items = (rays.size() + itemSize - 1) / itemSize;
     auto forItem = [&](size_t item, auto&& perRay) {
@@ -262,6 +263,10 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
     std::vector<Hit> hits(rays.size());
     parallelFor(items, threads, [&](size_t item) { forItem(item, [&](size_t r) { hits[r] = trace(rays[r], tMin, tMax); }); });
     const auto traced = Clock::now();
+    if (hitCharacters) {
+        hitCharacters->resize(rays.size());
+        for (size_t r = 0; r < rays.size(); ++r) (*hitCharacters)[r] = hits[r].character;
+    }
 
     // Shade the base cells that some SSS hit reads, once each.
     std::vector<std::vector<std::vector<Sample>>> baseSamples(mGroups.size());
@@ -321,6 +326,7 @@ std::vector<glm::vec4> ReferenceRenderer::evaluate(Quantity quantity, const std:
 Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, const std::vector<uint32_t>* only) {
     const CameraRays camera(mScene.camera, width, height);
     const int spp = mOptions.samplesPerPixel;
+    const float tMin = mScene.camera.nearM, tMax = mScene.camera.farM;
     std::vector<uint32_t> pixels;
     if (only) {
         pixels = *only;
@@ -336,21 +342,59 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
             rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
         }
     }
+    // The scattering change box-filters the surface that the engine's pixel
+    // shows, the one at the pixel's centre: it averages the sub-samples that
+    // meet the centre's character. Averaging every one, the background's 0
+    // scaled an outline pixel's change by its coverage. Where none meets it,
+    // the centre's own change stands.
+    const bool centreSurfaceOnly = quantity == Quantity::ScatterChange && strataPerSide(spp) > 1;
+    std::vector<int> centreCharacter;
+    if (centreSurfaceOnly) {
+        centreCharacter.resize(pixels.size());
+        parallelFor(pixels.size(), mOptions.threads, [&](size_t i) {
+            const int x = int(pixels[i] % uint32_t(width)), y = int(pixels[i] / uint32_t(width));
+            centreCharacter[i] = trace(camera.through(float(x) + 0.5f, float(y) + 0.5f), tMin, tMax).character;
+        });
+    }
     // One work item per pixel row's worth of sub-samples; a scattered subset in items of
     // kSubsetItemPixels, or its few items would leave threads idle at the end.
     constexpr size_t kSubsetItemPixels = 32;
     const size_t itemPixels = only ? kSubsetItemPixels : size_t(width);
-    const std::vector<glm::vec4> values =
-        evaluate(quantity, rays, mScene.camera.nearM, mScene.camera.farM, &camera, itemPixels * size_t(spp));
+    std::vector<int> hitCharacters;
+    const std::vector<glm::vec4> values = evaluate(quantity, rays, tMin, tMax, &camera, itemPixels * size_t(spp),
+                                                   centreSurfaceOnly ? &hitCharacters : nullptr);
     Image image;
     image.width = width;
     image.height = height;
     image.colourSpace = ColourSpace::Linear;
     image.texels.assign(size_t(width) * size_t(height), glm::vec4(0.0f));
+    std::vector<Ray> centreRays;
+    std::vector<uint32_t> centrePixels;
     for (size_t i = 0; i < pixels.size(); ++i) {
         glm::dvec4 sum(0.0);
-        for (size_t s = 0; s < size_t(spp); ++s) sum += glm::dvec4(values[i * size_t(spp) + s]);
-        image.texels[pixels[i]] = glm::vec4(sum / double(spp));
+        int count = 0;
+        for (size_t r = i * size_t(spp); r < (i + 1) * size_t(spp); ++r) {
+            if (centreSurfaceOnly && hitCharacters[r] != centreCharacter[i]) continue;
+            sum += glm::dvec4(values[r]);
+            ++count;
+        }
+        if (count > 0) {
+            image.texels[pixels[i]] = glm::vec4(sum / double(count));
+        } else {
+            const int x = int(pixels[i] % uint32_t(width)), y = int(pixels[i] / uint32_t(width));
+            centreRays.push_back(camera.through(float(x) + 0.5f, float(y) + 0.5f));
+            centrePixels.push_back(pixels[i]);
+        }
+    }
+    if (!centreRays.empty()) {
+        const ReferenceStats first = mStats;
+        const std::vector<glm::vec4> centres = evaluate(quantity, centreRays, tMin, tMax, &camera, kSubsetItemPixels);
+        for (size_t i = 0; i < centres.size(); ++i) image.texels[centrePixels[i]] = centres[i];
+        mStats.traceSeconds += first.traceSeconds;
+        mStats.baseCellSeconds += first.baseCellSeconds;
+        mStats.scatterSeconds += first.scatterSeconds;
+        mStats.shadedBaseCells = std::max(mStats.shadedBaseCells, first.shadedBaseCells);  // the cells overlap
+        mStats.sssHits += first.sssHits;
     }
     return image;
 }
@@ -478,64 +522,7 @@ Image ReferenceRenderer::renderDiffuseProgressive(int width, int height, const P
 }
 
 Image ReferenceRenderer::renderScatterChange(int width, int height) {
-    const int spp = mOptions.samplesPerPixel;
-    if (strataPerSide(spp) <= 1) return renderPixels(Quantity::ScatterChange, width, height);
-    // The change box-filters the surface that the engine's pixel shows, which is the one at the
-    // pixel's centre. Sub-samples that meet the background or another character are not that
-    // surface: averaging their 0 (or another surface's change) in scaled an outline pixel's
-    // change by its coverage. A pixel whose sub-samples do not all meet the centre's character
-    // averages those that do, or takes its centre's value when none does.
-    const CameraRays camera(mScene.camera, width, height);
-    const float tMin = mScene.camera.nearM, tMax = mScene.camera.farM;
-    const size_t pixels = size_t(width) * size_t(height);
-    std::vector<int> centreCharacter(pixels, -1);
-    std::vector<uint8_t> mixed(pixels, 0);
-    parallelFor(size_t(height), mOptions.threads, [&](size_t y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t p = y * size_t(width) + size_t(x);
-            centreCharacter[p] = trace(camera.through(float(x) + 0.5f, float(y) + 0.5f), tMin, tMax).character;
-            for (const glm::vec2& offset : subSampleOffsets(x, int(y), spp)) {
-                const Ray ray = camera.through(float(x) + offset.x, float(y) + offset.y);
-                mixed[p] = mixed[p] || trace(ray, tMin, tMax).character != centreCharacter[p];
-            }
-        }
-    });
-    std::vector<uint32_t> uniform;
-    std::vector<Ray> rays;
-    std::vector<uint32_t> rayPixel;
-    for (uint32_t p = 0; p < uint32_t(pixels); ++p) {
-        if (!mixed[p]) {
-            uniform.push_back(p);
-            continue;
-        }
-        const int x = int(p % uint32_t(width)), y = int(p / uint32_t(width));
-        for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
-            rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
-            rayPixel.push_back(p);
-        }
-        rays.push_back(camera.through(float(x) + 0.5f, float(y) + 0.5f));  // the centre: each pixel's last ray
-        rayPixel.push_back(p);
-    }
-    Image image = renderPixels(Quantity::ScatterChange, width, height, &uniform);
-    if (rays.empty()) return image;
-    std::vector<int> rayCharacter(rays.size());
-    parallelFor(rays.size(), mOptions.threads, [&](size_t r) { rayCharacter[r] = trace(rays[r], tMin, tMax).character; });
-    const std::vector<glm::vec4> values =
-        evaluate(Quantity::ScatterChange, rays, tMin, tMax, &camera, 32 * size_t(spp + 1));
-    glm::dvec4 sum(0.0);
-    int count = 0;
-    for (size_t r = 0; r < rays.size(); ++r) {
-        const uint32_t p = rayPixel[r];
-        if (r + 1 == rays.size() || rayPixel[r + 1] != p) {
-            image.texels[p] = count > 0 ? glm::vec4(sum / double(count)) : values[r];
-            sum = glm::dvec4(0.0);
-            count = 0;
-        } else if (rayCharacter[r] == centreCharacter[p]) {
-            sum += glm::dvec4(values[r]);
-            ++count;
-        }
-    }
-    return image;
+    return renderPixels(Quantity::ScatterChange, width, height);
 }
 
 uint64_t ReferenceRenderer::contentHash() const {

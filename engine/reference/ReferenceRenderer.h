@@ -175,8 +175,10 @@ private:
                        const std::vector<std::vector<std::vector<Sample>>>* baseSamples) const;
     const SampleValues* valuesFor(Quantity quantity, size_t character) const;
     // The quantity along each ray; with a camera, maps are read at its pixel footprint.
+    // hitCharacters (optional): each ray's character, -1 for the background.
     std::vector<glm::vec4> evaluate(Quantity quantity, const std::vector<Ray>& rays, float tMin, float tMax,
-                                    const CameraRays* camera, size_t itemSize);
+                                    const CameraRays* camera, size_t itemSize,
+                                    std::vector<int>* hitCharacters = nullptr);
     // Every pixel, or only those listed (the others 0).
     Image renderPixels(Quantity quantity, int width, int height, const std::vector<uint32_t>* only = nullptr);
     // Selects pass `pass`'s sub-samples and environment rays (0: the default ones).
