@@ -27,7 +27,9 @@ const UvLayout& SceneGeometry::uvLayout(size_t character) {
     if (!c.uvLayout) {
         // Characters that share a model share its layout.
         for (const Character& other : mCharacters) {
-            if (other.model == c.model && other.uvLayout) c.uvLayout = other.uvLayout;
+            if (other.model != c.model || !other.uvLayout) continue;
+            c.uvLayout = other.uvLayout;
+            break;
         }
         if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh));
     }

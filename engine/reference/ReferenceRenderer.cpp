@@ -334,12 +334,14 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
         pixels.resize(size_t(width) * size_t(height));
         for (size_t p = 0; p < pixels.size(); ++p) pixels[p] = uint32_t(p);
     }
+    const auto rayThrough = [&camera, width](uint32_t pixel, const glm::vec2& offset) {
+        return camera.through(float(pixel % uint32_t(width)) + offset.x, float(pixel / uint32_t(width)) + offset.y);
+    };
     std::vector<Ray> rays;
     rays.reserve(pixels.size() * size_t(spp));
     for (const uint32_t p : pixels) {
-        const int x = int(p % uint32_t(width)), y = int(p / uint32_t(width));
-        for (const glm::vec2& offset : subSampleOffsets(x, y, spp)) {
-            rays.push_back(camera.through(float(x) + offset.x, float(y) + offset.y));
+        for (const glm::vec2& offset : subSampleOffsets(int(p % uint32_t(width)), int(p / uint32_t(width)), spp)) {
+            rays.push_back(rayThrough(p, offset));
         }
     }
     // The scattering change box-filters the surface that the engine's pixel
@@ -352,8 +354,7 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
     if (centreSurfaceOnly) {
         centreCharacter.resize(pixels.size());
         parallelFor(pixels.size(), mOptions.threads, [&](size_t i) {
-            const int x = int(pixels[i] % uint32_t(width)), y = int(pixels[i] / uint32_t(width));
-            centreCharacter[i] = trace(camera.through(float(x) + 0.5f, float(y) + 0.5f), tMin, tMax).character;
+            centreCharacter[i] = trace(rayThrough(pixels[i], glm::vec2(0.5f)), tMin, tMax).character;
         });
     }
     // One work item per pixel row's worth of sub-samples; a scattered subset in items of
@@ -381,8 +382,7 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
         if (count > 0) {
             image.texels[pixels[i]] = glm::vec4(sum / double(count));
         } else {
-            const int x = int(pixels[i] % uint32_t(width)), y = int(pixels[i] / uint32_t(width));
-            centreRays.push_back(camera.through(float(x) + 0.5f, float(y) + 0.5f));
+            centreRays.push_back(rayThrough(pixels[i], glm::vec2(0.5f)));
             centrePixels.push_back(pixels[i]);
         }
     }
