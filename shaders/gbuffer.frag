@@ -84,9 +84,10 @@ float curvaturePerMm() {
 
 void main() {
     float mipBias = uFrame.materialMipBias;
-    vec3 albedo = materialAlbedo(uAlbedoMap, vUv, vColour, mipBias);
+    MapFootprint at = pixelFootprint(vUv, mipBias);
+    vec3 albedo = materialAlbedo(uAlbedoMap, at, vColour);
     bool hasMaps = uObject.hasNormalMap > 0.5;
-    float roughness = materialRoughness(vUv, mipBias);
+    float roughness = materialRoughness(at);
 
     vec3 N = safeNormalize(vViewNormal, vec3(0.0, 0.0, 1.0));
     if (!gl_FrontFacing) N = -N;
@@ -97,8 +98,8 @@ void main() {
     // Beckmann m as a slope variance per axis, m^2 / 2 (Lean.glsl).
     float baseVariance = 0.5 * roughness * roughness;
     if (hasMaps) {
-        vec4 lean1 = texture(uLean1, vUv, mipBias);
-        vec2 lean2 = texture(uLean2, vUv, mipBias).xy;
+        vec4 lean1 = readMap(uLean1, at);
+        vec2 lean2 = readMap(uLean2, at).xy;
         bump = lean1.xy;
         moments = vec3(lean1.zw, lean2.x);
         baseVariance += lean2.y;
@@ -112,17 +113,17 @@ void main() {
     oLeanCross = viewMoments.z;
 #else
     if (hasMaps) {
-        vec3 tangentNormal = texture(uNormalMap, vUv, mipBias).xyz * 2.0 - 1.0;
+        vec3 tangentNormal = readMap(uNormalMap, at).xyz * 2.0 - 1.0;
         N = safeNormalize(tangentFrame(N) * tangentNormal, N);
     }
 #endif
 
     oAlbedo = debugPlant(vec4(albedo, uObject.objectId / 255.0));
-    oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(vUv, mipBias));
+    oNormalMaterial = vec4(encodeNormal(N), roughness, materialRhoS(at));
     int slot = int(uObject.profileSlot + 0.5);
     oDepthKey = makeDepthKey(slot, -vViewPositionM.z);
-    float scatter = uObject.scatteringShare * (uObject.hasScatterMap > 0.5 ? texture(uScatterMap, vUv, mipBias).r : 1.0);
-    float thicknessMm = uObject.thicknessMm * (uObject.hasThicknessMap > 0.5 ? texture(uThicknessMap, vUv, mipBias).r : 1.0);
+    float scatter = uObject.scatteringShare * (uObject.hasScatterMap > 0.5 ? readMap(uScatterMap, at).r : 1.0);
+    float thicknessMm = uObject.thicknessMm * (uObject.hasThicknessMap > 0.5 ? readMap(uThicknessMap, at).r : 1.0);
     // The curvature only for frames that read it (a uniform branch).
     float curvature = uProfiles.anyScattersInLighting != 0 ? curvaturePerMm() : 0.0;
     oScatter = vec4(slot > 0 ? clamp(scatter, 0.0, 1.0) : 0.0, max(thicknessMm, 0.0), curvature, float(slot));

@@ -7,6 +7,11 @@
 //        pixel (lighting.frag).
 //   a:   exp(-c d), d the thickness (mm) towards the TSM light (listing 2.7),
 //        1 without a TSM; always > 0, so 0 marks an empty texel.
+// The material's maps (normal, albedo, roughness, rho_s) are read at the mip
+// level of the pixel that shows the point, not at the texel's own: a texel
+// holds the light the lighting pass gives that point, and both modes (and
+// the matched reference, which captures this texture: docs/reference.md)
+// scatter the same light. cameraFootprint() below.
 #define DERMIS_USE_TS_BLOCK
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
@@ -31,6 +36,8 @@ in vec4 vWorldTangent;
 in vec2 vMapUv;
 in vec3 vColour;
 in vec4 vEnvironment;
+in vec3 vDPduM;  // metres per unit of the mesh's UV
+in vec3 vDPdvM;
 
 layout(location = 0) out vec4 oIrradiance;
 
@@ -50,19 +57,48 @@ float ambientOcclusion(vec3 worldPositionM) {
     return abs(viewDepthFromKey(key) - viewDepthM) < toleranceM ? texelFetch(uAmbientOcclusion, pixel, 0).r : 1.0;
 }
 
+// The footprint of the screen pixel at this point in map UV: the inverse of
+// the Jacobian of pixel coordinates by UV, J = d(pixel)/d(P) x d(P)/d(uv),
+// d(pixel)/d(P) from the camera's projection at the point. Where J is singular
+// (the point behind the camera, or the surface edge-on to the eye: no pixel
+// shows it) the texel's own gradients stand.
+MapFootprint cameraFootprint(vec2 texelDx, vec2 texelDy) {
+    mat4 C = uFrame.clipFromWorld;
+    vec4 clip = C * vec4(vWorldPositionM, 1.0);
+    if (clip.w > kTiny) {
+        vec3 rowX = vec3(C[0][0], C[1][0], C[2][0]);
+        vec3 rowY = vec3(C[0][1], C[1][1], C[2][1]);
+        vec3 rowW = vec3(C[0][3], C[1][3], C[2][3]);
+        float perW2 = 0.5 / (clip.w * clip.w);
+        vec3 pixelXPerM = (rowX * clip.w - clip.x * rowW) * (perW2 * uFrame.viewportPx.x);
+        vec3 pixelYPerM = (rowY * clip.w - clip.y * rowW) * (perW2 * uFrame.viewportPx.y);
+        mat2 pixelPerUv = mat2(dot(pixelXPerM, vDPduM), dot(pixelYPerM, vDPduM), dot(pixelXPerM, vDPdvM),
+                               dot(pixelYPerM, vDPdvM));
+        if (abs(determinant(pixelPerUv)) > 1e-12) {
+            mat2 uvPerPixel = inverse(pixelPerUv);
+            // The maps' v runs the other way when the material flips it.
+            vec2 flip = vec2(1.0, uObject.flipV > 0.5 ? -1.0 : 1.0);
+            float scale = exp2(uFrame.materialMipBias);
+            return projectedFootprint(vMapUv, uvPerPixel[0] * flip * scale, uvPerPixel[1] * flip * scale);
+        }
+    }
+    return projectedFootprint(vMapUv, texelDx, texelDy);
+}
+
 void main() {
+    MapFootprint at = cameraFootprint(dFdx(vMapUv), dFdy(vMapUv));
     vec3 geometricN = safeNormalize(vWorldNormal, vec3(0.0, 1.0, 0.0));
     vec3 N = geometricN;
     if (uObject.hasNormalMap > 0.5) {
         vec3 T = vWorldTangent.xyz - N * dot(N, vWorldTangent.xyz);
         T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
         vec3 B = cross(N, T) * (vWorldTangent.w < 0.0 ? -1.0 : 1.0);
-        vec3 tangentNormal = texture(uNormalMap, vMapUv).xyz * 2.0 - 1.0;
+        vec3 tangentNormal = readMap(uNormalMap, at).xyz * 2.0 - 1.0;
         N = safeNormalize(mat3(T, B, N) * tangentNormal, N);
     }
-    vec3 albedo = materialAlbedo(uAlbedoMap, vMapUv, vColour, 0.0);
-    float roughness = materialRoughness(vMapUv, 0.0);
-    float rhoS = materialRhoS(vMapUv, 0.0);
+    vec3 albedo = materialAlbedo(uAlbedoMap, at, vColour);
+    float roughness = materialRoughness(at);
+    float rhoS = materialRhoS(at);
     bool conserveEnergy = uFrame.energyConservation != 0;
 
     float occlusion = ambientOcclusion(vWorldPositionM);

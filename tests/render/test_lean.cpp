@@ -5,6 +5,7 @@
 //   - bad covariance (NaN, Inf, huge, indefinite moments, depth edges) never
 //     makes a bad pixel;
 //   - the graph is structural: variant c declares no LEAN target.
+#include "BumpMap.h"
 #include "RenderFixture.h"
 #include "TestSupport.h"
 
@@ -23,47 +24,6 @@ using namespace dermis;
 namespace {
 
 class Lean : public test::RenderFixture {};
-
-// A tileable bump field: the gradient of a sum of sinusoids with integer
-// frequencies (so the map wraps) in random directions and phases. With many
-// terms the slopes are close to Gaussian, which is what LEAN assumes; each
-// axis has standard deviation `slopeStdDev`.
-Image bumpNormalMap(int size, int terms, float minPeriodTexels, float maxPeriodTexels, float slopeStdDev,
-                    unsigned seed) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    struct Wave {
-        glm::vec2 frequency;  // cycles per map
-        float phase;
-    };
-    std::vector<Wave> waves;
-    while (static_cast<int>(waves.size()) < terms) {
-        const float angle = glm::two_pi<float>() * unit(random);
-        const float period = minPeriodTexels + (maxPeriodTexels - minPeriodTexels) * unit(random);
-        const glm::vec2 f = glm::round(glm::vec2(std::cos(angle), std::sin(angle)) * (float(size) / period));
-        if (f == glm::vec2(0.0f)) continue;
-        waves.push_back({f, glm::two_pi<float>() * unit(random)});
-    }
-    // A slope term c * cos(...) along the unit direction contributes c^2/4 to
-    // each axis's variance on average over directions; sum to slopeStdDev^2.
-    const float amplitude = slopeStdDev * std::sqrt(4.0f / float(terms));
-    Image image;
-    image.width = size;
-    image.height = size;
-    image.texels.resize(static_cast<size_t>(size) * static_cast<size_t>(size));
-    for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            glm::vec2 slope(0.0f);
-            for (const Wave& w : waves) {
-                const float t = glm::two_pi<float>() * (w.frequency.x * (x + 0.5f) + w.frequency.y * (y + 0.5f)) / size;
-                slope += amplitude * glm::normalize(w.frequency) * std::cos(t + w.phase);
-            }
-            const glm::vec3 n = glm::normalize(glm::vec3(slope, 1.0f));
-            image.at(x, y) = glm::vec4(n * 0.5f + 0.5f, 1.0f);
-        }
-    }
-    return image;
-}
 
 // Mean of each `factor` x `factor` block (the supersampled reference's box filter).
 Image boxDownsample(const Image& image, int factor) {
@@ -126,7 +86,7 @@ constexpr int kHeight = 90;
 constexpr int kSupersample = 8;
 
 std::string writeBumpyPlaneScene(const test::TempDir& dir, float slopeStdDev = 0.3f, int mapSize = 2048) {
-    EXPECT_TRUE(saveImage(dir.file("bumps.png"), bumpNormalMap(mapSize, 32, 8.0f, 16.0f, slopeStdDev, 7u)).ok());
+    EXPECT_TRUE(saveImage(dir.file("bumps.png"), test::bumpNormalMap(mapSize, 32, 8.0f, 16.0f, slopeStdDev, 7u)).ok());
     test::writeTextFile(dir.file("bumpy.json"), R"({
       "camera": {"position_m": [0, 0.75, 1.05], "target_m": [0, 0, 0], "vertical_fov_deg": 30, "near_m": 0.1, "far_m": 5},
       "lights": [{"type": "point", "position_m": [0, 0.3, -0.42], "intensity": 1, "shadow": false}],
