@@ -199,10 +199,12 @@ Result<Image> ReferenceImages::thicknessMm(const Scene& scene) {
 Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
     Scene scene = *session.scene;
     scene.settings.sss.enabled = scatters;
+    // The words after the spp name how the engine's capture and the change are
+    // made: when that changes, files made the old way must not be reused.
     const std::string identity =
         identityOf(scene, mSettings, "scatter change, engine irradiance " + std::to_string(mSettings.irradianceSizeTexels) +
                                          ", spp " + std::to_string(mSettings.changeSamplesPerPixel) +
-                                         " over the centre's surface");
+                                         " over the centre's surface, maps at the pixel's mip level");
     // One file per lighting setup, named by its identity's hash.
     char name[64];
     std::snprintf(name, sizeof name, "scatter_change_%016zx", std::hash<std::string>{}(identity));
