@@ -21,6 +21,7 @@
 #include "Environment.glsl"
 #include "TextureSpace.glsl"
 #include "Material.glsl"
+#include "Lean.glsl"
 
 layout(binding = 0) uniform sampler2D uAlbedoMap;
 layout(binding = 1) uniform sampler2D uNormalMap;
@@ -29,6 +30,10 @@ layout(binding = 3) uniform sampler2D uAmbientOcclusion;  // screen space; 1x1 w
 layout(binding = 4) uniform sampler2D uShadowMaps[DERMIS_MAX_SHADOWED_LIGHTS];
 layout(binding = 8) uniform usampler2D uDepthKey;         // G-buffer target 2
 layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
+// The frames whose G-buffer takes the LEAN mean normal (gbuffer.frag with
+// GBUFFER_LEAN) set this, and the normal here comes from the same map.
+layout(binding = DERMIS_UNIT_TS_LEAN_MAP) uniform sampler2D uLeanMap;  // (B.x, B.y, M.xx, M.yy), tangent space
+layout(location = DERMIS_LOCATION_TS_LEAN_NORMALS) uniform int uLeanNormals;
 
 in vec3 vWorldPositionM;
 in vec3 vWorldNormal;
@@ -93,8 +98,12 @@ void main() {
         vec3 T = vWorldTangent.xyz - N * dot(N, vWorldTangent.xyz);
         T = safeNormalize(T, abs(N.x) < 0.9 ? normalize(cross(N, vec3(1, 0, 0))) : normalize(cross(N, vec3(0, 1, 0))));
         vec3 B = cross(N, T) * (vWorldTangent.w < 0.0 ? -1.0 : 1.0);
-        vec3 tangentNormal = readMap(uNormalMap, at).xyz * 2.0 - 1.0;
-        N = safeNormalize(mat3(T, B, N) * tangentNormal, N);
+        mat3 TBN = mat3(T, B, N);
+        if (uLeanNormals != 0) {
+            N = safeNormalize(leanMeanNormal(readMap(uLeanMap, at).xy, TBN), N);
+        } else {
+            N = safeNormalize(TBN * (readMap(uNormalMap, at).xyz * 2.0 - 1.0), N);
+        }
     }
     vec3 albedo = materialAlbedo(uAlbedoMap, at, vColour);
     float roughness = materialRoughness(at);

@@ -99,7 +99,11 @@ void drawTsMesh(const FrameContext& frame, const TsCharacterPlan& plan, TsDraw w
     glBindVertexArray(mesh.vertexArray.get());
     for (size_t s : plan.submeshes) {
         frame.gl->uploadObject(frame.objectBlock(index, s));
-        if (what == TsDraw::SurfaceWithMaps) bindMaterialMaps(character.material(character.submeshes[s].material));
+        if (what == TsDraw::SurfaceWithMaps) {
+            const GpuMaterial& material = character.material(character.submeshes[s].material);
+            bindMaterialMaps(material);
+            glBindTextureUnit(DERMIS_UNIT_TS_LEAN_MAP, material.leanMap1.get());
+        }
         character.submeshes[s].draw();
     }
 }
@@ -181,6 +185,8 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameCon
             [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
                 glUseProgram(frame.gl->programs->tsIrradiance.get(frame.plan.environment.enabled(), frame.plan.lights.shadowCode));
+                // The normal the G-buffer takes: the LEAN mean normal in LEAN frames (gbuffer.frag).
+                glUniform1i(DERMIS_LOCATION_TS_LEAN_NORMALS, frame.plan.lean ? 1 : 0);
                 glBindTextureUnit(2, resources.texture(d.tsm));
                 glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
                 bindShadowMaps(frame, resources, d.shadowMaps);

@@ -182,6 +182,8 @@
 // input instead of the sky). tests/unit/test_texture_units.cpp checks the shaders.
 #define DERMIS_UNIT_FIRST_PASS_EXTRA 17
 #define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 17  // ts_gather.frag: the lighting pass's irradiance
+#define DERMIS_UNIT_TS_LEAN_MAP 18  // ts_irradiance.frag: the LEAN map the G-buffer's mean normal comes from
+#define DERMIS_LOCATION_TS_LEAN_NORMALS 0  // ts_irradiance.frag: 1 when the G-buffer takes the LEAN mean normal
 #define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
 // The irradiance map's cosine powers E_1 .. E_4 stacked in one texture (env/IrradianceMap.h
 // kIrradiancePowers; Environment.glsl irradiancePower): one per coefficient of rho_dt's cubic.

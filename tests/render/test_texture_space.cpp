@@ -725,12 +725,14 @@ TEST_F(TextureSpace, CapturedIrradianceReadsTheMapsAsThePixelDoes) {
     const double relativeRmse = std::sqrt(squaredDifference / squaredPixel);
     std::printf("[ measured ] captured texel against the lighting pass's pixel, %d pixels: relative RMSE %.4f\n",
                 compared, relativeRmse);
-    // 0.48% measured (bilinear reads between the capture's texels, fp16, and
-    // the G-buffer's quad derivatives against the projection's). The texel's
-    // own gradients (level 1 of the map) give 39.7%; the projection's
-    // gradients twice as long (one level coarser) 0.81%, half as long 1.60%.
-    // The bound sits between the measured figure and one level off.
-    EXPECT_LT(relativeRmse, 0.0065);
+    // 0.07% measured (fp16, bilinear reads between the capture's texels, and
+    // the G-buffer's quad derivatives against the projection's). Broken on
+    // purpose: the texel's own gradients (level 1 of the map) give 39.8%; the
+    // projection's gradients twice as long (one level coarser) 0.60%, half as
+    // long 1.66%; the normal map's normal where the G-buffer (LEAN variants,
+    // the default) takes the LEAN map's mean normal 0.48%. The bound sits
+    // well under all four.
+    EXPECT_LT(relativeRmse, 0.0025);
 }
 
 namespace {

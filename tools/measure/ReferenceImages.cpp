@@ -204,7 +204,7 @@ Result<Image> ReferenceImages::scatterChange(Session& session, bool scatters) {
     const std::string identity =
         identityOf(scene, mSettings, "scatter change, engine irradiance " + std::to_string(mSettings.irradianceSizeTexels) +
                                          ", spp " + std::to_string(mSettings.changeSamplesPerPixel) +
-                                         " over the centre's surface, maps at the pixel's mip level");
+                                         " over the centre's surface, maps at the pixel's mip level, the G-buffer's normal");
     // One file per lighting setup, named by its identity's hash.
     char name[64];
     std::snprintf(name, sizeof name, "scatter_change_%016zx", std::hash<std::string>{}(identity));
