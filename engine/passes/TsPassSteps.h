@@ -18,7 +18,7 @@ gpu::TextureSpaceBlock textureSpaceBlock(const FrameContext& frame, const TsChar
 void uploadTsBlocks(const FrameContext& frame, const TsCharacterPlan& plan, const gpu::TextureSpaceBlock& block);
 enum class TsDraw {
     Surface,          // the surface's submeshes, each with its ObjectBlock
-    SurfaceWithMaps,  // and its material's maps bound (bindMaterialMaps)
+    SurfaceWithMaps,  // and its material's maps bound (bindMaterialMaps, and the LEAN map at DERMIS_UNIT_TS_LEAN_MAP)
     WholeCharacter,   // every triangle, one draw, with the ObjectBlock already uploaded
 };
 // Draws the character's TsMesh.

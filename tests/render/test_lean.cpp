@@ -12,12 +12,9 @@
 #include "gl/GlObjects.h"
 #include "gl/SanitiseCounters.h"
 
-#include <glm/gtc/constants.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
 using namespace dermis;
 
