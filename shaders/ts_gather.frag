@@ -13,12 +13,14 @@
 #include "Common.glsl"
 #include "UniformBlocks.glsl"
 #include "TextureSpace.glsl"
+#include "ThinEdges.glsl"
 
 layout(binding = 0) uniform sampler2D uBlurred[DERMIS_MAX_PROFILE_GAUSSIANS];
 layout(binding = 8) uniform sampler2D uTsm;
 layout(binding = 9) uniform sampler2D uAlbedo;  // G-buffer target 0: a = object id / 255
 layout(binding = 10) uniform usampler2D uDepthKey;  // G-buffer target 2: the view depth of the surface kept
 layout(binding = DERMIS_UNIT_TS_PIXEL_IRRADIANCE) uniform sampler2D uPixelIrradiance;  // the lighting pass's irradiance, the same light at this pixel
+layout(binding = DERMIS_UNIT_HIDDEN_SIDE) uniform sampler2D uHiddenSide;  // passes/ThinEdgePasses.cpp
 
 in vec3 vWorldPositionM;
 in vec2 vUv;
@@ -84,6 +86,18 @@ void main() {
     float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.texelUv;
     float mmPerPixel = viewDepthM / uFrame.pixelsPerMetreAtUnitDepth * 1000.0;
     float mmResolved = max(mmPerTexel, mmPerPixel);
+    // Past a chart border that is the outline of a thin part (the rim of an
+    // ear, whose two faces are charts of their own), a Gaussian's mass
+    // beyond the border takes the thin-edge fill in place of the local light,
+    // as a screen-space tap past the outline does (include/ThinEdges.glsl):
+    // its share is the Gaussian's 1-D tail beyond the border. The slope test
+    // takes the surface's angle to the view.
+    vec3 N = normalize(cross(vDPduM, vDPdvM));
+    vec3 V = normalize(uFrame.cameraPositionM.xyz - vWorldPositionM);
+    float facing = max(abs(dot(N, V)), kTiny);
+    vec4 hiddenSide = hiddenSideAt(uHiddenSide, ivec2(gl_FragCoord.xy));
+    float thinWeight = thinEdgeWeight(hiddenSide, sqrt(max(1.0 - facing * facing, 0.0)) / facing);
+    vec3 thinFill = thinEdgeFill(local, hiddenSide, thinWeight) - local;
     vec3 sum = vec3(0.0);
     vec3 weightSum = vec3(0.0);
     vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
@@ -94,7 +108,8 @@ void main() {
         float trust = seamBlend > 0.0 ? smoothstep(0.0, seamBlend * sigmaMm, borderMm) : 1.0;
         float resolved = smoothstep(kUnresolvedTexels, kResolvedTexels, sigmaMm / max(mmResolved, kTiny));
         vec3 light = mix(pixelIrradiance, blurred[i].rgb, resolved);
-        sum += uTs.gaussians[i].rgb * mix(local, light, trust);
+        float beyondBorder = normalUpperTail(borderMm / max(sigmaMm, kTiny));
+        sum += uTs.gaussians[i].rgb * (mix(local, light, trust) + beyondBorder * thinFill);
         weightSum += uTs.gaussians[i].rgb;
     }
     vec3 diffuse = sum / max(weightSum, vec3(kTiny));

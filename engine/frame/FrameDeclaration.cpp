@@ -10,6 +10,7 @@
 #include "passes/SkyboxPass.h"
 #include "passes/SsaoPass.h"
 #include "passes/SssPasses.h"
+#include "passes/ThinEdgePasses.h"
 #include "passes/TextureSpacePasses.h"
 #include "passes/TransmittancePass.h"
 
@@ -30,6 +31,7 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
     const Lighting lighting = addLightingPass(graph, frame, gbuffer, shadowMaps, ambientOcclusion, gbuffer.hasLean());
 
     if (aovReadsSss(aov, gbuffer.hasLean())) {
+        const graph::TextureHandle hiddenSide = addThinEdgePasses(graph, frame, gbuffer, shadowMaps, black);
         graph::TextureHandle diffuse;
         LeanShading lean;
         if (plan.textureSpace) {
@@ -44,15 +46,15 @@ void declareFrame(graph::RenderGraph& graph, const FramePlan& plan, const FrameI
                 const graph::TextureHandle irradiance =
                     tsmTransmits ? addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black)
                                  : lighting.irradiance;
-                base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets()).diffuse;
+                base = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets(), hiddenSide).diffuse;
             }
             diffuse = addTextureSpacePasses(graph, frame, gbuffer, shadowMaps, ambientOcclusion, lighting.irradiance, base,
-                                            black);
+                                            hiddenSide, black);
             if (!tsmTransmits) diffuse = addTransmittancePass(graph, frame, gbuffer, shadowMaps, diffuse, black);
         } else {
             const graph::TextureHandle irradiance =
                 addTransmittancePass(graph, frame, gbuffer, shadowMaps, lighting.irradiance, black);
-            const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets());
+            const SssChain chain = addSssChain(graph, frame, gbuffer, irradiance, gbuffer.leanTargets(), hiddenSide);
             diffuse = chain.diffuse;
             if (gbuffer.hasLean()) lean = {chain.extras[0], chain.diffuse, lighting.visibility};
         }

@@ -18,7 +18,7 @@ namespace {
 static_assert(sizeof(gpu::DiskSssBlock) <= kMaxPassBlockBytes, "the disk's block must fit the per-pass buffer");
 
 struct DiskData {
-    graph::TextureHandle colour, depthKey, stencil, accumulatedIn, accumulatedOut;
+    graph::TextureHandle colour, depthKey, stencil, hiddenSide, accumulatedIn, accumulatedOut;
     std::vector<graph::TextureHandle> extrasAccumulatedIn, extrasAccumulatedOut;
 };
 
@@ -53,6 +53,7 @@ SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const 
                 d.colour = builder.read(start.chain);
                 d.depthKey = builder.read(gbuffer.depthKey);
                 d.stencil = builder.read(gbuffer.depthStencil);
+                d.hiddenSide = builder.read(start.hiddenSide);
                 // Read as well as written: the pass overwrites this slot's pixels only.
                 d.accumulatedIn = builder.read(chain.diffuse);
                 d.accumulatedOut = builder.write(chain.diffuse);
@@ -71,6 +72,7 @@ SssChain addDiskSss(graph::RenderGraph& graph, const FrameContext& frame, const 
                 const Programs& programs = *frame.gl->programs;
                 beginFullscreenPass(frame, resources, {targets, d.stencil},
                                     packed ? programs.sssDiskLean.get() : programs.sssDisk.get(), {d.colour, d.depthKey});
+                glBindTextureUnit(DERMIS_UNIT_HIDDEN_SIDE, resources.texture(d.hiddenSide));
                 frame.gl->uploadPassBlock(&block, sizeof block);
                 const ScopedSssState state(frame, scissor, slotId);
                 frame.gl->drawRegions(regions);

@@ -15,7 +15,7 @@ namespace dermis {
 namespace {
 
 struct BlurData {
-    graph::TextureHandle colour, depthKey, stencil, accumulatedIn, out, accumulatedOut;
+    graph::TextureHandle colour, depthKey, stencil, hiddenSide, accumulatedIn, out, accumulatedOut;
     std::vector<graph::TextureHandle> extrasAccumulatedIn, extrasAccumulatedOut;
 };
 
@@ -53,6 +53,7 @@ struct BlurStep {
     // moments, 0 after it (SssBlur.glsl, "WHERE THE MOMENTS STOP").
     float momentWeight = 0.0f;
     std::string skipReason;
+    graph::TextureHandle hiddenSide;  // include/ThinEdges.glsl
 };
 
 const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
@@ -65,6 +66,7 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
             d.colour = builder.read(in);
             d.depthKey = builder.read(gbuffer.depthKey);
             d.stencil = builder.read(gbuffer.depthStencil);
+            d.hiddenSide = builder.read(blur.hiddenSide);
             if (blur.horizontal) {
                 d.out = builder.create(passName, chainDesc);
                 builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
@@ -89,6 +91,7 @@ const BlurData& addBlurPass(graph::RenderGraph& graph, const FrameContext& frame
             const Programs& programs = *frame.gl->programs;
             const gl::Program& program = !packed ? programs.sssBlur : packedOut ? programs.sssBlurLean : programs.sssBlurLeanLast;
             beginFullscreenPass(frame, resources, {targets, d.stencil}, program.get(), {d.colour, d.depthKey});
+            glBindTextureUnit(DERMIS_UNIT_HIDDEN_SIDE, resources.texture(d.hiddenSide));
             const gpu::SssBlurBlock block = blurBlock(frame, kernel, step, slot, horizontal);
             frame.gl->uploadPassBlock(&block, sizeof block);
             const ScopedSssState state(frame, scissor, slot);
@@ -127,6 +130,7 @@ SssChain addSssGaussianChain(graph::RenderGraph& graph, const FrameContext& fram
             blur.name = "sss " + slot.name + " g" + std::to_string(step.gaussian);
             blur.slot = &slot;
             blur.step = step;
+            blur.hiddenSide = start.hiddenSide;
             blur.packed = start.packed && i <= cut.lastStep;
             blur.packedOut = blur.packed;  // the horizontal pass hands the vertical one the moments
             blur.momentWeight = !start.packed        ? sssMomentWeight(step.weight)

@@ -35,13 +35,15 @@ struct SssChain {
 // everywhere else; with SSS disabled or no SSS pixel on screen every pass is
 // culled and readers get the inputs themselves.
 SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras);
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras,
+                     graph::TextureHandle hiddenSide);
 
 // What `sss init` starts: the accumulations (colour, extras) and the chain
 // the first blur reads (the irradiance itself, or the packed chain).
 struct SssStart {
     SssChain accumulated;
     graph::TextureHandle chain;
+    graph::TextureHandle hiddenSide;  // passes/ThinEdgePasses.h: read by every technique at DERMIS_UNIT_HIDDEN_SIDE
     graph::TextureDesc chainDesc;
     bool packed = false;
 };

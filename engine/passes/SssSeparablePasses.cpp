@@ -17,7 +17,7 @@ namespace dermis {
 namespace {
 
 struct SeparableData {
-    graph::TextureHandle chain, depthKey, stencil, out;
+    graph::TextureHandle chain, depthKey, stencil, hiddenSide, out;
     std::vector<graph::TextureHandle> accumulatedIn, accumulatedOut;  // vertical: colour, then the extras
 };
 
@@ -50,6 +50,7 @@ const SeparableData& addSeparablePass(graph::RenderGraph& graph, const FrameCont
             d.chain = builder.read(in);
             d.depthKey = builder.read(gbuffer.depthKey);
             d.stencil = builder.read(gbuffer.depthStencil);
+            d.hiddenSide = builder.read(start.hiddenSide);
             if (horizontal) {
                 d.out = builder.create(passName, start.chainDesc);
                 builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
@@ -72,6 +73,7 @@ const SeparableData& addSeparablePass(graph::RenderGraph& graph, const FrameCont
             const std::vector<graph::TextureHandle> targets = horizontal ? std::vector<graph::TextureHandle>{d.out}
                                                                          : d.accumulatedOut;
             beginFullscreenPass(frame, resources, {targets, d.stencil}, program.get(), {d.chain, d.depthKey});
+            glBindTextureUnit(DERMIS_UNIT_HIDDEN_SIDE, resources.texture(d.hiddenSide));
             frame.gl->uploadPassBlock(&block, sizeof block);
             const ScopedSssState state(frame, scissor, slotIndex);
             frame.gl->drawRegions(regions);

@@ -42,8 +42,10 @@ AddSssTechniquePasses sssTechniquePasses(SssTechnique technique) {
 }
 
 SssChain addSssChain(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
-                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras) {
-    const SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
+                     graph::TextureHandle irradiance, const std::vector<graph::TextureHandle>& extras,
+                     graph::TextureHandle hiddenSide) {
+    SssStart start = addSssInit(graph, frame, gbuffer, irradiance, extras);
+    start.hiddenSide = hiddenSide;
     SssChain chain = start.accumulated;
     for (const EnumEntry<SssTechnique>& technique : kSssTechniques) {
         if (const AddSssTechniquePasses add = sssTechniquePasses(technique.value)) {

@@ -12,7 +12,7 @@ struct InitData {
 };
 struct GatherData {
     std::vector<graph::TextureHandle> blurred;
-    graph::TextureHandle tsm, depthStencil, albedo, depthKey, irradiance, accumulatedIn, accumulatedOut;
+    graph::TextureHandle tsm, depthStencil, albedo, depthKey, irradiance, hiddenSide, accumulatedIn, accumulatedOut;
 };
 
 // The accumulation starts as `base`: the lighting's irradiance, or the
@@ -41,7 +41,7 @@ graph::TextureHandle addInitPass(graph::RenderGraph& graph, const FrameContext& 
 graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                    const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& blurred,
                                    graph::TextureHandle tsm, graph::TextureHandle irradiance,
-                                   graph::TextureHandle accumulated) {
+                                   graph::TextureHandle hiddenSide, graph::TextureHandle accumulated) {
     const std::string name = tsPassName(plan, "gather");
     return graph
         .addPass<GatherData>(
@@ -53,6 +53,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 d.albedo = builder.read(gbuffer.albedo);
                 d.depthKey = builder.read(gbuffer.depthKey);
                 d.irradiance = builder.read(irradiance);
+                d.hiddenSide = builder.read(hiddenSide);
                 d.accumulatedIn = builder.read(accumulated);
                 d.accumulatedOut = builder.write(accumulated);
                 builder.skipIf(!plan.runs(), plan.skipReason());
@@ -73,6 +74,7 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
                 glBindTextureUnit(9, resources.texture(d.albedo));
                 glBindTextureUnit(10, resources.texture(d.depthKey));
                 glBindTextureUnit(DERMIS_UNIT_TS_PIXEL_IRRADIANCE, resources.texture(d.irradiance));
+                glBindTextureUnit(DERMIS_UNIT_HIDDEN_SIDE, resources.texture(d.hiddenSide));
                 uploadTsBlocks(frame, plan, textureSpaceBlock(frame, plan));
                 // Only the surface the G-buffer kept: its own depth, pulled a
                 // little towards the camera so that the two programs' rounding
@@ -100,7 +102,8 @@ graph::TextureHandle addGatherPass(graph::RenderGraph& graph, const FrameContext
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
-                                           graph::TextureHandle base, graph::TextureHandle black) {
+                                           graph::TextureHandle base, graph::TextureHandle hiddenSide,
+                                           graph::TextureHandle black) {
     graph::TextureHandle accumulated = addInitPass(graph, frame, base);
     for (const TsCharacterPlan& plan : frame.plan.ts.characters) {
         const graph::TextureHandle tsm = addTsmPass(graph, frame, plan, black);
@@ -108,7 +111,7 @@ graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const Fram
         const graph::TextureHandle raw = addIrradiancePass(graph, frame, plan, gbuffer, shadowMaps, ambientOcclusion, tsm);
         const graph::TextureHandle dilated = addDilatePass(graph, frame, plan, raw);
         const std::vector<graph::TextureHandle> blurred = addBlurPasses(graph, frame, plan, stretch, dilated);
-        accumulated = addGatherPass(graph, frame, plan, gbuffer, blurred, tsm, irradiance, accumulated);
+        accumulated = addGatherPass(graph, frame, plan, gbuffer, blurred, tsm, irradiance, hiddenSide, accumulated);
     }
     return accumulated;
 }

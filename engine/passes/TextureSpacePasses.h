@@ -50,7 +50,8 @@ constexpr int kTsmGaussians = 3;
 graph::TextureHandle addTextureSpacePasses(graph::RenderGraph& graph, const FrameContext& frame, const GBuffer& gbuffer,
                                            const std::vector<graph::TextureHandle>& shadowMaps,
                                            graph::TextureHandle ambientOcclusion, graph::TextureHandle irradiance,
-                                           graph::TextureHandle base, graph::TextureHandle black);
+                                           graph::TextureHandle base, graph::TextureHandle hiddenSide,
+                                           graph::TextureHandle black);
 
 // The UV-space AOVs (plan/Aov.h), in either SSS mode: the stretch map, or
 // the irradiance texture before dilation and blurs, of the first SSS character

@@ -66,6 +66,8 @@ Result<Programs> Programs::build(bool specialize) {
     add(programs.ssao, "fullscreen.vert", "ssao.frag");
     add(programs.ssaoBlur, "fullscreen.vert", "ssao_blur.frag");
     add(programs.transmittance, "fullscreen.vert", "transmittance.frag");
+    add(programs.backDepth, "gbuffer.vert", "back_depth.frag");
+    add(programs.thinEdges, "fullscreen.vert", "thin_edges.frag");
     add(programs.sssInit, "fullscreen.vert", "sss_init.frag");
     add(programs.sssBlur, "fullscreen.vert", "sss_blur.frag");
     add(programs.sssDisk, "fullscreen.vert", "sss_disk.frag");

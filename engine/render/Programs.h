@@ -56,6 +56,8 @@ struct Programs {
     gl::Program ssao;           // passes/SsaoPass.cpp
     gl::Program ssaoBlur;
     gl::Program transmittance;  // passes/TransmittancePass.cpp
+    gl::Program backDepth;      // passes/ThinEdgePasses.cpp
+    gl::Program thinEdges;
     gl::Program sssInit;        // passes/SssPasses.cpp
     gl::Program sssBlur;
     // passes/SssSeparablePasses.cpp: horizontal (chain) and vertical (accumulation) passes,

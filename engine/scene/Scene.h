@@ -185,6 +185,7 @@ struct TransmittanceSettings {
     bool enabled = true;
     float shrinkMm = 0.0f;   // the surface point moves this far inwards along -N before its thickness is read
     float strength = 1.0f;   // multiplies the transmitted light
+    bool thinEdges = true;   // taps past the outline of a thin part take its hidden side's light (shaders/include/ThinEdges.glsl)
 };
 
 // Screen-space ambient occlusion (Papanikolaou 2013 §3): a normal-oriented hemisphere.

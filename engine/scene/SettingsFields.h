@@ -53,6 +53,7 @@ void visitTransmittanceFields(S& s, V& v) {
     v.boolean("enabled", s.enabled);
     v.number("shrink_mm", s.shrinkMm, Range::atLeast(0.0));
     v.number("strength", s.strength, Range::atLeast(0.0));
+    v.boolean("thin_edges", s.thinEdges);
 }
 
 template <typename S, typename V>

@@ -101,6 +101,8 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
     SssSlant slantY = sssSlant(depthKey, pixel, ivec2(0, 1), centreKey, viewDepthM);
     vec2 pxPerMmOnSkin = pxPerMm / vec2(slantX.stretch, slantY.stretch);
     vec2 depthPerPxM = vec2(slantX.depthPerPxM, slantY.depthPerPxM);
+    // The fill's slope test on the steeper axis: the disk's taps go every way.
+    SssRejected rejected = sssRejected(centre, pixel, max(sssSlope(slantX), sssSlope(slantY)));
 
 #if DISK_SSS_ROTATE
     float angle = 6.28318530718 * hashToUnit(uvec2(pixel));
@@ -126,10 +128,11 @@ SssValues diskSss(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel) {
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
         scalarWeight *= edge.weight;
-        SssValues tap = centre;
+        SssValues toward = sssRejectedFor(rejected, edge);
+        SssValues tap = toward;
         if (edge.toCentre < 1.0) {
             tap = sssFetch(colour, tapPixel);
-            for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], centre.v[k], edge.toCentre);
+            for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], toward.v[k], edge.toCentre);
         }
         colourSum += weight * tap.v[0].rgb;
         colourWeightSum += weight;

@@ -110,6 +110,7 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
     SssSlant slant = sssSlant(depthKey, pixel, direction, centreKey, viewDepthM);
     float pixelsPerMm = 1e-3 * uFrame.pixelsPerMetreAtUnitDepth / viewDepthM / slant.stretch;
     int count = min(uSeparableSss.tapCount, DERMIS_MAX_SEPARABLE_SAMPLES);
+    SssRejected rejected = sssRejected(centre, pixel, sssSlope(slant));
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -158,9 +159,11 @@ SssValues separableSssStep(SSS_CHAIN_SAMPLER chain, usampler2D depthKey, ivec2 p
                                                  float(pendingOffset) * slant.depthPerPxM, uSeparableSss.edges);
                     use = edge.weight > 0.0;
                     weight *= edge.weight;
+                    SssValues toward = sssRejectedFor(rejected, edge);
+                    tap = toward;
                     if (use && edge.toCentre < 1.0) {
                         tap = sssFetch(chain, tapPixel);
-                        for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], centre.v[k], edge.toCentre);
+                        for (int k = 0; k < SSS_VALUES; ++k) tap.v[k] = mix(tap.v[k], toward.v[k], edge.toCentre);
                     }
                 }
                 if (use) {

@@ -184,6 +184,7 @@
 #define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 17  // ts_gather.frag: the lighting pass's irradiance
 #define DERMIS_UNIT_TS_LEAN_MAP 18  // ts_irradiance.frag: the LEAN map the G-buffer's mean normal comes from
 #define DERMIS_LOCATION_TS_LEAN_NORMALS 0  // ts_irradiance.frag: 1 when the G-buffer takes the LEAN mean normal
+#define DERMIS_UNIT_HIDDEN_SIDE 19  // include/ThinEdges.glsl: the thin-edge pass's target, read by every SSS technique and the ts gather
 #define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
 // The irradiance map's cosine powers E_1 .. E_4 stacked in one texture (env/IrradianceMap.h
 // kIrradiancePowers; Environment.glsl irradiancePower): one per coefficient of rho_dt's cubic.

@@ -142,6 +142,7 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
     int halfTaps = min(taps / 2, kSssMaxHalfTaps);
     float halfWeights[kSssMaxHalfTaps + 1];
     float spacingPx = sssTapWeights(sigmaPx, halfTaps, uSssBlur.readsIrradiance != 0, halfWeights);
+    SssRejected rejected = sssRejected(centre, pixel, sssSlope(slant));
 
     SssValues sum;
     for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] = vec4(0.0);
@@ -153,11 +154,12 @@ SssValues sssBlurStep(SSS_CHAIN_SAMPLER colour, usampler2D depthKey, ivec2 pixel
                                      float(j) * spacingPx * slant.depthPerPxM, uSssBlur.edges);
         if (edge.weight <= 0.0) continue;
         weight *= edge.weight;
+        SssValues toward = sssRejectedFor(rejected, edge);
         if (edge.toCentre < 1.0) {
             SssValues tap = sssFetch(colour, tapPixel);
-            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * mix(tap.v[k], centre.v[k], edge.toCentre);
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * mix(tap.v[k], toward.v[k], edge.toCentre);
         } else {
-            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * centre.v[k];
+            for (int k = 0; k < SSS_VALUES; ++k) sum.v[k] += weight * toward.v[k];
         }
         weightSum += weight;
     }

@@ -78,6 +78,9 @@
 #define DERMIS_SSS_CHAIN_GLSL
 
 #include "SssEdges.glsl"
+#include "ThinEdges.glsl"
+
+layout(binding = DERMIS_UNIT_HIDDEN_SIDE) uniform sampler2D uHiddenSide;  // passes/ThinEdgePasses.cpp
 
 #ifndef SSS_EXTRA_TARGETS
 #define SSS_EXTRA_TARGETS 0
@@ -144,6 +147,28 @@ SssSlant sssSlant(usampler2D depthKey, ivec2 pixel, ivec2 step, uint centreKey, 
     slant.depthPerPxM = slope >= kSssMaxSlope ? 0.0 : sign(slant.depthPerPxM) * slope * metresPerPx;
     return slant;
 }
+
+// The skin's slope along the axis (g of SLANT, at most kSssMaxSlope).
+float sssSlope(SssSlant slant) { return sqrt(max(slant.stretch * slant.stretch - 1.0, 0.0)); }
+
+// What a tap's rejected share takes (SssEdges.glsl): the centre's values, or
+// past the outline of a thin part the fill of include/ThinEdges.glsl, for the
+// colour only (the LEAN moments of the hidden side are not known; they stay the
+// centre's). `slope`: the centre's along the tap's axis.
+struct SssRejected {
+    SssValues centre;
+    SssValues outside;
+};
+
+SssRejected sssRejected(SssValues centre, ivec2 pixel, float slope) {
+    SssRejected rejected = SssRejected(centre, centre);
+    vec4 hiddenSide = hiddenSideAt(uHiddenSide, pixel);
+    float weight = thinEdgeWeight(hiddenSide, slope);
+    if (weight > 0.0) rejected.outside.v[0].rgb = thinEdgeFill(centre.v[0].rgb, hiddenSide, weight);
+    return rejected;
+}
+
+SssValues sssRejectedFor(SssRejected rejected, SssEdgeTap edge) { return edge.outside ? rejected.outside : rejected.centre; }
 
 // The centre of every technique's step at `pixel`: its values, its depth key
 // and view depth; false when it is not on `slot` or has no depth (the stencil

@@ -29,6 +29,9 @@
 //     bilateral drops it: the chain holds no value of this frame there (the
 //     SSS init writes only the profiles' pixels, and a pooled target keeps
 //     what it held), which stress seed 1835 read as light from nowhere.
+// Past the outline of a thin part (`outside`, a centre facing the view, a
+// short path through the part) the rejected share takes the thin-edge fill
+// in place of the centre (include/ThinEdges.glsl; sssRejected in SssChain.glsl).
 // A tap whose toCentre is 1 must not be fetched at all (selection, not a
 // multiply), so a non-finite value outside the mask can never leak in. The
 // caller divides by the sum of the weights it used (all 1 but fetch-only's).
@@ -40,6 +43,7 @@
 struct SssEdgeTap {
     float weight;    // multiplies the kernel's weight (0: drop the tap)
     float toCentre;  // the tap's value is mix(tap, centre, toCentre)
+    bool outside;    // past the centre's outline (include/ThinEdges.glsl)
 };
 
 // `planeOffsetM`: how much deeper than the centre the tap lies on the centre's
@@ -49,9 +53,13 @@ SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, float planeOffsetM, SssEdgePa
     int edges = params.mode;
     float bilateralDepthMm = params.bilateralDepthMm;
     float controlScalePerMm = params.controlScalePerMm;
-    SssEdgeTap result = SssEdgeTap(1.0, 0.0);
+    SssEdgeTap result = SssEdgeTap(1.0, 0.0, false);
     bool sameProfile = keyDistanceMm(centreKey, tapKey) < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
     float distanceMm = abs(viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
+    // Past the outline: the background, another profile behind, or this profile a clear step behind (where the
+    // bilateral weight is 1%: the ear's rim seen against the head).
+    result.outside = sameProfile ? viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM > 3e-3 * bilateralDepthMm
+                                 : isBackgroundKey(tapKey) || viewDepthFromKey(tapKey) > viewDepthFromKey(centreKey);
     if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) {
         result.weight = sameProfile ? 1.0 : 0.0;
     } else if (edges == DERMIS_BLUR_EDGES_BILATERAL) {

@@ -130,8 +130,11 @@ protected:
         // character's SSS missing at this scale: with the near head's gather
         // skipped (its diffuse the unblurred irradiance) it read 0.0083, as the
         // SSS changes these views by about as much as the two techniques differ;
-        // the gathers are counted instead (SeveralCharacters...).
-        EXPECT_LT(diffuse.relativeRmse, 0.012) << label;
+        // the gathers are counted instead (SeveralCharacters...). The thin-edge
+        // fill (include/ThinEdges.glsl), which the two modes apply their own way
+        // (to screen-space taps past an outline, to the gather's Gaussians near a
+        // chart border), moves the three heads to 0.0124: 1.3%.
+        EXPECT_LT(diffuse.relativeRmse, 0.013) << label;
         glm::dvec3 ssSum(0.0), tsSum(0.0);
         for (size_t i = 0; i < mCharacters.size(); ++i) {
             if (!mCharacters[i]) continue;

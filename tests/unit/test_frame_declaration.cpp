@@ -170,7 +170,8 @@ DeclaredFrames crowd(size_t count, const std::vector<std::string>& overrides = {
 TEST(FrameDeclaration, DefaultSceneRunsTheWholeScreenSpaceChain) {
     DeclaredFrames frames("default.json");
     ASSERT_TRUE(frames.declare());
-    for (const char* pass : {"gbuffer", "ssao", "ssao blur", "lighting", "transmittance", "sss init", "composite", "tonemap"}) {
+    for (const char* pass : {"gbuffer", "ssao", "ssao blur", "lighting", "back depth", "thin edges", "transmittance", "sss init",
+                             "composite", "tonemap"}) {
         EXPECT_TRUE(frames.executed(pass)) << pass << "\n" << frames.listing();
     }
     EXPECT_EQ(frames.executedWithPrefix("shadow:light"), 2) << frames.listing();
@@ -184,6 +185,7 @@ TEST(FrameDeclaration, NoSssOnScreenRunsNoSssPass) {
     EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
     EXPECT_EQ(frames.culledBecause("sss init"), "predicate: no SSS pixel on screen");
     EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: no SSS pixel on screen");
+    EXPECT_EQ(frames.culledBecause("thin edges"), "predicate: no SSS pixel on screen");
     EXPECT_TRUE(frames.executed("lighting"));
     EXPECT_TRUE(frames.executed("composite"));
 }
@@ -280,6 +282,24 @@ TEST(FrameDeclaration, GaussiansUnderTheMinimumWidthAreSkipped) {
     EXPECT_TRUE(far.executed("sss init"));  // the head is on screen: its identity weight still starts the sum
 }
 
+// Both modes read the thin-edge passes; switched off, they are culled with
+// their reason and the SSS passes read the 1x1 black stand-in.
+TEST(FrameDeclaration, ThinEdgesRunInBothModesAndAreCulledWhenOff) {
+    for (const char* mode : {"mode=ss", "mode=ts"}) {
+        DeclaredFrames on("default.json", {mode});
+        ASSERT_TRUE(on.declare());
+        EXPECT_TRUE(on.executed("back depth")) << mode;
+        EXPECT_TRUE(on.executed("thin edges")) << mode;
+        DeclaredFrames off("default.json", {mode, "transmittance.thin_edges=false"});
+        ASSERT_TRUE(off.declare());
+        EXPECT_EQ(off.culledBecause("thin edges"), "predicate: thin edges disabled (settings.transmittance.thin_edges = false)")
+            << mode;
+        EXPECT_EQ(off.culledBecause("back depth"), "predicate: thin edges disabled (settings.transmittance.thin_edges = false)")
+            << mode;
+        EXPECT_GT(off.executedWithPrefix(std::string(mode) == "mode=ss" ? "sss skin" : "ts "), 0) << off.listing();
+    }
+}
+
 TEST(FrameDeclaration, NoBackLightRunsNoTransmittance) {
     DeclaredFrames frames("default.json", kNoBackLight);
     ASSERT_TRUE(frames.declare());
@@ -290,6 +310,8 @@ TEST(FrameDeclaration, NoBackLightRunsNoTransmittance) {
 TEST(FrameDeclaration, DisabledEffectsAreCulledWithTheirReason) {
     DeclaredFrames frames("default.json", {"ssao.enabled=false", "sss.enabled=false", "transmittance.enabled=false"});
     ASSERT_TRUE(frames.declare());
+    EXPECT_EQ(frames.culledBecause("thin edges"), "predicate: SSS disabled");
+    EXPECT_EQ(frames.culledBecause("back depth"), "predicate: SSS disabled");
     EXPECT_EQ(frames.culledBecause("ssao"), "predicate: SSAO is disabled (settings.ssao.enabled = false)");
     EXPECT_EQ(frames.culledBecause("ssao blur"), "predicate: SSAO is disabled (settings.ssao.enabled = false)");
     EXPECT_EQ(frames.culledBecause("sss init"), "predicate: SSS disabled");

@@ -808,7 +808,7 @@ TEST(SceneLoader, SettingsGroupsAreStrictObjects) {
     EXPECT_EQ(errorOf(R"({"settings": {"energy_conservation": 1}})"),
               "/settings/energy_conservation: expected true or false, got a number");
     EXPECT_EQ(errorOf(R"({"settings": {"transmittance": {"shrink": 1}}})"),
-              "/settings/transmittance/shrink: unknown key \"shrink\" (known: enabled, shrink_mm and strength)");
+              "/settings/transmittance/shrink: unknown key \"shrink\" (known: enabled, shrink_mm, strength and thin_edges)");
     EXPECT_EQ(errorOf(R"({"settings": {"sss": {"width": 1}}})"),
               "/settings/sss/width: unknown key \"width\" (known: enabled, variant, blur, technique, taps, gaussians, separable_samples, "
               "disk_samples, bilateral_depth_mm, "
