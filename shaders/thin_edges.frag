@@ -37,7 +37,8 @@ void main() {
     vec3 N = safeNormalize(mat3(uFrame.worldFromView) * viewN, vec3(0.0, 1.0, 0.0));
     float opposed = -dot(viewN, decodeNormal(texelFetch(uBackNormal, pixel, 0).xy));
 
-    float weight = (1.0 - smoothstep(THIN_EDGE_FULL_MM, THIN_EDGE_NONE_MM, pathMm)) *
+    // A back face in front of the pixel's surface (another part's, seen through an opening) says nothing.
+    float weight = (pathMm > 0.0 ? 1.0 - smoothstep(THIN_EDGE_FULL_MM, THIN_EDGE_NONE_MM, pathMm) : 0.0) *
                    smoothstep(THIN_EDGE_OPPOSED_NONE, THIN_EDGE_OPPOSED_FULL, opposed);
     // A thick part (most of a head) takes no fill: its hidden side's light is not needed.
     vec3 hidden = vec3(0.0);
