@@ -55,10 +55,11 @@ SssEdgeTap sssEdgeTap(uint centreKey, uint tapKey, float planeOffsetM, SssEdgePa
     float controlScalePerMm = params.controlScalePerMm;
     SssEdgeTap result = SssEdgeTap(1.0, 0.0, false);
     bool sameProfile = keyDistanceMm(centreKey, tapKey) < DERMIS_OTHER_PROFILE_DISTANCE_MM * 0.5;
-    float distanceMm = abs(viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
+    float behindMm = (viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM) * 1000.0;
+    float distanceMm = abs(behindMm);
     // Past the outline: the background, another profile behind, or this profile a clear step behind (where the
     // bilateral weight is 1%: the ear's rim seen against the head).
-    result.outside = sameProfile ? viewDepthFromKey(tapKey) - viewDepthFromKey(centreKey) - planeOffsetM > 3e-3 * bilateralDepthMm
+    result.outside = sameProfile ? behindMm > 3.0 * bilateralDepthMm
                                  : isBackgroundKey(tapKey) || viewDepthFromKey(tapKey) > viewDepthFromKey(centreKey);
     if (edges == DERMIS_BLUR_EDGES_FETCH_ONLY) {
         result.weight = sameProfile ? 1.0 : 0.0;

@@ -15,9 +15,11 @@
 //   back-lit one.
 //
 // THE PASS (shaders/thin_edges.frag, passes/ThinEdgePasses.cpp)
-//   The back faces of the visible characters are drawn into a depth buffer of
-//   their own: the nearest back face behind each pixel, the exit of the view
-//   ray from the part. Then, per SSS pixel, one RGBA16F texel:
+//   The back faces of the visible characters whose pixels read the fill (a
+//   technique that blurs, or texture space) are drawn into a depth buffer and
+//   a normal target of their own: the nearest back face behind each pixel,
+//   the exit of the view ray from the part. Then, per SSS pixel, one RGBA16F
+//   texel:
 //   - rgb: the hidden side's own light times albedo^mix (as the irradiance
 //     the blurs read): the ambient and the environment's diffuse light with
 //     the normal turned round (-N), plus every light's radiance times
@@ -32,7 +34,7 @@
 //     view ray leaves a thick body's corner through its side wall after a
 //     short path too (the wedge of content/scenes/slab.json, 20 mm thick,
 //     took the fill along its whole outline without this test).
-//   Where the pass does not run (transmittance.thin_edges off, no SSS pixel)
+//   Where the pass does not run (transmittance.thin_edges or SSS off, no SSS pixel)
 //   the readers sample a 1x1 black texture instead: w = 0 everywhere, and
 //   every tap behaves as before.
 //

@@ -5,6 +5,7 @@
 #include "TestSupport.h"
 
 #include "core/ImageMetrics.h"
+#include "measure/MeasuredRender.h"
 #include "reference/ReferenceRenderer.h"
 
 #include <cmath>
@@ -19,12 +20,6 @@ class ThinEdges : public test::RenderFixture {};
 constexpr int kWidth = 160;
 constexpr int kHeight = 90;
 
-std::vector<uint8_t> sssMask(const Image& scatter) {
-    std::vector<uint8_t> mask(scatter.texels.size());
-    for (size_t i = 0; i < mask.size(); ++i) mask[i] = scatter.texels[i].r > 0.0f ? 1 : 0;
-    return mask;
-}
-
 }  // namespace
 
 // The ear seen face on from 20 cm (content/scenes/ear_closeup.json), front-lit
@@ -36,7 +31,8 @@ std::vector<uint8_t> sssMask(const Image& scatter) {
 TEST_F(ThinEdges, EarRimScattersCloserToTheMatchedReferenceInBothModes) {
     load("ear_closeup.json", {"ssao.enabled=false", "sss.enabled=false"});
     const Image unscattered = render(Aov::Diffuse, kWidth, kHeight);
-    const std::vector<uint8_t> mask = sssMask(render(Aov::Scatter, kWidth, kHeight));
+    const auto mask = measure::sssMask(*mRenderer, kWidth, kHeight);
+    ASSERT_TRUE(mask.ok()) << mask.error().message();
 
     load("ear_closeup.json", {"ssao.enabled=false"});
     render(Aov::Diffuse, kWidth, kHeight);
@@ -57,7 +53,7 @@ TEST_F(ThinEdges, EarRimScattersCloserToTheMatchedReferenceInBothModes) {
             load("ear_closeup.json", {"ssao.enabled=false", mode == 0 ? "mode=ss" : "mode=ts",
                                       thin ? "transmittance.thin_edges=true" : "transmittance.thin_edges=false"});
             const Image image = render(Aov::Diffuse, kWidth, kHeight);
-            auto difference = compareImages(matched, image, mask);
+            auto difference = compareImages(matched, image, *mask);
             ASSERT_TRUE(difference.ok()) << difference.error().message();
             error[mode][thin] = difference->relativeRmse;
         }
