@@ -39,7 +39,7 @@ void main() {
 
     // A back face in front of the pixel's surface (another part's, seen through an opening) says nothing.
     float weight = (pathMm > 0.0 ? 1.0 - smoothstep(THIN_EDGE_FULL_MM, THIN_EDGE_NONE_MM, pathMm) : 0.0) *
-                   smoothstep(THIN_EDGE_OPPOSED_NONE, THIN_EDGE_OPPOSED_FULL, opposed);
+                   thinEdgeOpposed(opposed);
     // A thick part (most of a head) takes no fill: its hidden side's light is not needed.
     vec3 hidden = vec3(0.0);
     if (weight > 0.0) {

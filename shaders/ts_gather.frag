@@ -6,7 +6,8 @@
 // where T_i is blurred texture i (the lighting pass's irradiance at this pixel
 // for a Gaussian narrower than a texel), replaced by T_0 (the narrowest,
 // "local" light) as a chart border comes nearer than seam_blend standard
-// deviations of Gaussian i. Like the screen-space accumulation this still carries
+// deviations of Gaussian i. Its mass beyond the border takes the light across it
+// (below). Like the screen-space accumulation this still carries
 // albedo^mix; the composite applies albedo^(1-mix), the outgoing energy
 // factor and the specular.
 #define DERMIS_USE_TS_BLOCK
@@ -27,6 +28,8 @@ in vec2 vUv;
 in vec3 vDPduM;
 in vec3 vDPdvM;
 in float vBorderDistanceM;
+in vec4 vSeamContinuation;
+flat in vec4 vProvokingUvs;
 
 layout(location = 0) out vec4 oDiffuse;
 
@@ -63,6 +66,11 @@ const float kSameSurfacePerDepth = 1e-4;
 const float kUnresolvedTexels = 0.5;
 const float kResolvedTexels = 1.0;
 
+// The agreement test of the seam continuation below: how much larger the
+// chart beyond may be drawn than this one, and a slack for rounding.
+const float kSeamScaleRatio = 4.0;
+const float kSeamSlackTexels = 2.0;
+
 void main() {
     int objectId = int(texelFetch(uAlbedo, ivec2(gl_FragCoord.xy), 0).a * 255.0 + 0.5);
     if (objectId != int(uObject.objectId + 0.5)) discard;
@@ -86,18 +94,35 @@ void main() {
     float mmPerTexel = max(length(vDPduM), length(vDPdvM)) * 1000.0 * uTs.texelUv;
     float mmPerPixel = viewDepthM / uFrame.pixelsPerMetreAtUnitDepth * 1000.0;
     float mmResolved = max(mmPerTexel, mmPerPixel);
-    // Past a chart border that is the outline of a thin part (the rim of an
-    // ear, whose two faces are charts of their own), a Gaussian's mass
-    // beyond the border takes the thin-edge fill in place of the local light,
-    // as a screen-space tap past the outline does (include/ThinEdges.glsl):
-    // its share is the Gaussian's 1-D tail beyond the border. The slope test
-    // takes the surface's angle to the view.
+    // A Gaussian's mass beyond the nearest chart border (its 1-D tail there)
+    // takes the light across the border in place of the local light:
+    // - at a seam, the blurred texture's light at the border point on the
+    //   chart beyond (mesh/UvLayout.h), where the surface goes on flat; where
+    //   it turns round (the rim of a thin part: an ear's two faces are charts
+    //   of their own that meet at its rim) the thin-edge fill of
+    //   include/ThinEdges.glsl with that light as the hidden side's;
+    // - at the mesh's own edge, the thin-edge fill from the hidden-side pass,
+    //   as a screen-space tap past the outline takes it (the slope test
+    //   takes the surface's angle to the view).
     vec3 N = normalize(cross(vDPduM, vDPdvM));
     vec3 V = normalize(uFrame.cameraPositionM.xyz - vWorldPositionM);
     float facing = max(abs(dot(N, V)), kTiny);
     vec4 hiddenSide = hiddenSideAt(uHiddenSide, ivec2(gl_FragCoord.xy));
     float thinWeight = thinEdgeWeight(hiddenSide, sqrt(max(1.0 - facing * facing, 0.0)) / facing);
     vec3 thinFill = thinEdgeFill(local, hiddenSide, thinWeight) - local;
+    float atSeam = clamp(vSeamContinuation.z, 0.0, 1.0);
+    // The continuation is interpolated over the triangle. Along one seam its
+    // vertices' continuations lie as far apart as the vertices themselves,
+    // give or take the two charts' scales; a triangle whose vertices are
+    // nearest to different seams interpolates between unrelated places of
+    // the layout, and takes the mesh-edge fill instead.
+    float acrossUv = length(vSeamContinuation.xy - vProvokingUvs.zw);
+    float alongUv = length(vUv - vProvokingUvs.xy);
+    if (acrossUv > kSeamScaleRatio * alongUv + kSeamSlackTexels * uTs.texelUv) atSeam = 0.0;
+    // Where the thin-edge passes do not run (transmittance.thin_edges off),
+    // a seam round a rim takes no fill, as a mesh edge does.
+    float seamTurn = thinEdgeOpposed(vSeamContinuation.w);
+    bool thinEdgesOn = textureSize(uHiddenSide, 0) != ivec2(1);
     vec3 sum = vec3(0.0);
     vec3 weightSum = vec3(0.0);
     vec4 blurred[DERMIS_MAX_PROFILE_GAUSSIANS];
@@ -109,7 +134,10 @@ void main() {
         float resolved = smoothstep(kUnresolvedTexels, kResolvedTexels, sigmaMm / max(mmResolved, kTiny));
         vec3 light = mix(pixelIrradiance, blurred[i].rgb, resolved);
         float beyondBorder = normalUpperTail(borderMm / max(sigmaMm, kTiny));
-        sum += uTs.gaussians[i].rgb * (mix(local, light, trust) + beyondBorder * thinFill);
+        vec3 across = texture(uBlurred[i], vSeamContinuation.xy).rgb;
+        vec3 acrossSeam = mix(across - local, thinEdgesOn ? thinEdgeRim(local, across) - local : vec3(0.0), seamTurn);
+        vec3 beyond = mix(thinFill, acrossSeam, atSeam);
+        sum += uTs.gaussians[i].rgb * (mix(local, light, trust) + beyondBorder * beyond);
         weightSum += uTs.gaussians[i].rgb;
     }
     vec3 diffuse = sum / max(weightSum, vec3(kTiny));

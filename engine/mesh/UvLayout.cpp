@@ -19,6 +19,8 @@ constexpr float kUvGrid = 1048576.0f;
 // lengths is degenerate in space.
 constexpr float kDegenerateArea = 1e-9f;
 constexpr float kDegenerateUvArea = 1e-14f;
+// The chart beyond a seam must reach this share of the seam probe from it.
+constexpr float kSeamProbeReach = 0.5f;
 
 uint64_t uvKey(const glm::vec2& uv) {
     const auto quantise = [](float x) {
@@ -83,14 +85,25 @@ void accumulateDerivatives(const MeshData& mesh, UvLayout& out) {
     }
 }
 
-void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
+// Positions are compared bit for bit: the two sides of a seam are split
+// copies of one vertex.
+struct PositionHash {
+    size_t operator()(const glm::vec3& p) const {
+        const std::hash<float> h;
+        return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
+    }
+};
+
+void computeBorderDistances(const MeshData& mesh, float seamProbe, UvLayout& out) {
     const size_t n = mesh.vertices.size();
     // Nodes: distinct UV positions.
     std::unordered_map<uint64_t, uint32_t> nodeOfKey;
     std::vector<uint32_t> nodeOfVertex(n);
+    std::vector<uint32_t> vertexOfNode;
     for (size_t v = 0; v < n; ++v) {
         const auto inserted = nodeOfKey.emplace(uvKey(mesh.vertices[v].uv), static_cast<uint32_t>(nodeOfKey.size()));
         nodeOfVertex[v] = inserted.first->second;
+        if (inserted.second) vertexOfNode.push_back(static_cast<uint32_t>(v));
     }
     const size_t nodes = nodeOfKey.size();
 
@@ -113,8 +126,12 @@ void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
         }
     }
 
-    // Dijkstra from every node on an edge that only one triangle uses.
+    // Dijkstra from every node on an edge that only one triangle uses,
+    // remembering which border node each node is nearest to.
+    constexpr uint32_t kNone = ~0u;
     std::vector<float> distance(nodes, kFarFromBorder);
+    std::vector<uint32_t> nearestBorder(nodes, kNone);
+    std::unordered_multimap<glm::vec3, uint32_t, PositionHash> borderNodesAt;
     using Entry = std::pair<float, uint32_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
     for (const auto& [edge, uses] : edgeUses) {
@@ -122,6 +139,8 @@ void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
         for (uint32_t node : {edge.first, edge.second}) {
             if (distance[node] > 0.0f) {
                 distance[node] = 0.0f;
+                nearestBorder[node] = node;
+                borderNodesAt.emplace(mesh.vertices[vertexOfNode[node]].position, node);
                 queue.push({0.0f, node});
             }
         }
@@ -134,12 +153,57 @@ void computeBorderDistances(const MeshData& mesh, UvLayout& out) {
             const float candidate = d + length;
             if (candidate < distance[next]) {
                 distance[next] = candidate;
+                nearestBorder[next] = nearestBorder[node];
                 queue.push({candidate, next});
             }
         }
     }
+    // Each border node's strip: the nodes it is the nearest border node of.
+    std::vector<std::vector<uint32_t>> strip(nodes);
+    for (uint32_t node = 0; node < nodes; ++node) {
+        if (nearestBorder[node] != kNone) strip[nearestBorder[node]].push_back(node);
+    }
+    // The strip's node nearest to seamProbe from the border (its farthest,
+    // where the strip is shorter).
+    const auto probeNode = [&](uint32_t border) {
+        uint32_t best = border;
+        for (uint32_t node : strip[border]) {
+            if (std::abs(distance[node] - seamProbe) < std::abs(distance[best] - seamProbe)) best = node;
+        }
+        return best;
+    };
+    const auto normalAt = [&](uint32_t node) { return glm::normalize(mesh.vertices[vertexOfNode[node]].normal); };
+    // Per border node: (partner UV, 1, turn), worked out once.
+    std::unordered_map<uint32_t, glm::vec4> continuationOf;
+    const auto continuation = [&](uint32_t border) {
+        const auto known = continuationOf.find(border);
+        if (known != continuationOf.end()) return known->second;
+        glm::vec4 result(0.0f, 0.0f, 0.0f, -1.0f);
+        // The other border node at the border vertex's position: where a
+        // seam's other side is (at a corner where three charts meet, either).
+        const auto [first, last] = borderNodesAt.equal_range(mesh.vertices[vertexOfNode[border]].position);
+        for (auto it = first; it != last; ++it) {
+            if (it->second == border) continue;
+            // A chart beyond that ends within half the probe (a strip round a
+            // box's thin end) is one step of a turn that goes on past it: its
+            // light is not what lies beyond the border. No continuation there.
+            float reach = 0.0f;
+            for (uint32_t node : strip[it->second]) reach = std::max(reach, distance[node]);
+            if (reach < kSeamProbeReach * seamProbe) break;
+            const float turn = -glm::dot(normalAt(probeNode(border)), normalAt(probeNode(it->second)));
+            result = glm::vec4(mesh.vertices[vertexOfNode[it->second]].uv, 1.0f, std::isfinite(turn) ? turn : -1.0f);
+            break;
+        }
+        continuationOf.emplace(border, result);
+        return result;
+    };
     out.borderDistance.resize(n);
-    for (size_t v = 0; v < n; ++v) out.borderDistance[v] = std::min(distance[nodeOfVertex[v]], kFarFromBorder);
+    out.seamContinuation.assign(n, glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
+    for (size_t v = 0; v < n; ++v) {
+        const uint32_t node = nodeOfVertex[v];
+        out.borderDistance[v] = std::min(distance[node], kFarFromBorder);
+        if (nearestBorder[node] != kNone) out.seamContinuation[v] = continuation(nearestBorder[node]);
+    }
 }
 
 // Rasterises every triangle's UV footprint onto texel centres of the grid
@@ -195,11 +259,11 @@ UvLayout analyseUvDerivatives(const MeshData& mesh) {
     return out;
 }
 
-UvLayout analyseUvLayout(const MeshData& mesh) {
+UvLayout analyseUvLayout(const MeshData& mesh, float metresPerUnit) {
     UvLayout out;
     coverageAndOverlap(mesh, out);
     accumulateDerivatives(mesh, out);
-    computeBorderDistances(mesh, out);
+    computeBorderDistances(mesh, kSeamProbeM / std::max(metresPerUnit, 1e-12f), out);
     std::vector<float> typical;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         const float u = glm::length(out.dPdu[v]);

@@ -15,6 +15,10 @@
 //    border (a seam or the mesh's edge), in object units. A texture-space blur
 //    cannot see light from across a border, so near one the final gather
 //    blends to local diffuse (docs/texture-space.md).
+//  - per vertex, the UV across that border where the border is a seam (the
+//    same surface point in another chart, or the other side of a cut), and
+//    whether the surface turns round there: the gather reads the light
+//    beyond the border there (shaders/ts_gather.frag).
 //  - summary stretch figures from which the planner picks a texture size.
 //
 // Degenerate triangles (no area in UV, or none in space) add nothing, so every
@@ -33,6 +37,20 @@ struct UvLayout {
     std::vector<glm::vec3> dPdu;        // per vertex, object units per unit of u
     std::vector<glm::vec3> dPdv;        // per vertex, object units per unit of v
     std::vector<float> borderDistance;  // per vertex, object units along mesh edges to a chart border
+    // Per vertex, where the surface goes on across its nearest chart border
+    // (its border node: the nearest by edge paths):
+    //   xy  the UV, on the chart beyond, of that border point: the border
+    //       vertex at the same position (the other side of a seam);
+    //   z   1 where there is one, 0 where the border is the mesh's own edge,
+    //       where the chart beyond ends within half of seamProbe from it (a
+    //       strip round a box's thin end: its light is not what lies beyond),
+    //       or where no border is reached;
+    //   w   how far the surface turns round across the seam: -N.N' for the
+    //       normals seamProbe (kSeamProbeM) into either chart from the border point (the
+    //       nodes nearest to that distance among those whose nearest border
+    //       node it is, or the farthest of them), 1 at the rim of a thin
+    //       part (an ear's two faces), -1 where the surface goes on flat.
+    std::vector<glm::vec4> seamContinuation;
     // Median over vertices of sqrt(|dP/du| |dP/dv|): the typical object-space
     // length of one UV unit. 0 for a mesh without a usable triangle.
     float medianStretch = 0.0f;
@@ -63,7 +81,13 @@ constexpr int kUvOverlapGrid = 512;
 // A border vertex that no edge path reaches keeps this distance.
 constexpr float kFarFromBorder = 1e6f;
 
-UvLayout analyseUvLayout(const MeshData& mesh);
+// How far into the charts the seam's turn is measured (seamContinuation.w):
+// the widest skin Gaussian's reach, about its standard deviation (2.7 mm in
+// d'Eon & Luebke 2007's fit), beyond the rolled rim of an ear.
+constexpr float kSeamProbeM = 0.003f;
+
+// `metresPerUnit`: the mesh's scale in the world, for kSeamProbeM.
+UvLayout analyseUvLayout(const MeshData& mesh, float metresPerUnit);
 
 // Only the per-vertex derivatives (and uvlessSurfaceFraction): what GPU
 // skinning transforms each frame for an animated character's stretch map

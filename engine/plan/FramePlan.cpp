@@ -170,8 +170,8 @@ std::vector<TsCharacterInput> textureSpaceInputs(SceneGeometry& geometry, const 
         input.worldBounds = plan.characters[c].worldBounds;
         input.submeshMaterials = geometry.submeshMaterials(c);
         if (plan.sss.hasSss(c)) {
-            const UvLayout& layout = geometry.uvLayout(c);
-            const float mmPerUnit = glm::length(glm::vec3(plan.characters[c].worldFromObject[0])) * 1000.0f;
+            const UvLayout& layout = geometry.uvLayout(c, plan.characters[c].metresPerUnit());
+            const float mmPerUnit = plan.characters[c].metresPerUnit() * 1000.0f;
             input.mmPerUv = layout.medianStretch * mmPerUnit;
             input.denseMmPerUv = layout.denseStretch * mmPerUnit;
             input.uvlessSurfaceFraction = layout.uvlessSurfaceFraction;

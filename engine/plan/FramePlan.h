@@ -90,6 +90,9 @@ struct CharacterPlacement {
     // and that level's error projected on screen, pixels.
     int lod = 0;
     float lodErrorPx = 0.0f;
+
+    // Its world size per object unit (the transform's scale is uniform).
+    float metresPerUnit() const { return glm::length(glm::vec3(worldFromObject[0])); }
 };
 
 // One shadow-casting light's map this frame.

@@ -22,16 +22,18 @@ SceneGeometry::SceneGeometry(const SceneModels& models) {
     }
 }
 
-const UvLayout& SceneGeometry::uvLayout(size_t character) {
+const UvLayout& SceneGeometry::uvLayout(size_t character, float metresPerUnit) {
     Character& c = mCharacters[character];
-    if (!c.uvLayout) {
-        // Characters that share a model share its layout.
+    if (!c.uvLayout || c.uvLayoutMetresPerUnit != metresPerUnit) {
+        c.uvLayout = nullptr;
+        // Characters that share a model and its scale share its layout.
         for (const Character& other : mCharacters) {
-            if (other.model != c.model || !other.uvLayout) continue;
+            if (other.model != c.model || !other.uvLayout || other.uvLayoutMetresPerUnit != metresPerUnit) continue;
             c.uvLayout = other.uvLayout;
             break;
         }
-        if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh));
+        if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh, metresPerUnit));
+        c.uvLayoutMetresPerUnit = metresPerUnit;
     }
     return *c.uvLayout;
 }

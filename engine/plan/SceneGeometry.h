@@ -50,8 +50,9 @@ public:
     const std::vector<float>& lodErrorsObject(size_t character) const { return mCharacters[character].lodErrorsObject; }
     // The character's UV layout, analysed on first use (CPU; the procedural
     // head takes a fraction of a second) and shared by the characters that
-    // share its model.
-    const UvLayout& uvLayout(size_t character);
+    // share its model at the same scale (`metresPerUnit`, its world size per
+    // object unit: analyseUvLayout measures the seams' turn in metres).
+    const UvLayout& uvLayout(size_t character, float metresPerUnit);
     // The environment's map, extracted light and SH as loaded
     // (render/SceneLoading.h); null before loading. It stays while the scene has none.
     const std::shared_ptr<const EnvironmentLight>& environmentLight() const { return mEnvironment; }
@@ -70,6 +71,7 @@ private:
         std::shared_ptr<const Rig> rig;
         std::vector<SubmeshMaterial> submeshMaterials;
         std::vector<float> lodErrorsObject;
+        float uvLayoutMetresPerUnit = 0.0f;  // the scale uvLayout was analysed at
     };
     std::vector<Character> mCharacters;
 };

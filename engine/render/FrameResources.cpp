@@ -83,7 +83,7 @@ Status FrameResources::prepare(const FramePlan& plan, SceneGeometry& geometry) {
     }
     for (const TsCharacterPlan& character : plan.ts.characters) {
         const auto index = static_cast<size_t>(character.character);
-        mTsMeshes.prepare(index, mGpuScene.characters()[index], geometry.uvLayout(index));
+        mTsMeshes.prepare(index, mGpuScene.characters()[index], geometry.uvLayout(index, plan.characters[index].metresPerUnit()));
         if (plan.environment.transfer) {
             GpuEnvironment::attachTransfer(mTsMeshes.get(index).vertexArray.get(), mEnvironment.drawnTransfer(index));
         }

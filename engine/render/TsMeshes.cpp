@@ -12,16 +12,18 @@ struct LayoutVertex {
     glm::vec3 dPdu;
     glm::vec3 dPdv;
     float borderDistance;
+    glm::vec4 seamContinuation;
 };
 
 TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
     std::vector<LayoutVertex> vertices(layout.dPdu.size());
     for (size_t v = 0; v < vertices.size(); ++v) {
-        vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v]};
+        vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v], layout.seamContinuation[v]};
     }
 
     TsMesh out;
     out.sourceVertexBuffer = character.mesh.vertexBuffer.get();
+    out.sourceLayout = &layout;
     out.indexCount = character.mesh.indexCount;
     out.layoutBuffer = gl::createBuffer("texture space: " + character.name + " UV layout");
     glNamedBufferStorage(out.layoutBuffer.get(), static_cast<GLsizeiptr>(std::max<size_t>(vertices.size(), 1) * sizeof(LayoutVertex)),
@@ -49,7 +51,8 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
                                     {kTsLocationDPdu, animated ? 2u : 1u, 3, animated ? 0 : offsetof(LayoutVertex, dPdu)},
                                     {kTsLocationDPdv, animated ? 2u : 1u, 3, animated ? 3 * sizeof(float) : offsetof(LayoutVertex, dPdv)},
                                     {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)},
-                                    {kColourLocation, 3, 4, 0}};
+                                    {kColourLocation, 3, 4, 0},
+                                    {kTsLocationSeamContinuation, 1, 4, offsetof(LayoutVertex, seamContinuation)}};
     for (const Attribute& a : attributes) {
         glEnableVertexArrayAttrib(vao, a.location);
         glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
@@ -68,7 +71,8 @@ void TsMesh::draw() const {
 void TsMeshes::prepare(size_t characterIndex, const GpuCharacter& character, const UvLayout& layout) {
     if (mMeshes.size() <= characterIndex) mMeshes.resize(characterIndex + 1);
     TsMesh& mesh = mMeshes[characterIndex];
-    if (!mesh.vertexArray.isValid() || mesh.sourceVertexBuffer != character.mesh.vertexBuffer.get()) {
+    if (!mesh.vertexArray.isValid() || mesh.sourceVertexBuffer != character.mesh.vertexBuffer.get() ||
+        mesh.sourceLayout != &layout) {
         mesh = makeTsMesh(character, layout);
     }
 }

@@ -1,12 +1,14 @@
 #pragma once
 // What the texture-space passes draw each character with: its GpuMesh's
 // vertex and index buffers plus a second vertex buffer of UV-layout values
-// (mesh/UvLayout.h: dP/du, dP/dv and the distance to a chart border), made
+// (mesh/UvLayout.h: dP/du, dP/dv, the distance to a chart border and the
+// seam's continuation), made
 // once per character from the layout analysed on the CPU mesh
 // (plan/SceneGeometry.h). Attribute locations:
 //   0 position, 1 normal, 2 tangent, 3 uv   (the GpuMesh's, as the G-buffer's)
 //   4 dP/du, 5 dP/dv (object units per UV unit), 6 border distance (object units)
 //   7 colour (COLOR_0, the GpuMesh's colour buffer)
+//   8 seam continuation (UV across the nearest border, 1 where it is a seam, the seam's turn)
 // An animated character's dP/du and dP/dv come instead from its GpuRig's
 // derivatives, which the skinning pass deforms with the mesh each pose, so
 // its stretch map follows the deformation (the border distances stay the
@@ -25,11 +27,13 @@ namespace dermis {
 constexpr GLuint kTsLocationDPdu = 4;
 constexpr GLuint kTsLocationDPdv = 5;
 constexpr GLuint kTsLocationBorder = 6;
+constexpr GLuint kTsLocationSeamContinuation = 8;
 
 struct TsMesh {
     gl::VertexArray vertexArray;
     gl::Buffer layoutBuffer;
     GLuint sourceVertexBuffer = 0;  // the GpuMesh buffer it was made from
+    const UvLayout* sourceLayout = nullptr;  // and the layout
     GLsizei indexCount = 0;
 
     void draw() const;
@@ -37,7 +41,7 @@ struct TsMesh {
 
 class TsMeshes {
 public:
-    // Makes the character's TsMesh unless it was made from this GpuMesh already.
+    // Makes the character's TsMesh unless it was made from this GpuMesh and layout already.
     void prepare(size_t characterIndex, const GpuCharacter& character, const UvLayout& layout);
     // The character's TsMesh; prepare() made it.
     const TsMesh& get(size_t characterIndex) const { return mMeshes[characterIndex]; }

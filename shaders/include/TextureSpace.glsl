@@ -29,7 +29,9 @@
 //                    surface the G-buffer kept, by its stored view depth):
 //                    sum_i w_i T_i(uv) / sum_i w_i, each T_i giving way to
 //                    T_0 (the narrowest, "local" light) near a chart border,
-//                    plus the TSM terms; the
+//                    its mass beyond the border taking the light across it
+//                    (at a seam, T_i on the chart beyond: mesh/UvLayout.h;
+//                    ts_gather.frag), plus the TSM terms; the
 //                    composite then applies albedo^(1-mix), the outgoing
 //                    energy and the specular, as in screen-space mode.
 //

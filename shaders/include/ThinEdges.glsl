@@ -60,7 +60,13 @@
 //     slope test but whose path through the roll is longer: the path test
 //     keeps the fill off it (0.88% with it, 0.99% without).
 //   - Texture space (ts_gather.frag) adds, per Gaussian, its 1-D tail beyond
-//     the nearest chart border times (fill - local light).
+//     the nearest chart border times (fill - local light). Where that border
+//     is a seam round a rim (mesh/UvLayout.h: the surface turns round across
+//     it, THIN_EDGE_OPPOSED_* on -N.N' measured 3 mm into either chart), the
+//     hidden side's light is the blurred texture's own, read across the seam
+//     (thinEdgeRim with it): the ear's two faces are charts that meet at the
+//     rim. 0.45 is least there too (the default head 1.11%; 0.3: 1.15%, 0.6:
+//     1.15%).
 #ifndef DERMIS_THIN_EDGES_GLSL
 #define DERMIS_THIN_EDGES_GLSL
 
@@ -87,10 +93,20 @@ float thinEdgeWeight(vec4 hiddenSide, float slope) {
     return slope < THIN_EDGE_MAX_SLOPE ? hiddenSide.a : 0.0;
 }
 
+// How much a part's far side faces away from its near side, from -N.N_far:
+// 0 under THIN_EDGE_OPPOSED_NONE, 1 from THIN_EDGE_OPPOSED_FULL.
+float thinEdgeOpposed(float minusNDotNFar) {
+    return smoothstep(THIN_EDGE_OPPOSED_NONE, THIN_EDGE_OPPOSED_FULL, minusNDotNFar);
+}
+
+// The light past the rim of a thin part: the centre's share round the rim
+// plus the hidden side's.
+vec3 thinEdgeRim(vec3 centre, vec3 hidden) { return THIN_EDGE_RIM_SHARE * centre + THIN_EDGE_BACK_SHARE * hidden; }
+
 // What a tap past the outline takes for its rejected share, given the
 // centre's value and the weight above.
 vec3 thinEdgeFill(vec3 centre, vec4 hiddenSide, float weight) {
-    return mix(centre, THIN_EDGE_RIM_SHARE * centre + THIN_EDGE_BACK_SHARE * hiddenSide.rgb, weight);
+    return mix(centre, thinEdgeRim(centre, hiddenSide.rgb), weight);
 }
 
 #endif

@@ -133,8 +133,14 @@ protected:
         // the gathers are counted instead (SeveralCharacters...). The thin-edge
         // fill (include/ThinEdges.glsl), which the two modes apply their own way
         // (to screen-space taps past an outline, to the gather's Gaussians near a
-        // chart border), moves the three heads to 0.0124: 1.3%.
-        EXPECT_LT(diffuse.relativeRmse, 0.013) << label;
+        // chart border), moved the three heads to 0.0124; texture space then
+        // took the far side's light across the ear's rim seam from its own
+        // texture instead of the hidden-side pass's estimate (ts_gather.frag),
+        // which brought its ear closer to the matched reference
+        // (ThinEdges.EarRim..., ts 3.96% -> 3.51%) and the three heads to
+        // 0.0168, on the outermost pixels of the near head's ear rim: 1.8%,
+        // which still fails both broken gathers above.
+        EXPECT_LT(diffuse.relativeRmse, 0.018) << label;
         glm::dvec3 ssSum(0.0), tsSum(0.0);
         for (size_t i = 0; i < mCharacters.size(); ++i) {
             if (!mCharacters[i]) continue;

@@ -73,7 +73,7 @@ TEST_F(TextureSpace, StretchMapOnTheUvSphereMatchesTheClosedForm) {
     auto framePlan = planFrame(*scene, geometry, {512, 512, Aov::Stretch}, ShadowCache{});
     ASSERT_TRUE(framePlan.ok());
     TsMeshes meshes;
-    meshes.prepare(0, gpuScene->characters()[0], geometry.uvLayout(0));
+    meshes.prepare(0, gpuScene->characters()[0], geometry.uvLayout(0, 1.0f));
     FrameServices services;
     services.gpuScene = &*gpuScene;
     services.programs = &*programs;

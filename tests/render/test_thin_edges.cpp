@@ -61,14 +61,16 @@ TEST_F(ThinEdges, EarRimScattersCloserToTheMatchedReferenceInBothModes) {
                     100.0 * error[mode][0], 100.0 * error[mode][1]);
     }
     // Measured (160x90, the change at 2048^2 and spp 4): ss 3.83% -> 3.31%, ts
-    // 4.30% -> 3.96% (the rest is the back-lit rim, too dark in both modes, and
-    // the root of the ear). Broken on purpose through copies of the shaders:
-    // the hidden side's full light (THIN_EDGE_BACK_SHARE 1) gives 5.58% and
-    // 5.26%, the rim's full light (THIN_EDGE_RIM_SHARE 1) 4.90% and 4.25%.
-    // So screen space must fall by a tenth and texture space by a twentieth
-    // (its fill reaches only a Gaussian's tail beyond the chart border).
+    // 4.30% -> 3.51% (texture space reads the far side's light across the
+    // ear's rim seam from its own texture; 3.96% with the hidden-side pass's
+    // estimate instead). The rest is the back-lit rim, too dark in both
+    // modes, and the root of the ear. Broken on purpose through copies of the
+    // shaders: the hidden side's full light (THIN_EDGE_BACK_SHARE 1) gives
+    // 5.58% and 4.47%, the rim's full light (THIN_EDGE_RIM_SHARE 1) 4.90% and
+    // 3.76%. So screen space must fall by a tenth and texture space by 15%
+    // (3.66%: under the second break, over what it measures).
     EXPECT_LT(error[0][1], 0.9 * error[0][0]);
-    EXPECT_LT(error[1][1], 0.95 * error[1][0]);
+    EXPECT_LT(error[1][1], 0.85 * error[1][0]);
 }
 
 // The wedge of content/scenes/slab.json seen from above (1 mm thick at
@@ -98,8 +100,11 @@ TEST_F(ThinEdges, OnlyThinPartsChangeInBothModes) {
         }
         std::printf("%s: %d pixels changed over the thick part, %d by more than 1%% along the thin end\n", mode,
                     thickChanged, thinChanged);
-        // Broken on purpose: without the path test (THIN_EDGE_NONE_MM 1e9) 565 (ss) and 186 (ts)
-        // pixels change there; without the normal test 600 and 134.
+        // Broken on purpose: without the path test (THIN_EDGE_NONE_MM 1e9) 565 (ss) and 6 (ts)
+        // pixels change there; without the normal test (THIN_EDGE_OPPOSED_* below -1) 600 and
+        // 378. Texture space takes the light across the wedge's seams where the chart
+        // beyond reaches 1.5 mm (mesh/UvLayout.h), whatever the switch; its 1 mm thin end
+        // does not, and takes the hidden-side fill: 19 pixels change there.
         EXPECT_EQ(thickChanged, 0) << mode;
         EXPECT_GT(thinChanged, 4) << mode;
     }
