@@ -9,7 +9,7 @@ layout(location = 3) in vec2 aUv;
 layout(location = 4) in vec3 aDPdu;
 layout(location = 5) in vec3 aDPdv;
 layout(location = 6) in float aBorderDistance;  // object units (mesh/UvLayout.h)
-layout(location = 8) in vec4 aSeamContinuation;  // UV across the nearest border, 1 at a seam, its turn (mesh/UvLayout.h)
+layout(location = DERMIS_LOCATION_TS_SEAM) in vec4 aSeamContinuation;  // UV across the nearest border, 1 at a seam, its turn (mesh/UvLayout.h)
 
 out vec3 vWorldPositionM;
 out vec2 vUv;

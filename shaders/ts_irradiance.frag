@@ -7,6 +7,8 @@
 //        pixel (lighting.frag).
 //   a:   exp(-c d), d the thickness (mm) towards the TSM light (listing 2.7),
 //        1 without a TSM; always > 0, so 0 marks an empty texel.
+//   Texels of surface inside the body (mesh/UvLayout.h buried) stay empty,
+//   except in the capture for the reference (uBuriedEmpty 0).
 // The material's maps (normal, albedo, roughness, rho_s) are read at the mip
 // level of the pixel that shows the point, not at the texel's own: a texel
 // holds the light the lighting pass gives that point, and both modes (and
@@ -34,6 +36,7 @@ layout(binding = DERMIS_UNIT_ENERGY) uniform sampler2D uEnergy;
 // GBUFFER_LEAN) set this, and the normal here comes from the same map.
 layout(binding = DERMIS_UNIT_TS_LEAN_MAP) uniform sampler2D uLeanMap;  // (B.x, B.y, M.xx, M.yy), tangent space
 layout(location = DERMIS_LOCATION_TS_LEAN_NORMALS) uniform int uLeanNormals;
+layout(location = DERMIS_LOCATION_TS_BURIED_EMPTY) uniform int uBuriedEmpty;
 
 in vec3 vWorldPositionM;
 in vec3 vWorldNormal;
@@ -43,6 +46,7 @@ in vec3 vColour;
 in vec4 vEnvironment;
 in vec3 vDPduM;  // metres per unit of the mesh's UV
 in vec3 vDPdvM;
+in float vBuried;  // 1 inside the body (mesh/UvLayout.h)
 
 layout(location = 0) out vec4 oIrradiance;
 
@@ -91,6 +95,15 @@ MapFootprint cameraFootprint(vec2 texelDx, vec2 texelDy) {
 }
 
 void main() {
+    // Surface inside the body takes no light and gives none: an empty texel,
+    // which the blurs leave out, as the reference leaves it out as a donor.
+    // The capture for the reference keeps its light (IrradianceCapture.h): a
+    // donor beside the junction reads texels within reach, and an empty one
+    // would count as no light there.
+    if (uBuriedEmpty != 0 && vBuried > 0.5) {
+        oIrradiance = vec4(0.0);
+        return;
+    }
     MapFootprint at = cameraFootprint(dFdx(vMapUv), dFdy(vMapUv));
     vec3 geometricN = safeNormalize(vWorldNormal, vec3(0.0, 1.0, 0.0));
     vec3 N = geometricN;

@@ -11,6 +11,7 @@ layout(location = 3) in vec2 aUv;
 layout(location = 4) in vec3 aDPdu;  // object units per UV unit (mesh/UvLayout.h)
 layout(location = 5) in vec3 aDPdv;
 layout(location = 7) in vec4 aColour;  // COLOR_0 (render/GpuScene.h kColourLocation)
+layout(location = DERMIS_LOCATION_TS_BURIED) in float aBuried;  // 1 inside the body (mesh/UvLayout.h)
 
 out vec3 vWorldPositionM;
 out vec3 vWorldNormal;
@@ -19,6 +20,7 @@ out vec2 vMapUv;         // where the material's maps are sampled (flip_v applie
 out vec3 vDPduM;         // metres per UV unit
 out vec3 vDPdvM;
 out vec3 vColour;
+out float vBuried;
 #include "EnvironmentTransfer.glsl"
 out vec4 vEnvironment;  // L.T and the visible share (occlusion "transfer"; 0 when the mesh has no transfer)
 
@@ -30,6 +32,7 @@ void main() {
     vDPduM = mat3(uObject.worldFromObject) * aDPdu;
     vDPdvM = mat3(uObject.worldFromObject) * aDPdv;
     vColour = aColour.rgb;
+    vBuried = aBuried;
     vEnvironment = transferIrradiance();
     // Texel (x, y) of an N x N target holds uv = ((x, y) + 0.5) / N, so that
     // texture(map, uv) reads back what was written here.

@@ -165,6 +165,22 @@ void fillFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& buried
     }
 }
 
+// The mesh's triangles and where the rays of its vertices start and stop.
+struct VertexTracer {
+    raytrace::EmbreeBvh bvh;
+    float offset = 0.0f;  // off the surface along the normal
+    float tMax = 0.0f;    // beyond every occluder
+
+    static VertexTracer build(const MeshData& mesh) {
+        std::vector<glm::vec3> corners;
+        corners.reserve(mesh.indices.size());
+        for (uint32_t index : mesh.indices) corners.push_back(mesh.vertices[index].position);
+        const float diagonal = glm::length(mesh.bounds().size());
+        const float offset = kRayOffsetPerDiagonal * diagonal;
+        return {raytrace::EmbreeBvh::build(corners), offset, 2.0f * diagonal + offset};
+    }
+};
+
 }  // namespace
 
 void fillBuriedFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& buried, std::vector<ShScalar9>& values) {
@@ -172,17 +188,33 @@ void fillBuriedFromNeighbours(const MeshData& mesh, const std::vector<uint8_t>& 
     fillFromNeighbours(mesh, buried, std::tuple_size<ShScalar9>::value, values.empty() ? nullptr : values[0].data());
 }
 
+Result<std::vector<uint8_t>> findBuriedVertices(const MeshData& mesh, int raysPerVertex) {
+    const int strataPerSide = int(std::lround(std::sqrt(double(std::max(raysPerVertex, 0)))));
+    if (Status valid = checkInputs(mesh, raysPerVertex, strataPerSide); !valid) return valid.error();
+    const VertexTracer tracer = VertexTracer::build(mesh);
+    std::vector<uint8_t> buried(mesh.vertices.size(), 0u);
+    raytrace::parallelFor(mesh.vertices.size(), 0, [&](size_t vertexIndex) {
+        glm::vec3 normal;
+        if (!unitNormal(mesh.vertices[vertexIndex], normal)) return;
+        const glm::vec3 origin = mesh.vertices[vertexIndex].position + tracer.offset * normal;
+        int insideHits = 0;
+        forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int, const glm::vec3& direction) {
+            raytrace::BvhHit hit;
+            if (tracer.bvh.closestHit(raytrace::Ray{origin, direction}, 0.0f, tracer.tMax, &hit) && hit.backFace) ++insideHits;
+        });
+        buried[vertexIndex] = 2 * insideHits > raysPerVertex ? 1 : 0;
+    });
+    return buried;
+}
+
 Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptions& options) {
     const int strataPerSide = int(std::lround(std::sqrt(double(std::max(options.raysPerVertex, 0)))));
     if (Status valid = checkInputs(mesh, options.raysPerVertex, strataPerSide); !valid) return valid.error();
 
-    std::vector<glm::vec3> corners;
-    corners.reserve(mesh.indices.size());
-    for (uint32_t index : mesh.indices) corners.push_back(mesh.vertices[index].position);
-    const raytrace::EmbreeBvh bvh = raytrace::EmbreeBvh::build(corners);
-    const float diagonal = glm::length(mesh.bounds().size());
-    const float offset = kRayOffsetPerDiagonal * diagonal;
-    const float tMax = 2.0f * diagonal + offset;  // beyond every occluder
+    const VertexTracer tracer = VertexTracer::build(mesh);
+    const raytrace::EmbreeBvh& bvh = tracer.bvh;
+    const float offset = tracer.offset;
+    const float tMax = tracer.tMax;
     const float weightPerRay = kPi / float(options.raysPerVertex);
 
     ShTransfer out;

@@ -67,6 +67,13 @@ inline size_t visibilityWords(int raysPerVertex) { return (size_t(raysPerVertex)
 // multiple of 3.
 Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptions& options = {});
 
+// Which vertices lie inside the body, by the rule computeShTransfer uses
+// (more than half of the vertex's raysPerVertex cosine-weighted rays meet the
+// inside of a surface first), without the transfer. For texture space, whose
+// irradiance texture leaves out the surface no light reaches
+// (plan/SceneGeometry.h). Errors as computeShTransfer's.
+Result<std::vector<uint8_t>> findBuriedVertices(const MeshData& mesh, int raysPerVertex);
+
 // The transfer of a vertex that has turned by `rotation` (object space, bind
 // pose -> posed): rotated(w) = transfer(rotation^T w), so E = L . T stays the
 // irradiance with L in the same object space as the posed vertex. Exact for

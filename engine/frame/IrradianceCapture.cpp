@@ -29,7 +29,7 @@ void declareIrradianceCapture(graph::RenderGraph& graph, const FramePlan& plan, 
     for (const TsCharacterPlan& character : plan.ts.characters) {
         const graph::TextureHandle tsm = addTsmPass(graph, frame, character, black);
         const graph::TextureHandle irradiance =
-            addIrradiancePass(graph, frame, character, gbuffer, shadowMaps, ambientOcclusion, tsm);
+            addIrradiancePass(graph, frame, character, gbuffer, shadowMaps, ambientOcclusion, tsm, BuriedTexels::Lit);
         Image* image = &images[static_cast<size_t>(character.character)];
         graph.addPass<ReadBackData>(
             tsPassName(character, "read back"),

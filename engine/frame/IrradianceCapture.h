@@ -5,7 +5,8 @@
 //
 // declareIrradianceCapture adds the passes that texture needs (shadow maps,
 // G-buffer and SSAO for the ambient term, each character's TSM and
-// irradiance pass, exactly as the ts frame declares them) and one read-back
+// irradiance pass, as the ts frame declares them but with the surface inside
+// the body lit: passes/TsPassSteps.h BuriedTexels) and one read-back
 // pass per character. The caller plans the frame with the texture size it
 // wants and every SSS character visible (plan/TsPlan.h).
 

@@ -51,6 +51,13 @@ struct UvLayout {
     //       node it is, or the farthest of them), 1 at the rim of a thin
     //       part (an ear's two faces), -1 where the surface goes on flat.
     std::vector<glm::vec4> seamContinuation;
+    // Per vertex, 1 where it lies inside the body (an ear's root sunk into
+    // the skull, the skull under it), where no light enters: the irradiance
+    // texture leaves those texels empty, as the reference leaves that surface
+    // out (docs/texture-space.md, "Surface inside the body"). Filled by
+    // plan/SceneGeometry.cpp (env/ShTransfer.h findBuriedVertices), not by
+    // analyseUvLayout; empty: none.
+    std::vector<uint8_t> buried;
     // Median over vertices of sqrt(|dP/du| |dP/dv|): the typical object-space
     // length of one UV unit. 0 for a mesh without a usable triangle.
     float medianStretch = 0.0f;

@@ -27,9 +27,15 @@ std::string tsPassName(const TsCharacterPlan& plan, const std::string& step);
 
 graph::TextureHandle addTsmPass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                 graph::TextureHandle black);
+// The texels of surface inside the body (mesh/UvLayout.h buried): empty in
+// a frame, so that the blurs leave them out; lit in the capture for the
+// reference (frame/IrradianceCapture.h), which leaves that surface out
+// itself and would read an empty texel beside the junction as no light.
+enum class BuriedTexels { Empty, Lit };
 graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                        const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
-                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm);
+                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm,
+                                       BuriedTexels buried = BuriedTexels::Empty);
 graph::TextureHandle addDilatePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                    graph::TextureHandle irradiance);
 // One texture per Gaussian step, the first blurred from `dilated` (a skipped

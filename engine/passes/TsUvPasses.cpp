@@ -169,7 +169,8 @@ graph::TextureHandle addTsStretchPass(graph::RenderGraph& graph, const FrameCont
 
 graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameContext& frame, const TsCharacterPlan& plan,
                                        const GBuffer& gbuffer, const std::vector<graph::TextureHandle>& shadowMaps,
-                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm) {
+                                       graph::TextureHandle ambientOcclusion, graph::TextureHandle tsm,
+                                       BuriedTexels buried) {
     const std::string name = tsPassName(plan, "irradiance");
     return graph
         .addPass<IrradianceData>(
@@ -182,11 +183,12 @@ graph::TextureHandle addIrradiancePass(graph::RenderGraph& graph, const FrameCon
                 d.out = builder.create(name, uvDesc(plan, graph::TextureFormat::Rgba16F));
                 builder.skipIf(!plan.runs(), plan.skipReason());
             },
-            [frame, plan](const graph::PassResources& resources, const IrradianceData& d) {
+            [frame, plan, buried](const graph::PassResources& resources, const IrradianceData& d) {
                 beginUvRaster(frame, resources.texture(d.out), plan.size);
                 glUseProgram(frame.gl->programs->tsIrradiance.get(frame.plan.environment.enabled(), frame.plan.lights.shadowCode));
                 // The normal the G-buffer takes: the LEAN mean normal in LEAN frames (gbuffer.frag).
                 glUniform1i(DERMIS_LOCATION_TS_LEAN_NORMALS, frame.plan.lean ? 1 : 0);
+                glUniform1i(DERMIS_LOCATION_TS_BURIED_EMPTY, buried == BuriedTexels::Empty ? 1 : 0);
                 glBindTextureUnit(2, resources.texture(d.tsm));
                 glBindTextureUnit(3, resources.texture(d.ambientOcclusion));
                 bindShadowMaps(frame, resources, d.shadowMaps);

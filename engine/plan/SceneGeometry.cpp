@@ -1,9 +1,20 @@
 #include "plan/SceneGeometry.h"
 
+#include "env/ShTransfer.h"
+
 
 #include <cmath>
 
 namespace dermis {
+namespace {
+
+// Rays per vertex for findBuriedVertices: a vertex inside the body sees the
+// inside of its enclosing part in every direction, one outside in none or
+// few, so 16 decide as the transfer's 256 do (measured on the procedural
+// head: tests/unit/test_uv_layout.cpp).
+constexpr int kBuriedVertexRays = 16;
+
+}  // namespace
 
 SceneGeometry::SceneGeometry(const std::vector<Model>& models) : SceneGeometry(shareModels(models)) {}
 
@@ -32,7 +43,14 @@ const UvLayout& SceneGeometry::uvLayout(size_t character, float metresPerUnit) {
             c.uvLayout = other.uvLayout;
             break;
         }
-        if (!c.uvLayout) c.uvLayout = std::make_shared<const UvLayout>(analyseUvLayout(c.model->mesh, metresPerUnit));
+        if (!c.uvLayout) {
+            UvLayout layout = analyseUvLayout(c.model->mesh, metresPerUnit);
+            // A mesh the tracer refuses (an index out of range) has its
+            // error named where it is drawn; here it buries nothing.
+            auto buried = findBuriedVertices(c.model->mesh, kBuriedVertexRays);
+            if (buried.ok()) layout.buried = std::move(*buried);
+            c.uvLayout = std::make_shared<const UvLayout>(std::move(layout));
+        }
         c.uvLayoutMetresPerUnit = metresPerUnit;
     }
     return *c.uvLayout;

@@ -13,12 +13,14 @@ struct LayoutVertex {
     glm::vec3 dPdv;
     float borderDistance;
     glm::vec4 seamContinuation;
+    float buried;
 };
 
 TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
     std::vector<LayoutVertex> vertices(layout.dPdu.size());
     for (size_t v = 0; v < vertices.size(); ++v) {
-        vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v], layout.seamContinuation[v]};
+        vertices[v] = {layout.dPdu[v], layout.dPdv[v], layout.borderDistance[v], layout.seamContinuation[v],
+                       v < layout.buried.size() ? float(layout.buried[v]) : 0.0f};
     }
 
     TsMesh out;
@@ -52,7 +54,8 @@ TsMesh makeTsMesh(const GpuCharacter& character, const UvLayout& layout) {
                                     {kTsLocationDPdv, animated ? 2u : 1u, 3, animated ? 3 * sizeof(float) : offsetof(LayoutVertex, dPdv)},
                                     {kTsLocationBorder, 1, 1, offsetof(LayoutVertex, borderDistance)},
                                     {kColourLocation, 3, 4, 0},
-                                    {kTsLocationSeamContinuation, 1, 4, offsetof(LayoutVertex, seamContinuation)}};
+                                    {kTsLocationSeamContinuation, 1, 4, offsetof(LayoutVertex, seamContinuation)},
+                                    {kTsLocationBuried, 1, 1, offsetof(LayoutVertex, buried)}};
     for (const Attribute& a : attributes) {
         glEnableVertexArrayAttrib(vao, a.location);
         glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));

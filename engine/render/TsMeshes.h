@@ -8,7 +8,9 @@
 //   0 position, 1 normal, 2 tangent, 3 uv   (the GpuMesh's, as the G-buffer's)
 //   4 dP/du, 5 dP/dv (object units per UV unit), 6 border distance (object units)
 //   7 colour (COLOR_0, the GpuMesh's colour buffer)
-//   8 seam continuation (UV across the nearest border, 1 where it is a seam, the seam's turn)
+//   8-10 the environment's SH transfer where it is attached (DERMIS_LOCATION_TRANSFER)
+//   11 seam continuation (UV across the nearest border, 1 where it is a seam, the seam's turn)
+//   12 buried (1 inside the body)
 // An animated character's dP/du and dP/dv come instead from its GpuRig's
 // derivatives, which the skinning pass deforms with the mesh each pose, so
 // its stretch map follows the deformation (the border distances stay the
@@ -19,6 +21,7 @@
 #include "gl/GlObjects.h"
 #include "render/GpuScene.h"
 #include "mesh/UvLayout.h"
+#include "include/SharedConstants.glsl"
 
 #include <vector>
 
@@ -27,7 +30,11 @@ namespace dermis {
 constexpr GLuint kTsLocationDPdu = 4;
 constexpr GLuint kTsLocationDPdv = 5;
 constexpr GLuint kTsLocationBorder = 6;
-constexpr GLuint kTsLocationSeamContinuation = 8;
+constexpr GLuint kTsLocationSeamContinuation = DERMIS_LOCATION_TS_SEAM;
+constexpr GLuint kTsLocationBuried = DERMIS_LOCATION_TS_BURIED;
+// GpuEnvironment::attachTransfer binds its three locations on a TsMesh too.
+static_assert(kTsLocationSeamContinuation >= DERMIS_LOCATION_TRANSFER + 3 && kTsLocationBuried >= DERMIS_LOCATION_TRANSFER + 3,
+              "texture space's attributes must not share the SH transfer's locations");
 
 struct TsMesh {
     gl::VertexArray vertexArray;

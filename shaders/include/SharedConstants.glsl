@@ -172,6 +172,9 @@
 #define DERMIS_ENV_DIFFUSE_MAP 1  // the irradiance map (env/IrradianceMap.h)
 #define DERMIS_SH_COEFFICIENTS 9
 #define DERMIS_LOCATION_TRANSFER 8      // 8, 9, 10: coefficients 0-2, 3-5, 6-8
+// Texture space's own vertex attributes past the transfer's (render/TsMeshes.h).
+#define DERMIS_LOCATION_TS_SEAM 11      // the seam continuation (mesh/UvLayout.h)
+#define DERMIS_LOCATION_TS_BURIED 12    // 1 inside the body (mesh/UvLayout.h)
 #define DERMIS_UNIT_ENVIRONMENT 11
 #define DERMIS_UNIT_ENVIRONMENT_IRRADIANCE 16  // env/IrradianceMap.h, bound with the map
 
@@ -184,6 +187,7 @@
 #define DERMIS_UNIT_TS_PIXEL_IRRADIANCE 17  // ts_gather.frag: the lighting pass's irradiance
 #define DERMIS_UNIT_TS_LEAN_MAP 18  // ts_irradiance.frag: the LEAN map the G-buffer's mean normal comes from
 #define DERMIS_LOCATION_TS_LEAN_NORMALS 0  // ts_irradiance.frag: 1 when the G-buffer takes the LEAN mean normal
+#define DERMIS_LOCATION_TS_BURIED_EMPTY 1  // ts_irradiance.frag: 1 leaves the texels inside the body empty
 #define DERMIS_UNIT_HIDDEN_SIDE 19  // include/ThinEdges.glsl: the thin-edge pass's target, read by every SSS technique and the ts gather
 #define DERMIS_AVERAGE_ALBEDO_SIZE 64   // rho_dt averaged over the hemisphere, per m (EnvironmentBlock)
 // The irradiance map's cosine powers E_1 .. E_4 stacked in one texture (env/IrradianceMap.h
