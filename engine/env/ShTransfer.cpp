@@ -212,9 +212,6 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
     if (Status valid = checkInputs(mesh, options.raysPerVertex, strataPerSide); !valid) return valid.error();
 
     const VertexTracer tracer = VertexTracer::build(mesh);
-    const raytrace::EmbreeBvh& bvh = tracer.bvh;
-    const float offset = tracer.offset;
-    const float tMax = tracer.tMax;
     const float weightPerRay = kPi / float(options.raysPerVertex);
 
     ShTransfer out;
@@ -232,13 +229,13 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
             const Vertex& vertex = mesh.vertices[vertexIndex];
             glm::vec3 normal;
             if (!unitNormal(vertex, normal)) return;
-            const glm::vec3 origin = vertex.position + offset * normal;
+            const glm::vec3 origin = vertex.position + tracer.offset * normal;
             uint32_t* escaped = out.visibility.data() + vertexIndex * words;
             ShScalar9 sum{};
             int insideHits = 0;
             forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
                 raytrace::BvhHit hit;
-                if (bvh.closestHit(raytrace::Ray{origin, direction}, 0.0f, tMax, &hit)) {
+                if (tracer.bvh.closestHit(raytrace::Ray{origin, direction}, 0.0f, tracer.tMax, &hit)) {
                     if (hit.backFace) ++insideHits;  // counter-clockwise triangles face out
                     return;
                 }

@@ -42,11 +42,11 @@ struct UvLayout {
     //   xy  the UV, on the chart beyond, of that border point: the border
     //       vertex at the same position (the other side of a seam);
     //   z   1 where there is one, 0 where the border is the mesh's own edge,
-    //       where the chart beyond ends within half of seamProbe from it (a
+    //       where the chart beyond ends within half of kSeamProbeM from it (a
     //       strip round a box's thin end: its light is not what lies beyond),
     //       or where no border is reached;
     //   w   how far the surface turns round across the seam: -N.N' for the
-    //       normals seamProbe (kSeamProbeM) into either chart from the border point (the
+    //       normals kSeamProbeM into either chart from the border point (the
     //       nodes nearest to that distance among those whose nearest border
     //       node it is, or the farthest of them), 1 at the rim of a thin
     //       part (an ear's two faces), -1 where the surface goes on flat.

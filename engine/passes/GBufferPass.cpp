@@ -101,4 +101,13 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
         });
 }
 
+GBuffer readSurfaceTargets(graph::PassBuilder& builder, const GBuffer& gbuffer) {
+    GBuffer read;
+    read.depthStencil = builder.read(gbuffer.depthStencil);
+    read.albedo = builder.read(gbuffer.albedo);
+    read.normalMaterial = builder.read(gbuffer.normalMaterial);
+    read.depthKey = builder.read(gbuffer.depthKey);
+    return read;
+}
+
 }  // namespace dermis

@@ -31,4 +31,9 @@ struct GBuffer {
 
 GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame);
 
+// Declares the reads of a full-screen pass that finds each pixel's surface
+// (its stencil test, albedo, normal and material, depth key) and returns
+// their handles; the other targets stay invalid.
+GBuffer readSurfaceTargets(graph::PassBuilder& builder, const GBuffer& gbuffer);
+
 }  // namespace dermis

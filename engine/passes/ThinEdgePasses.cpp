@@ -102,10 +102,7 @@ graph::TextureHandle addThinEdgePasses(graph::RenderGraph& graph, const FrameCon
         .addPass<HiddenSideData>(
             "thin edges",
             [&](graph::PassBuilder& builder, HiddenSideData& d) {
-                d.gbuffer.depthStencil = builder.read(gbuffer.depthStencil);
-                d.gbuffer.albedo = builder.read(gbuffer.albedo);
-                d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
-                d.gbuffer.depthKey = builder.read(gbuffer.depthKey);
+                d.gbuffer = readSurfaceTargets(builder, gbuffer);
                 d.back.depth = builder.read(back.depth);
                 d.back.normal = builder.read(back.normal);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));

@@ -23,10 +23,7 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const Frame
         .addPass<TransmittanceData>(
             "transmittance",
             [&](graph::PassBuilder& builder, TransmittanceData& d) {
-                d.gbuffer.depthStencil = builder.read(gbuffer.depthStencil);
-                d.gbuffer.albedo = builder.read(gbuffer.albedo);
-                d.gbuffer.normalMaterial = builder.read(gbuffer.normalMaterial);
-                d.gbuffer.depthKey = builder.read(gbuffer.depthKey);
+                d.gbuffer = readSurfaceTargets(builder, gbuffer);
                 d.gbuffer.scatter = builder.read(gbuffer.scatter);
                 for (graph::TextureHandle map : shadowMaps) d.shadowMaps.push_back(builder.read(map));
                 if (ownTarget) {

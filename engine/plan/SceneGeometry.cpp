@@ -2,7 +2,7 @@
 
 #include "env/ShTransfer.h"
 
-
+#include <algorithm>
 #include <cmath>
 
 namespace dermis {
@@ -13,6 +13,12 @@ namespace {
 // few, so 16 decide as the transfer's 256 do (measured on the procedural
 // head: tests/unit/test_uv_layout.cpp).
 constexpr int kBuriedVertexRays = 16;
+
+// Whether a layout analysed at one scale serves another: the scale only sets
+// the seams' 3 mm probe (mesh/UvLayout.h), and a scale read from a rotated
+// transform differs by rounding from frame to frame, which must not analyse
+// the layout again.
+bool sameScale(float a, float b) { return std::abs(a - b) <= 1e-3f * std::max(std::abs(a), std::abs(b)); }
 
 }  // namespace
 
@@ -35,22 +41,25 @@ SceneGeometry::SceneGeometry(const SceneModels& models) {
 
 const UvLayout& SceneGeometry::uvLayout(size_t character, float metresPerUnit) {
     Character& c = mCharacters[character];
-    if (!c.uvLayout || c.uvLayoutMetresPerUnit != metresPerUnit) {
-        c.uvLayout = nullptr;
+    if (!c.uvLayout || !sameScale(c.uvLayoutMetresPerUnit, metresPerUnit)) {
+        // The old layout stays alive until the new one is made, so the new
+        // one never takes its address (TsMeshes keys its meshes by it).
+        std::shared_ptr<const UvLayout> layout;
         // Characters that share a model and its scale share its layout.
         for (const Character& other : mCharacters) {
-            if (other.model != c.model || !other.uvLayout || other.uvLayoutMetresPerUnit != metresPerUnit) continue;
-            c.uvLayout = other.uvLayout;
+            if (other.model != c.model || !other.uvLayout || !sameScale(other.uvLayoutMetresPerUnit, metresPerUnit)) continue;
+            layout = other.uvLayout;
             break;
         }
-        if (!c.uvLayout) {
-            UvLayout layout = analyseUvLayout(c.model->mesh, metresPerUnit);
+        if (!layout) {
+            UvLayout analysed = analyseUvLayout(c.model->mesh, metresPerUnit);
             // A mesh the tracer refuses (an index out of range) has its
             // error named where it is drawn; here it buries nothing.
             auto buried = findBuriedVertices(c.model->mesh, kBuriedVertexRays);
-            if (buried.ok()) layout.buried = std::move(*buried);
-            c.uvLayout = std::make_shared<const UvLayout>(std::move(layout));
+            if (buried.ok()) analysed.buried = std::move(*buried);
+            layout = std::make_shared<const UvLayout>(std::move(analysed));
         }
+        c.uvLayout = std::move(layout);
         c.uvLayoutMetresPerUnit = metresPerUnit;
     }
     return *c.uvLayout;

@@ -5,6 +5,7 @@
 #include "procedural/ProceduralHead.h"
 #include "procedural/ProceduralShapes.h"
 #include "mesh/UvLayout.h"
+#include "plan/SceneGeometry.h"
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
@@ -321,4 +322,21 @@ TEST(UvLayout, TheProceduralEarsRimTurnsRoundAndTheSkullSeamDoesNot) {
     EXPECT_GT(skullSeam, 0);
     EXPECT_GE(earLeast, 0.4f);
     EXPECT_LT(skullMost, 0.1f);
+}
+
+// The planner asks for a character's layout every frame, at the scale it
+// reads from the character's transform; a rotated transform gives that scale
+// with rounding that changes from frame to frame, and each fresh analysis
+// costs a Dijkstra over the mesh and the buried-vertex rays. A scale off by
+// rounding keeps the analysed layout; one that moves the 3 mm seam probe
+// (twice the size) gets a new one. Broken on purpose (exact comparison): the
+// first expectation fails.
+TEST(UvLayout, SceneGeometryKeepsTheLayoutUnlessTheScaleReallyChanges) {
+    std::vector<Model> models(1);
+    models[0].mesh = proceduralMesh("sphere");
+    SceneGeometry geometry(models);
+    const UvLayout* first = &geometry.uvLayout(0, 1.0f);
+    EXPECT_EQ(&geometry.uvLayout(0, std::nextafter(1.0f, 2.0f)), first);
+    EXPECT_EQ(&geometry.uvLayout(0, 1.0f), first);
+    EXPECT_NE(&geometry.uvLayout(0, 2.0f), first);
 }
