@@ -347,7 +347,7 @@ double smoothstep(double edge0, double edge1, double x) {
 // wedge's top face over xMm (its centre line, z = 0), with the light straight
 // up through the wedge, integrated densely in polar coordinates around the
 // point (per Gaussian, 400 radii out to 9 sigma, 128 angles) instead of on
-// the shader's six rings of six taps. The wedge's faces: y = +-t(x) / 2,
+// the shader's six rings of 24 taps. The wedge's faces: y = +-t(x) / 2,
 // t(x) = scale (1 + 19 x / length) mm; the first surface over the point
 // (x + a, z + b) of the plane across the light is the bottom face there, at
 // delta = t(x) / 2 + t(x + a) / 2 along the ray. `centreMm` is the thickness
@@ -482,18 +482,19 @@ TEST_F(SssSlab, ThicknessMatchesTheWedgeAndEveryChannelFollowsT) {
     // (clamping the thickness to 0 instead gave T(0) = 1 along the scan's shoulders).
     EXPECT_GE(thin.selfPixels, 10);  // measured 20
     EXPECT_EQ(thin.selfWorst, 0.0);
-    // The pass's six rings of six taps against the dense integral. On the thick wedge 1%
+    // The pass's six rings of 24 taps against the dense integral. On the thick wedge 1%
     // (measured 0.44% in red; widths scaled by 1.05 read 22%, the widest Gaussian dropped 98%).
     // On the thin wedge the thickness changes 20-fold across the widest Gaussian's reach and
-    // crosses the own-surface ramp, which six taps per ring resolve coarsely: measured 12.7% (red),
-    // 7.3% (green), 0.7% (blue), so green and blue are held to 10% there (widths x1.05: 28% and 26%)
-    // and red to the thick wedge's bound. TwoPlanesTransmitTheClosedFormOfTheModel holds every
+    // crosses the own-surface ramp, where the angular quadrature decides: measured 5.2% (red),
+    // 4.5% (green), 0.8% (blue); 48 taps read 4.5%, 3.6%, 0.8% (what is left is the rings' radial
+    // spacing). Held to 6% there: 6, 12 and 16 taps per ring read 12.7%, 9.1% and 10.7% in red and
+    // 7.3%, 6.7% and 7.8% in green, and fail. TwoPlanesTransmitTheClosedFormOfTheModel holds every
     // channel at these thicknesses to 1%.
     EXPECT_GE(thick.checked.r, 20) << "red is measurable at too few pixels";
     EXPECT_LT(thick.worstTransmittance.r, 0.01);
-    for (int c = 1; c < 3; ++c) {
+    for (int c = 0; c < 3; ++c) {
         EXPECT_GE(thin.checked[c], 20) << "channel " << c << " is measurable at too few pixels";
-        EXPECT_LT(thin.worstTransmittance[c], 0.10) << "channel " << c;
+        EXPECT_LT(thin.worstTransmittance[c], 0.06) << "channel " << c;
     }
 }
 
