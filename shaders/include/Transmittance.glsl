@@ -32,9 +32,10 @@
 //     tests/render/test_sss.cpp (0.28-0.97 mm) 6 / 12 / 16 / 24 / 48 taps read
 //     12.7 / 9.1 / 10.7 / 5.2 / 4.5% (red) against the dense integral, and the
 //     default head's scatter error in texture space 1.06 / 1.00 / 0.99 / 0.98 /
-//     0.98% (docs/screen-space.md). Most pixels skip the rings
-//     (backSurfaceBeyondReach), so the pass costs 1.25x the 6 taps' (20 -> 25 ms
-//     on the default head at 640x360, llvmpipe).
+//     0.98% (docs/texture-space.md, "The transmittance's rings"). Most pixels
+//     skip the rings (backSurfaceBeyondReach), so the pass costs 1.2-1.3x the
+//     6 taps' (20 -> 25 ms on the default head, 20 -> 26 ms on the scan, at
+//     640x360 on llvmpipe).
 //   - The centre disc is the slab at x's own thickness s, facing as x's surface
 //     does: its share carries saturate(-N.L), as the back-normal
 //     transmittance of Jimenez et al. 2010 does for the whole plane. Without
