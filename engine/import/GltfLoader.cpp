@@ -784,6 +784,13 @@ Result<Model> loadGltfUnguarded(const std::string& path) {
         json.assign(reinterpret_cast<const char*>(bytes.data()) + glb->jsonOffset, glb->jsonLength);
     } else {
         json.assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        // A .glb that is not JSON either: name the missing magic rather than a JSON parse error.
+        const size_t first = json.find_first_not_of(" \t\r\n");
+        std::string extension = fs::path(path).extension().string();
+        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (extension == ".glb" && (first == std::string::npos || json[first] != '{'))
+            return makeError(path, "not a binary glTF: the file does not start with the magic 'glTF' (" +
+                                       std::to_string(bytes.size()) + " bytes)");
     }
     if (jsonNestingDepth(json.data(), json.size()) > kMaxJsonNesting)
         return makeError(path, "JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");

@@ -488,6 +488,15 @@ TEST_F(GltfTest, MissingFilesAndMalformedJson) {
 
     std::ofstream(path("empty.gltf")) << "";
     expectError(path("empty.gltf"));
+
+    // A .glb of other bytes: the missing magic is named, not a JSON parse error
+    // (without the check the message read "malformed JSON: ... invalid literal").
+    std::ofstream(path("noise.glb")) << "PK\x03\x04 not a glTF at all";
+    expectError(path("noise.glb"), "magic 'glTF'");
+    // A .glb holding glTF JSON is still read as JSON (some tools write that).
+    quadBuilder(kUnsignedShort).writeGltf(path("json.glb"));
+    auto json = loadGltf(path("json.glb").string());
+    EXPECT_TRUE(json.ok()) << (json.ok() ? "" : json.error().message());
 }
 
 TEST_F(GltfTest, TruncatedGlb) {
