@@ -26,19 +26,19 @@ void skipUnlessNeeded(graph::PassBuilder& builder, const FrameContext& frame) {
     builder.skipIf(!frame.plan.sss.anyVisible(), "no SSS pixel on screen");
 }
 
-// Whether any of the character's pixels reads the fill: a slot whose
-// technique blurs (the pre-integrated one scatters in the lighting pass and
-// has no tap past an outline), or any SSS slot in texture space, whose gather
-// reads it. Far heads of a crowd that the budget gives the pre-integrated
-// technique are left out of the back-depth draw: in crowd8_mixed.json at
-// 640x360 it took 40 ms with every head in it.
+// Whether any of the character's pixels reads the fill: a slot that some
+// pass blurs on screen (blursOnScreen: not the pre-integrated technique, which
+// scatters in the lighting pass, nor a chain whose every Gaussian is under
+// min_width_px), or any SSS slot in texture space, whose gather reads it. Far
+// heads of a crowd are left out of the back-depth draw: in crowd8_mixed.json
+// at 640x360 it took 40 ms with every head in it.
 bool readsThinEdges(const FramePlan& plan, size_t character) {
     if (character >= plan.sss.slotsOfCharacter.size()) return false;
     for (const int slot : plan.sss.slotsOfCharacter[character]) {
         if (slot <= 0) continue;
         if (plan.textureSpace) return true;
         for (const SssSlotPlan& slotPlan : plan.sss.slots) {
-            if (slotPlan.slot == slot && !scattersInLightingPass(slotPlan)) return true;
+            if (slotPlan.slot == slot && blursOnScreen(slotPlan)) return true;
         }
     }
     return false;

@@ -136,6 +136,12 @@ bool scattersInLightingPass(const SssSlotPlan& slot) {
     return slot.visible && sssTechniqueInfo(slot.choice.technique).scattersInLighting();
 }
 
+bool blursOnScreen(const SssSlotPlan& slot) {
+    if (!slot.visible || scattersInLightingPass(slot)) return false;
+    if (slot.choice.technique != SssTechnique::Gaussians) return true;
+    return std::any_of(slot.steps.begin(), slot.steps.end(), [](const SssGaussianStep& step) { return !step.skipped; });
+}
+
 bool SssPlan::anyScattersInLighting() const { return std::any_of(slots.begin(), slots.end(), scattersInLightingPass); }
 
 bool SssPlan::onlyLightingScatters() const {

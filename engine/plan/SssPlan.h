@@ -69,6 +69,12 @@ struct SssSlotPlan {
 // with the program that has that code, and only them.
 bool scattersInLightingPass(const SssSlotPlan& slot);
 
+// The slot's pixels are blurred by some pass this frame: not when it
+// scatters in the lighting pass, nor when its technique is "gaussians" and
+// every step is narrower than min_width_px (the chain is then the identity).
+// Only a blurring pass reads the thin-edge fill (include/SssChain.glsl).
+bool blursOnScreen(const SssSlotPlan& slot);
+
 // The choice a character's SSS submeshes render with, for reports.
 struct CharacterSssChoice {
     bool hasSss = false;      // some submesh has a diffusion profile

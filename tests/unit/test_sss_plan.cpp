@@ -1,8 +1,11 @@
 // What the SSS chain decides to run, on the CPU alone.
 #include "plan/SssPlan.h"
+#include "sss/DiffusionProfile.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 using namespace dermis;
 
@@ -66,6 +69,41 @@ TEST(SssPlan, FarHeadRunsFewerBlursThanNear) {
     auto far = planSss(headScene(), {kHeadBounds}, viewFrom(6.0f));
     ASSERT_TRUE(near.ok() && far.ok());
     EXPECT_LT(executedSteps(far->slots[0]), executedSteps(near->slots[0]));
+}
+
+// Whether a slot is blurred on screen decides which characters the thin-edge
+// back-depth pass draws (passes/ThinEdgePasses.cpp). The widest Gaussian's
+// width in pixels is worked out here from the view, independently of the
+// plan: 360 px over the 35-degree field, at the head's nearest depth
+// (distance - 0.12 m). At 4 m it is 0.21 px, under the 0.5 px minimum, so the
+// chain is the identity and nothing reads the fill; at 1.2 m 0.76 px.
+TEST(SssPlan, ASlotBlursOnScreenUnlessNoGaussianReachesMinWidthOrItScattersInTheLightingPass) {
+    const double widestSigmaMm = std::sqrt(double(skinProfile().gaussians().back().varianceMm2));
+    const double pixelsPerMetreAtUnitDepth = 360.0 / (2.0 * std::tan(glm::radians(35.0) / 2.0));
+    const auto widestPx = [&](double distanceM) { return widestSigmaMm * pixelsPerMetreAtUnitDepth / (distanceM - 0.12) * 1e-3; };
+    ASSERT_LT(widestPx(4.0), 0.5);
+    ASSERT_GT(widestPx(1.2), 0.5);
+    const float minWidthPx = Scene().settings.sss.minWidthPx;
+    ASSERT_EQ(minWidthPx, 0.5f);
+
+    auto far = planSss(headScene(), {kHeadBounds}, viewFrom(4.0f));
+    auto middle = planSss(headScene(), {kHeadBounds}, viewFrom(1.2f));
+    ASSERT_TRUE(far.ok() && middle.ok());
+    EXPECT_FALSE(blursOnScreen(far->slots[0]));
+    EXPECT_TRUE(blursOnScreen(middle->slots[0]));
+
+    for (SssTechnique technique : {SssTechnique::Disk, SssTechnique::Separable, SssTechnique::Preintegrated}) {
+        Scene scene = headScene();
+        scene.settings.sss.technique = technique;
+        auto plan = planSss(scene, {kHeadBounds}, viewFrom(0.45f));
+        ASSERT_TRUE(plan.ok());
+        EXPECT_EQ(blursOnScreen(plan->slots[0]), technique != SssTechnique::Preintegrated) << int(technique);
+    }
+    // Behind the camera: nothing blurs.
+    const Bounds behindCamera{glm::vec3(-0.1f, -0.1f, 1.0f), glm::vec3(0.1f, 0.1f, 1.2f)};
+    auto behind = planSss(headScene(), {behindCamera}, viewFrom(0.45f));
+    ASSERT_TRUE(behind.ok());
+    EXPECT_FALSE(blursOnScreen(behind->slots[0]));
 }
 
 TEST(SssPlan, SkippedGaussiansKeepTheirEnergyInTheIdentityTerm) {
