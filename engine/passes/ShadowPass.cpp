@@ -53,8 +53,8 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                 builder.skipIf(shadow.current, "light and casters unchanged since the cached map");
                 builder.skipIf(shadow.casters.kept.empty(), "no character on screen to receive its shadow");
             },
-            [frame, desc, lightIndex = shadow.light, casters = shadow.casters.kept](const graph::PassResources& resources,
-                                                                                   const ShadowData& d) {
+            [frame, desc, lightIndex = shadow.light, casters = shadow.casters.kept,
+             levels = shadow.castersDrawLevels](const graph::PassResources& resources, const ShadowData& d) {
                 // A point light's map is a 3x2 atlas of cube faces (plan/LightSetup.h): each caster is drawn once per face.
                 const bool cube = frame.plan.lights.block.lights[lightIndex].cubeShadow > 0.5f;
                 const int faces = cube ? 6 : 1;
@@ -83,7 +83,7 @@ std::vector<graph::TextureHandle> addShadowPasses(graph::RenderGraph& graph, con
                         block.cubeFace = float(face);
                         frame.gl->uploadObject(block);
                         glBindVertexArray(character.mesh.vertexArray.get());
-                        character.wholeMeshAt(frame.plan.characters[index].lod).draw();
+                        character.wholeMeshAt(levels ? frame.plan.characters[index].lod : 0).draw();
                     }
                 }
                 glDisable(GL_DEPTH_TEST);

@@ -152,9 +152,11 @@ void planShadows(const Scene& scene, const ShadowCache& cache, std::vector<Shado
         std::vector<glm::mat4> transforms;
         for (int c : s.casters.kept) transforms.push_back(plan.characters[static_cast<size_t>(c)].worldFromObject);
         s.key = ShadowCache::makeKey(plan.lights.block.lights[s.light], s.casters.kept, transforms);
+        for (int c : s.casters.kept) s.castersDrawLevels |= plan.characters[static_cast<size_t>(c)].animated;
         for (int c : s.casters.kept) {
             appendPoseKey(plan.characters[static_cast<size_t>(c)], s.key);
-            s.key.push_back(float(plan.characters[static_cast<size_t>(c)].lod));  // the triangles it casts with
+            // the triangles it casts with
+            s.key.push_back(s.castersDrawLevels ? float(plan.characters[static_cast<size_t>(c)].lod) : 0.0f);
         }
         s.current = cache.isCurrent(static_cast<int>(slot), s.desc, s.key);
         plan.shadows.push_back(std::move(s));

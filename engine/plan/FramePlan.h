@@ -103,6 +103,12 @@ struct ShadowSlotPlan {
     ShadowCasters casters;     // the characters drawn into it, and why the others are not
     std::vector<float> key;    // what it is rendered from (ShadowCache::makeKey)
     bool current = false;      // the cached map was rendered from the same: its pass is skipped
+    // Whether the casters draw their levels of detail (CharacterPlacement::lod)
+    // or their full meshes. Full meshes unless some kept caster is animated:
+    // a map of static casters is cached, so a level would save no time per
+    // frame, while it would shade the receivers with the level's shadow and
+    // draw the map again each time a caster's level changed.
+    bool castersDrawLevels = false;
 };
 
 struct FramePlan {
