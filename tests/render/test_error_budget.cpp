@@ -23,6 +23,7 @@ namespace {
 
 constexpr int kWidth = 320;
 constexpr int kHeight = 180;
+constexpr long kMinHeadPixels = 50;
 using ErrorBudget = RenderFixture;
 
 double relativeRmse(const Image& finest, const Image& image, const std::vector<uint8_t>& mask) {
@@ -38,6 +39,9 @@ double relativeRmse(const Image& finest, const Image& image, const std::vector<u
 // given the cheapest candidate, 2 Gaussians and 5 taps, regardless of the
 // budget) the loss was 1.70% and the bound failed; that break is kept below as
 // a check that the bound can fail.
+// Each head is bound too (2026-12-07, the twelve-row table): near 0.79%,
+// far 1 0.17%, far 2 0.64%, far 4 0.32% (55 pixels), far 5 0.82%; the break
+// puts the near head at 1.26%.
 TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     load("crowd8_mixed.json");  // as shipped: 1% budget, content/quality/default_1pct.json
     const QualityTable table = mScene->settings.quality.loaded;
@@ -60,6 +64,29 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     const double loss = relativeRmse(finest, budgeted, mask);
     EXPECT_LE(loss, budget);
     std::printf("crowd8_mixed at %dx%d, 1%% budget: loss %.4f%%\n", kWidth, kHeight, 100.0 * loss);
+    // Each head over its own pixels (the goal of the budget is per head). A
+    // head of fewer than kMinHeadPixels is counted and printed, not bound: over
+    // a few pixels, all on its outline, the loss is one pixel's (docs/results/quality.md, far 7).
+    const auto worstHeadLoss = [&](const Image& image) {
+        double worst = 0.0;
+        int small = 0;
+        for (size_t head = 0; head < mScene->characters.size(); ++head) {
+            std::vector<uint8_t> own(mask.size(), 0);
+            for (size_t i = 0; i < own.size(); ++i) own[i] = std::lround(ids.texels[i].r) == long(head) + 1 ? 1 : 0;
+            const auto pixels = std::count(own.begin(), own.end(), uint8_t{1});
+            if (pixels == 0) continue;
+            const double headLoss = relativeRmse(finest, image, own);
+            std::printf("  %s: %ld pixels, loss %.4f%%\n", mScene->characters[head].name.c_str(), long(pixels), 100.0 * headLoss);
+            if (pixels < kMinHeadPixels) {
+                ++small;
+            } else if (!(headLoss <= worst)) {
+                worst = headLoss;
+            }
+        }
+        std::printf("  %d head(s) under %ld pixels not bound\n", small, kMinHeadPixels);
+        return worst;
+    };
+    EXPECT_LE(worstHeadLoss(budgeted), budget);
 
     // Each head rendered its own row's choice by the rule; the near and the far ones differ.
     std::set<size_t> rows;
@@ -94,7 +121,10 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     // The break: the cheapest candidate for every head, whatever the budget.
     mScene->settings = shipped;
     for (QualityRow& row : mScene->settings.quality.loaded.rows) row.choice = bench::tuneCandidates().front();
-    const double brokenLoss = relativeRmse(finest, render(Aov::Diffuse, kWidth, kHeight), mask);
+    const Image broken = render(Aov::Diffuse, kWidth, kHeight);
+    const double brokenLoss = relativeRmse(finest, broken, mask);
     std::printf("the cheapest candidate for every head: loss %.4f%%\n", 100.0 * brokenLoss);
     EXPECT_GT(brokenLoss, budget);
+    EXPECT_GT(worstHeadLoss(broken), budget);
+
 }
