@@ -38,7 +38,14 @@ layout(binding = 3) uniform sampler2D uLean2;  // (M.xy, base variance)
 in vec3 vViewNormal;
 in vec4 vViewTangent;
 in vec2 vUv;
+#ifndef GBUFFER_VERTEX_COLOUR
+#define GBUFFER_VERTEX_COLOUR 1  // gbuffer.vert says what it is
+#endif
+#if GBUFFER_VERTEX_COLOUR
 in vec3 vColour;
+#else
+const vec3 vColour = vec3(1.0);
+#endif
 
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalMaterial;

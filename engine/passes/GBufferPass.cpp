@@ -63,8 +63,8 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
             glCullFace(GL_BACK);
             glFrontFace(GL_CCW);
             const Programs& programs = *frame.gl->programs;
-            glUseProgram(g.hasLean() ? (transfer ? programs.gbufferLeanTransfer.get() : programs.gbufferLean.get())
-                                     : (transfer ? programs.gbufferTransfer.get() : programs.gbuffer.get()));
+            const GBufferPrograms& gbufferPrograms = g.hasLean() ? (transfer ? programs.gbufferLeanTransfer : programs.gbufferLean)
+                                                                 : (transfer ? programs.gbufferTransfer : programs.gbuffer);
             const auto& characters = frame.gl->gpuScene->characters();
             for (size_t index = 0; index < characters.size(); ++index) {
                 if (!frame.plan.characters[index].visible) continue;  // off screen (CharacterPlacement::culledBecause)
@@ -76,6 +76,7 @@ GBuffer addGBufferPass(graph::RenderGraph& graph, const FrameContext& frame) {
                 } else {
                     glDisable(GL_CULL_FACE);
                 }
+                glUseProgram(gbufferPrograms.get(character.mesh.vertexColours));
                 glBindVertexArray(character.mesh.vertexArray.get());
                 const int lod = frame.plan.characters[index].lod;
                 const std::vector<GpuSubmesh>& submeshes = character.submeshesAt(lod);

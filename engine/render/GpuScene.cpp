@@ -21,6 +21,7 @@ GpuMesh uploadMesh(const MeshData& mesh, const std::vector<uint32_t>& indices, c
     GpuMesh gpu;
     const std::vector<glm::vec4> white(mesh.vertices.size(), glm::vec4(1.0f));
     const std::vector<glm::vec4>& perVertex = colours.size() == mesh.vertices.size() ? colours : white;
+    gpu.vertexColours = std::any_of(perVertex.begin(), perVertex.end(), [](const glm::vec4& c) { return glm::vec3(c) != glm::vec3(1.0f); });
     gpu.colourBuffer = gl::createBuffer(owner + ": vertex colours");
     glNamedBufferStorage(gpu.colourBuffer.get(), static_cast<GLsizeiptr>(perVertex.size() * sizeof(glm::vec4)),
                          perVertex.data(), 0);

@@ -25,6 +25,7 @@ struct GpuMesh {
     gl::VertexArray vertexArray;
     gl::Buffer vertexBuffer;
     gl::Buffer colourBuffer;  // vec4 per vertex, white where the file has no COLOR_0
+    bool vertexColours = false;  // some vertex's colour is not white (then the G-buffer reads them)
     gl::Buffer indexBuffer;   // the full mesh's triangles, then each level of detail's
     GLsizei indexCount = 0;   // the full mesh's
     Bounds objectBounds;

@@ -35,6 +35,12 @@ Result<Programs> Programs::build(bool specialize) {
         add(into.unlit, vertex, fragment, extra);
     };
 
+    auto addGBuffer = [&add, &source](GBufferPrograms& into, std::vector<gl::ShaderDefine> extra = {}) {
+        add(into.withColours, "gbuffer.vert", "gbuffer.frag", extra);
+        extra.push_back({"GBUFFER_VERTEX_COLOUR", "0"});
+        into.white = gl::LazyProgram(source("gbuffer.vert", "gbuffer.frag", extra));
+    };
+
     auto addShadowed = [&addBothEnvironments, &source, specialize](
                            ShadowedPrograms& into, const char* vertex, const char* fragment,
                            std::vector<gl::ShaderDefine> extra = {}) {
@@ -59,7 +65,7 @@ Result<Programs> Programs::build(bool specialize) {
     };
 
     add(programs.shadow, "shadow.vert", "shadow.frag");
-    add(programs.gbuffer, "gbuffer.vert", "gbuffer.frag");
+    addGBuffer(programs.gbuffer);
     add(programs.composite, "fullscreen.vert", "composite.frag");
     add(programs.tonemap, "fullscreen.vert", "tonemap.frag");
     add(programs.aov, "fullscreen.vert", "aov.frag");
@@ -85,15 +91,14 @@ Result<Programs> Programs::build(bool specialize) {
     // the skybox (a full-screen triangle on the far plane, so the depth test
     // keeps it to the background).
     const std::string leanTargets = std::to_string(kLeanSssTargets);
-    add(programs.gbufferLean, "gbuffer.vert", "gbuffer.frag", {{"GBUFFER_LEAN", "1"}});
+    addGBuffer(programs.gbufferLean, {{"GBUFFER_LEAN", "1"}});
     add(programs.sssInitLean, "fullscreen.vert", "sss_init.frag", {{"SSS_EXTRA_TARGETS", leanTargets}});
     add(programs.sssBlurLean, "fullscreen.vert", "sss_blur.frag", {{"SSS_EXTRA_TARGETS", leanTargets}});
     add(programs.sssDiskLean, "fullscreen.vert", "sss_disk.frag", {{"SSS_EXTRA_TARGETS", leanTargets}});
     add(programs.sssBlurLeanLast, "fullscreen.vert", "sss_blur.frag",
         {{"SSS_EXTRA_TARGETS", leanTargets}, {"SSS_PACKED_OUT", "0"}});
-    add(programs.gbufferTransfer, "gbuffer.vert", "gbuffer.frag", {{"GBUFFER_TRANSFER", "4"}});
-    add(programs.gbufferLeanTransfer, "gbuffer.vert", "gbuffer.frag",
-        {{"GBUFFER_LEAN", "1"}, {"GBUFFER_TRANSFER", "6"}});  // after the scatter target 3 and the LEAN targets 4 and 5
+    addGBuffer(programs.gbufferTransfer, {{"GBUFFER_TRANSFER", "4"}});
+    addGBuffer(programs.gbufferLeanTransfer, {{"GBUFFER_LEAN", "1"}, {"GBUFFER_TRANSFER", "6"}});  // after the scatter target 3 and the LEAN targets 4 and 5
     add(programs.skybox, "fullscreen.vert", "skybox.frag", {{"FULLSCREEN_AT_FAR_PLANE", "1"}});
     add(programs.sssSeparableH, "fullscreen.vert", "sss_separable.frag",
         {{"SSS_EXTRA_TARGETS", "0"}, {"SEPARABLE_SSS_LAST", "0"}});

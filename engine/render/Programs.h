@@ -46,9 +46,25 @@ struct LightingPrograms {
     }
 };
 
+// A G-buffer program built with the vertex colours (COLOR_0) up front and
+// without them (GBUFFER_VERTEX_COLOUR 0, for meshes whose colours are all
+// white) on first use. Without them the vertex stage hands the rasterizer one
+// varying fewer, which llvmpipe's triangle setup pays per triangle
+// (docs/speed.md); the white variant falls back to the other if it fails to build.
+struct GBufferPrograms {
+    gl::Program withColours;
+    gl::LazyProgram white;
+    GLuint get(bool vertexColours) const {
+        if (!vertexColours) {
+            if (GLuint program = white.get()) return program;
+        }
+        return withColours.get();
+    }
+};
+
 struct Programs {
     gl::Program shadow;
-    gl::Program gbuffer;
+    GBufferPrograms gbuffer;
     LightingPrograms lighting;
     gl::Program composite;
     gl::Program tonemap;
@@ -77,7 +93,7 @@ struct Programs {
     gl::Program shadowMax;     // passes/ShadowPass.cpp: a shadow map's max-depth mips (compute)
     gl::Program transferRotate;  // passes/SkinningPass.cpp: the environment transfer turned with the skinning (compute)
 
-    gl::Program gbufferLean;    // LEAN variants: G-buffer with the LEAN moments
+    GBufferPrograms gbufferLean;  // LEAN variants: G-buffer with the LEAN moments
     LightingPrograms lightingLean;  // lighting that passes the LEAN cross moment on in the irradiance's alpha
     gl::Program sssInitLean;    // SSS chain with the moments as extra targets
     gl::Program sssBlurLean;
@@ -87,8 +103,8 @@ struct Programs {
     EnvironmentPrograms compositeLean;  // composite with the LEAN specular
     // Environment light (docs/environment.md): the G-buffers with the
     // per-vertex transfer's target (occlusion "transfer"), and the skybox.
-    gl::Program gbufferTransfer;
-    gl::Program gbufferLeanTransfer;
+    GBufferPrograms gbufferTransfer;
+    GBufferPrograms gbufferLeanTransfer;
     gl::Program skybox;
 
     // specialize false draws every frame with the programs that hold every

@@ -65,9 +65,11 @@ protected:
         if (HasFatalFailure()) return;
         load("ssao_contact.json");
         if (HasFatalFailure()) return;
+        auto gbuffer = gl::buildProgram({"gbuffer.vert", "gbuffer.frag", {}, {}});
+        ASSERT_TRUE(gbuffer.ok()) << gbuffer.error().message();
+        mPrograms.gbuffer.withColours = std::move(*gbuffer);
         for (auto [member, vertex, fragment] :
-             {std::tuple{&Programs::gbuffer, "gbuffer.vert", "gbuffer.frag"},
-              std::tuple{&Programs::ssao, "fullscreen.vert", "ssao.frag"},
+             {std::tuple{&Programs::ssao, "fullscreen.vert", "ssao.frag"},
               std::tuple{&Programs::ssaoBlur, "fullscreen.vert", "ssao_blur.frag"}}) {
             auto program = gl::buildProgram({vertex, fragment, {}, {}});
             ASSERT_TRUE(program.ok()) << program.error().message();
