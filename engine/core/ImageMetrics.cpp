@@ -146,6 +146,12 @@ Result<ImageDifference> compareImages(const Image& reference, const Image& test,
     return out;
 }
 
+std::vector<uint8_t> objectMask(const Image& objectAov, long id) {
+    std::vector<uint8_t> mask(objectAov.texels.size(), 0);
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = std::lround(objectAov.texels[i].r) == id ? 1 : 0;
+    return mask;
+}
+
 Image differenceHeatmap(const Image& reference, const Image& test, const std::vector<uint8_t>& mask, double scaleMax) {
     const int barWidth = 16;
     const int labelWidth = 56;

@@ -28,6 +28,10 @@ constexpr double kMaxPsnrDb = 200.0;
 // maxAbsDifference and rmse are +inf and psnrDb 0).
 Result<ImageDifference> compareImages(const Image& reference, const Image& test, const std::vector<uint8_t>& mask = {});
 
+// The mask of the pixels an object AOV (character index + 1, 0 for the
+// background; read rounded) gives to `id`, for compareImages.
+std::vector<uint8_t> objectMask(const Image& objectAov, long id);
+
 // The per-pixel difference max_c |reference_c - test_c| in false colour
 // (black-blue-purple-orange-yellow), pixels outside the mask in dark grey, and
 // a scale bar with labels on the right (0 at the bottom, scaleMax at the top).

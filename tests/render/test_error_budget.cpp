@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -71,8 +72,7 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
         double worst = 0.0;
         int small = 0;
         for (size_t head = 0; head < mScene->characters.size(); ++head) {
-            std::vector<uint8_t> own(mask.size(), 0);
-            for (size_t i = 0; i < own.size(); ++i) own[i] = std::lround(ids.texels[i].r) == long(head) + 1 ? 1 : 0;
+            const std::vector<uint8_t> own = objectMask(ids, long(head) + 1);
             const auto pixels = std::count(own.begin(), own.end(), uint8_t{1});
             if (pixels == 0) continue;
             const double headLoss = relativeRmse(finest, image, own);
@@ -126,5 +126,4 @@ TEST_F(ErrorBudget, CrowdNotUsedForTuningStaysWithinTheBudgetOfTheFinest) {
     std::printf("the cheapest candidate for every head: loss %.4f%%\n", 100.0 * brokenLoss);
     EXPECT_GT(brokenLoss, budget);
     EXPECT_GT(worstHeadLoss(broken), budget);
-
 }

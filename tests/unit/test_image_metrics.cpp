@@ -46,6 +46,18 @@ TEST(ImageMetrics, MaskSelectsThePixels) {
     EXPECT_EQ(d->maxAbsDifference, 0.0);
 }
 
+// The object AOV holds k for character k - 1 as a half float, read back a
+// rounding off (aov.frag): ids are rounded, and the background is 0.
+TEST(ImageMetrics, ObjectMaskSelectsOneIdRounded) {
+    Image ids = solidImage(4, 1, 0.0f);
+    ids.texels[1].r = 0.9995f;
+    ids.texels[2].r = 2.0004f;
+    ids.texels[3].r = 1.0f;
+    EXPECT_EQ(objectMask(ids, 0), (std::vector<uint8_t>{1, 0, 0, 0}));
+    EXPECT_EQ(objectMask(ids, 1), (std::vector<uint8_t>{0, 1, 0, 1}));
+    EXPECT_EQ(objectMask(ids, 2), (std::vector<uint8_t>{0, 0, 1, 0}));
+}
+
 TEST(ImageMetrics, BadInputsAreErrors) {
     EXPECT_FALSE(compareImages(solidImage(4, 4, 1.0f), solidImage(4, 3, 1.0f)).ok());
     EXPECT_FALSE(compareImages(solidImage(4, 4, 1.0f), solidImage(4, 4, 1.0f), std::vector<uint8_t>(3, 1)).ok());

@@ -12,6 +12,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -102,16 +103,11 @@ void errorBudget(benchmark::State& state) {
         // Each head's loss over its own pixels in the finest frame: the goal is every head within the budget.
         double worst = 0.0;
         for (size_t head = 0; head < c.scene->characters.size(); ++head) {
-            std::vector<uint8_t> own(mask.size(), 0);
-            size_t pixels = 0;
-            for (size_t i = 0; i < own.size(); ++i) {
-                own[i] = std::lround(ids.texels[i].r) == long(head) + 1 ? 1 : 0;
-                pixels += own[i];
-            }
+            const std::vector<uint8_t> own = objectMask(ids, long(head) + 1);
+            const auto pixels = std::count(own.begin(), own.end(), uint8_t{1});
             if (pixels == 0) continue;  // hidden behind the others, or off screen
             auto headLoss = compareImages(reference, diffuse, own);
             const double value = headLoss.ok() ? headLoss->relativeRmse : NAN;
-            const std::string name = c.scene->characters[head].name;
             recorded()[c.key + "/head " + std::to_string(head) + "/loss"] = value;
             recorded()[c.key + "/head " + std::to_string(head) + "/pixels"] = double(pixels);
             if (!(value <= worst)) {  // NaN counts as the worst
