@@ -6,15 +6,19 @@ rendered with and without levels of detail (settings.lod.max_error_px).
 
     python3 docs/crowd_count_figure.py [--size 1280x720] [--frames 3]
         [--counts 1,4,16,64,255] [--lod-px 1] [--out docs/crowd_count.png]
+        [--scene-dir DIR]
 
 Run from the repository root after building. Each point is `dermis render
 SCENE --size SIZE --frames N --timings T.json` (printed as it goes): the
 frame's GPU ms (the sum of the passes' medians; llvmpipe: CPU time) and the
-wall ms per frame. The scenes are written to a temporary folder; the table of
-figures is printed as Markdown.
+wall ms per frame. The scenes are written to a temporary folder, or kept in
+--scene-dir as DIR/crowdCOUNT.json; the table of figures is printed as
+Markdown.
 """
 import argparse
+import contextlib
 import json
+import os
 import shlex
 import subprocess
 import tempfile
@@ -63,10 +67,14 @@ def main():
     parser.add_argument("--counts", default="1,4,16,64,255")
     parser.add_argument("--lod-px", type=float, default=1.0)
     parser.add_argument("--out", default="docs/crowd_count.png")
+    parser.add_argument("--scene-dir", help="keep the scenes (and the last frame and timings) in this folder")
     args = parser.parse_args()
     counts = [int(c) for c in args.counts.split(",")]
     rows = []
-    with tempfile.TemporaryDirectory() as directory:
+    if args.scene_dir:
+        os.makedirs(args.scene_dir, exist_ok=True)
+    folder = contextlib.nullcontext(args.scene_dir) if args.scene_dir else tempfile.TemporaryDirectory()
+    with folder as directory:
         for count in counts:
             path = f"{directory}/crowd{count}.json"
             with open(path, "w", encoding="utf-8") as f:
