@@ -6,8 +6,11 @@
 #include "core/Log.h"
 #include "frame/FrameDeclaration.h"
 #include "frame/IrradianceCapture.h"
+#include "gl/GlDebug.h"
 
 #include <algorithm>
+#include <new>
+#include <string>
 
 namespace dermis {
 
@@ -186,10 +189,20 @@ Result<Image> Renderer::readOutput() {
     image.width = static_cast<int>(mResources->outputDesc().width);
     image.height = static_cast<int>(mResources->outputDesc().height);
     image.colourSpace = mOutputAov == Aov::Final ? ColourSpace::Srgb : ColourSpace::Linear;
-    std::vector<glm::vec4> bottomFirst(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
+    const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+    // A target the driver could not allocate leaves the frame undefined (often
+    // black) with no other sign; without --gl-debug only the error flag tells.
+    if (gl::drainGlErrorsNoting().outOfMemory)
+        return makeError("renderer", "the GL driver ran out of memory for the " + size + " frame's targets; try a smaller --size");
+    std::vector<glm::vec4> bottomFirst;
+    try {
+        bottomFirst.resize(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
+        image.texels.resize(bottomFirst.size());
+    } catch (const std::bad_alloc&) {
+        return makeError("renderer", "not enough memory to read back the " + size + " frame; try a smaller --size");
+    }
     glGetTextureImage(output, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomFirst.size() * sizeof(glm::vec4)),
                       bottomFirst.data());
-    image.texels.resize(bottomFirst.size());
     const auto rowLength = static_cast<size_t>(image.width);
     for (size_t y = 0; y < static_cast<size_t>(image.height); ++y) {
         std::copy_n(bottomFirst.begin() + static_cast<std::ptrdiff_t>((static_cast<size_t>(image.height) - 1 - y) * rowLength),

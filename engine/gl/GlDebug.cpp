@@ -45,15 +45,18 @@ std::string lastDebugError() {
     return gLastError;
 }
 
-uint64_t drainGlErrors() {
-    uint64_t seen = 0;
-    for (GLenum error = glGetError(); error != GL_NO_ERROR && seen < 64; error = glGetError()) {
-        ++seen;
+DrainedGlErrors drainGlErrorsNoting() {
+    DrainedGlErrors drained;
+    for (GLenum error = glGetError(); error != GL_NO_ERROR && drained.count < 64; error = glGetError()) {
+        ++drained.count;
+        drained.outOfMemory = drained.outOfMemory || error == GL_OUT_OF_MEMORY;
         std::lock_guard<std::mutex> lock(gMutex);
         gLastError = "glGetError " + std::to_string(error);
     }
-    gErrors += seen;
-    return seen;
+    gErrors += drained.count;
+    return drained;
 }
+
+uint64_t drainGlErrors() { return drainGlErrorsNoting().count; }
 
 }  // namespace dermis::gl

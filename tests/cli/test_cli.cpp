@@ -218,3 +218,17 @@ TEST(Cli, UnsupportedOutputExtensionFails) {
     expectCleanFailure(runProcess(kDermis + " render " + defaultScene() + " --out " + dir.file("x.bmp")),
                        dir.file("x.bmp"), {"x.bmp"});
 }
+
+// A frame too large for the memory there is: one error line and exit 1, not an
+// abort from an uncaught std::bad_alloc (as before) or a silently black image
+// (a GL_OUT_OF_MEMORY that only --gl-debug used to report). The address-space
+// limit makes it fail in seconds: 8192x8192 needs about 12 GB here. Which
+// allocation fails first depends on the driver, so either message counts.
+TEST(Cli, FrameTooLargeForMemoryIsAnErrorNotACrash) {
+    TempDir dir;
+    const std::string out = dir.file("huge.png");
+    const ProcessResult r = runProcess("ulimit -v 3000000; " + kDermis + " render " + defaultScene() +
+                                       " --size 8192x8192 --frames 1 --out " + out);
+    expectCleanFailure(r, out, {"memory", "smaller --size"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+}

@@ -8,6 +8,8 @@
 #include "core/Suggest.h"
 
 #include <cstdio>
+#include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -78,7 +80,18 @@ int main(int argc, char** argv) {
         }
     }
     for (const auto& command : dermis::cli::commands()) {
-        if (name == command.name) return command.run(arguments);
+        if (name != command.name) continue;
+        // The last line of defence: every expected failure is an error value
+        // with its own message; these say what broke instead of aborting.
+        try {
+            return command.run(arguments);
+        } catch (const std::bad_alloc&) {
+            std::fprintf(stderr, "error: dermis %s: out of memory (try a smaller --size, or fewer frames or samples)\n",
+                         command.name);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: dermis %s: internal error: %s (please report it)\n", command.name, e.what());
+        }
+        return 1;
     }
     std::vector<std::string> names;
     for (const auto& command : dermis::cli::commands()) names.push_back(command.name);

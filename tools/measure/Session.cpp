@@ -24,7 +24,10 @@ Result<Session> Session::open(const std::string& scenePath, const std::vector<st
 }
 
 Status Session::checkGlErrors() const {
-    gl::drainGlErrors();
+    // Out of memory is reported with or without --gl-debug: a target the driver
+    // could not allocate leaves the frame undefined, often black.
+    if (gl::drainGlErrorsNoting().outOfMemory)
+        return makeError("OpenGL", "the driver ran out of memory (GL_OUT_OF_MEMORY) for this frame's targets; try a smaller --size");
     if (glDebug && gl::debugErrorCount() > 0) {
         return makeError("OpenGL", std::to_string(gl::debugErrorCount()) + " error(s), last: " + gl::lastDebugError());
     }
