@@ -41,8 +41,9 @@ void error(const std::string& message) {
     std::fprintf(stderr, "error: %s\n", line.c_str());
 }
 
-Progress::Progress(std::string label, size_t total)
-    : mLabel(std::move(label)), mTotal(total == 0 ? 1 : total), mTty(isatty(STDERR_FILENO) != 0) {
+Progress::Progress(std::string label, size_t total, size_t done)
+    : mLabel(std::move(label)), mTotal(total == 0 ? 1 : total), mDone(done < mTotal ? done : mTotal),
+      mTty(isatty(STDERR_FILENO) != 0) {
     draw(true);
 }
 

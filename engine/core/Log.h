@@ -19,7 +19,7 @@ void error(const std::string& message);
 // place when stderr is a terminal, printed every ~10% otherwise.
 class Progress {
 public:
-    Progress(std::string label, size_t total);
+    Progress(std::string label, size_t total, size_t done = 0);  // done: steps already taken when the bar appears
     ~Progress();
     void advance(size_t steps = 1);
 

@@ -232,3 +232,23 @@ TEST(Cli, FrameTooLargeForMemoryIsAnErrorNotACrash) {
     expectCleanFailure(r, out, {"memory", "smaller --size"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
 }
+
+// A frame that shows nothing warns (exit 0: it may be meant), naming why; a
+// frame that shows the head does not.
+TEST(Cli, FrameThatShowsNothingWarnsWhy) {
+    TempDir dir;
+    const std::string render = kDermis + " render " + defaultScene() + " --size 32x18 --frames 1 --out ";
+    const ProcessResult dark = runProcess(render + dir.file("dark.png") + " --set exposure=0.000001");
+    ASSERT_EQ(dark.exitCode, 0) << dark.err;
+    EXPECT_NE(dark.err.find("warning: " + dir.file("dark.png") + ": every pixel is black"), std::string::npos) << dark.err;
+    EXPECT_EQ(dark.err.find("no character is on screen"), std::string::npos) << dark.err;
+
+    const ProcessResult away = runProcess(render + dir.file("away.png") + " --set 'camera.target_m=[0.5,0,1]'");
+    ASSERT_EQ(away.exitCode, 0) << away.err;
+    EXPECT_NE(away.err.find("no character is on screen ('head': off screen"), std::string::npos) << away.err;
+    EXPECT_EQ(away.err.find("every pixel is black"), std::string::npos) << "the background colour shows:\n" << away.err;
+
+    const ProcessResult lit = runProcess(render + dir.file("lit.png"));
+    ASSERT_EQ(lit.exitCode, 0) << lit.err;
+    EXPECT_EQ(lit.err.find("warning:"), std::string::npos) << lit.err;
+}

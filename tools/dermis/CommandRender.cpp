@@ -12,9 +12,11 @@
 #include "render/TraceEvents.h"
 #include "scene/SceneEnums.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 namespace dermis::cli {
@@ -177,20 +179,54 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
     return options;
 }
 
+// A frame that shows nothing says why, rather than leaving a black file to
+// puzzle over: every character off screen, or every pixel black.
+void warnIfNothingShows(const RenderOptions& options, const Image& image, const std::vector<CharacterReport>& characters) {
+    const auto shown = std::find_if(characters.begin(), characters.end(), [](const CharacterReport& c) { return c.visible; });
+    if (!characters.empty() && shown == characters.end()) {
+        log::warn(options.scenePath + ": no character is on screen ('" + characters.front().name + "': " +
+                  characters.front().culledBecause + "); check the camera");
+    }
+    if (options.request.aov != Aov::Final && options.request.aov != Aov::Radiance) return;  // a black AOV (no transmittance, no AO) can be right
+    const bool black = std::all_of(image.texels.begin(), image.texels.end(),
+                                   [](const glm::vec4& t) { return t.r == 0.0f && t.g == 0.0f && t.b == 0.0f; });
+    if (black) {
+        log::warn(options.outPath + ": every pixel is black (settings.exposure, the lights and the background " +
+                  "colour decide what shows)");
+    }
+}
+
 // Renders every frame; a sequence's frames are staged as they come, else the last one is.
 // Returns the wall milliseconds per frame.
 Result<double> renderFrames(const RenderOptions& options, Session& session, OutputFiles& outputs) {
     Renderer& renderer = *session.renderer;
     FrameRequest request = options.request;
+    // A bar once the frames have taken kQuietRunS (a sequence logs each frame instead).
+    constexpr double kQuietRunS = 2.0;
+    const auto runStart = std::chrono::steady_clock::now();
+    const size_t totalFrames = size_t(options.warmUpFrames) + size_t(options.frames);
+    std::unique_ptr<log::Progress> progress;
+    size_t framesDone = 0;
+    const auto frameDone = [&] {
+        ++framesDone;
+        if (!options.sequence.empty()) return;
+        if (!progress && framesDone < totalFrames && std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count() > kQuietRunS) {
+            progress = std::make_unique<log::Progress>("frames", totalFrames, framesDone);
+        } else if (progress) {
+            progress->advance();
+        }
+    };
     renderer.setWarmUpFrames(size_t(options.warmUpFrames));
     for (int i = 0; i < options.warmUpFrames; ++i) {
         if (const Status status = renderer.renderFrame(request); !status.ok()) return status.error();
+        frameDone();
     }
     if (options.warmUpFrames > 0) glFinish();  // the wall clock counts the timed frames only
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < options.frames; ++i) {
         if (!options.sequence.empty()) request.timeS = options.sequence[static_cast<size_t>(i)];
         if (const Status status = renderer.renderFrame(request); !status.ok()) return status.error();
+        frameDone();
         if (options.sequence.empty()) continue;
         auto image = renderer.readOutput();
         if (!image.ok()) return image.error();
@@ -206,6 +242,7 @@ Result<double> renderFrames(const RenderOptions& options, Session& session, Outp
     if (options.sequence.empty() && !options.allAovs) {
         auto image = renderer.readOutput();
         if (!image.ok()) return image.error();
+        warnIfNothingShows(options, *image, renderer.characterReports());
         if (const Status saved = outputs.stageImage(options.outPath, *image); !saved.ok()) return saved.error();
     }
     return wallMs / options.frames;
