@@ -99,6 +99,11 @@ Result<Image> decode(OIIO::ImageInput& input, const std::string& where, ColourSp
     image.width = spec.width;
     image.height = spec.height;
     image.colourSpace = colourSpace;
+    image.storedType = spec.format.c_str();
+    for (const OIIO::ParamValue& attribute : spec.extra_attribs) {
+        if (attribute.name().string().rfind(kImageAttributePrefix, 0) == 0 && attribute.type() == OIIO::TypeString)
+            image.attributes.emplace_back(attribute.name().string(), attribute.get_string());
+    }
     image.texels.resize(texelCount);
     // Read straight into the RGBA texels (a texel stride of 16 bytes), in bands
     // of rows, and widen in place: OpenImageIO converts through a temporary as
@@ -167,6 +172,7 @@ Status writeImageFile(const std::string& path, const std::string& extension, con
         data = bytes.data();
     } else {
         spec.attribute("compression", "zip");
+        for (const auto& [name, value] : image.attributes) spec.attribute(name, value);
     }
 
     if (!output->open(path, spec)) return makeError(path, condense(output->geterror(), "could not open for writing"));

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dermis {
@@ -17,11 +18,21 @@ enum class ColourSpace {
     Srgb,    // colour: albedo; decoded to linear on the GPU (sRGB texture format)
 };
 
+// The prefix of the attributes an Image carries (Image::attributes).
+constexpr const char* kImageAttributePrefix = "dermis:";
+
 struct Image {
     int width = 0;
     int height = 0;
     ColourSpace colourSpace = ColourSpace::Linear;
     std::vector<glm::vec4> texels;  // row-major, row 0 is the image's top row
+    // Loaded from a file: its channels' type as OpenImageIO names it ("uint8",
+    // "half", "float"); empty otherwise. Tells a linear float image from an
+    // 8-bit encoded one.
+    std::string storedType;
+    // String attributes whose names start with "dermis:" (what made the image),
+    // written into an EXR's header and read back from one.
+    std::vector<std::pair<std::string, std::string>> attributes;
 
     bool empty() const { return texels.empty(); }
     glm::vec4& at(int x, int y) { return texels[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }

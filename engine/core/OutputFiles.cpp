@@ -43,7 +43,19 @@ Status OutputFiles::prepareDirectory(const std::string& path) {
         if (p == p.parent_path()) break;
     }
     fs::create_directories(path, error);
-    if (error || !fs::is_directory(path, error)) return makeError(path, "cannot create the directory");
+    if (error || !fs::is_directory(path)) {
+        // Say why: a file in the way (the common mistake) or what the system said.
+        std::string why = error ? error.message() : "it is not a directory";
+        for (fs::path p = fs::path(path); !p.empty(); p = p.parent_path()) {
+            std::error_code ignored;
+            if (fs::exists(p, ignored) && !fs::is_directory(p, ignored)) {
+                why = p.string() == path ? "a file of that name is in the way" : "'" + p.string() + "' is a file, not a directory";
+                break;
+            }
+            if (p == p.parent_path()) break;
+        }
+        return makeError(path, "cannot create the directory: " + why);
+    }
     mCreatedDirectories.insert(mCreatedDirectories.end(), missing.rbegin(), missing.rend());
     return success();
 }
@@ -58,6 +70,30 @@ Result<fs::path> OutputFiles::temporaryFor(const std::string& path) {
     return hiddenBeside(target, uniqueSuffix());
 }
 
+namespace {
+// A writer's error names the hidden temporary; the user asked for `path`.
+std::string namingTarget(std::string what, const fs::path& temporary, const std::string& path) {
+    const std::string hidden = temporary.string();
+    for (size_t at = what.find(hidden); at != std::string::npos; at = what.find(hidden, at + path.size()))
+        what.replace(at, hidden.size(), path);
+    return what;
+}
+}  // namespace
+
+Status OutputFiles::checkWritable(const std::string& path) {
+    auto temporary = temporaryFor(path);
+    if (!temporary) return temporary.error();
+    bool created = false;
+    {
+        std::ofstream probe(*temporary, std::ios::binary | std::ios::trunc);
+        created = static_cast<bool>(probe);
+    }
+    std::error_code ignored;
+    fs::remove(*temporary, ignored);
+    if (!created) return makeError(path, "cannot create a file there");
+    return success();
+}
+
 Status OutputFiles::stageImage(const std::string& path, const Image& image) {
     const std::string extension = lowerExtension(path);
     if (extension != ".png" && extension != ".exr")
@@ -70,7 +106,7 @@ Status OutputFiles::stageImage(const std::string& path, const Image& image) {
     if (!temporary) return temporary.error();
     mStaged.push_back({*temporary, fs::path(path)});
     if (Status written = writeImageFile(temporary->string(), extension, image); !written)
-        return makeError(path, written.error().what);
+        return makeError(path, namingTarget(written.error().what, *temporary, path));
     return success();
 }
 
@@ -79,7 +115,8 @@ Status OutputFiles::stageLayeredExr(const std::string& path, const std::vector<I
     auto temporary = temporaryFor(path);
     if (!temporary) return temporary.error();
     mStaged.push_back({*temporary, fs::path(path)});
-    if (Status written = writeLayeredExr(temporary->string(), layers); !written) return makeError(path, written.error().what);
+    if (Status written = writeLayeredExr(temporary->string(), layers); !written)
+        return makeError(path, namingTarget(written.error().what, *temporary, path));
     return success();
 }
 

@@ -40,6 +40,9 @@ public:
     // Creates `path` and its missing parents now (to fail early, before long
     // work); without a commit, those it created are removed again.
     Status prepareDirectory(const std::string& path);
+    // Before long work: that a file can be created beside `path` (its folder
+    // made as prepareDirectory does); nothing is left there.
+    Status checkWritable(const std::string& path);
     // Moves every staged file into place, or none. Errors name the path.
     Status commit();
 

@@ -1,4 +1,5 @@
 #include "reference/ReferenceRenderer.h"
+#include "reference/ReferenceDefinition.h"
 
 #include "pose/CharacterPose.h"
 
@@ -396,6 +397,7 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
         mStats.shadedBaseCells = std::max(mStats.shadedBaseCells, first.shadedBaseCells);  // the cells overlap
         mStats.sssHits += first.sssHits;
     }
+    image.attributes = {{kDefinitionAttribute, definitionRecord(mScene)}};  // what it is a reference of
     return image;
 }
 

@@ -99,3 +99,41 @@ TEST(CliConduct, QuietKeepsWarningsAndNoWarningsDropsThem) {
     const ProcessResult lit = runProcess(kDermis + " render " + scene() + kTiny + " --quiet --out " + dir.file("y.png"));
     EXPECT_EQ(lit.err.find("lights it"), std::string::npos) << lit.err;
 }
+
+// Mistakes a user found that the program used to meet late, silently or with
+// the wrong words: each is now one error line, found before the work, naming
+// what the user gave (not a hidden temporary), with the usage status where it
+// is a command-line mistake.
+TEST(CliConduct, OutputMistakesAreFoundBeforeTheWorkAndNamedAsGiven) {
+    TempDir dir;
+    dermis::test::writeTextFile(dir.file("a-file"), "not a folder");
+    std::filesystem::create_directories(dir.file("bench-a"));
+    struct Case {
+        std::string arguments;
+        int exitCode;
+        std::string message;
+        std::string mustNotExist;
+    };
+    const Case cases[] = {
+        {"render " + scene() + kTiny + " --out " + dir.file("a-file/x.png"), 1,
+         dir.file("a-file") + ": cannot create the directory: a file of that name is in the way", dir.file("a-file/x.png")},
+        {"stress --cases 2 --failed-scenes " + dir.file("a-file") + " --out " + dir.file("s.json"), 1,
+         "--failed-scenes " + dir.file("a-file") + ": cannot create the directory", dir.file("s.json")},
+        {"merge --out " + dir.file("m.exr") + " " + dir.file("bench-a") + " " + dir.file("bench-a"), 2,
+         "--out " + dir.file("m.exr") + ": bench shard directories merge into a directory, not a .exr file", dir.file("m.exr")},
+        {"merge --out " + dir.file("m.exr") + " " + dir.file("gone.exr"), 1, dir.file("gone.exr") + ": no such file or directory",
+         dir.file("m.exr")},
+        {"bench " + scene() + " --size 16x9 --out " + dir.file("b") + " --irradiance-size 100", 2,
+         "--irradiance-size: must be a power of two from 64 to 8192, got 100", dir.file("b/reference.exr")},
+    };
+    for (const Case& c : cases) {
+        const ProcessResult r = runProcess(kDermis + " " + c.arguments);
+        EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.err;
+        EXPECT_NE(r.err.find("error: " + c.message), std::string::npos) << c.arguments << "\n" << r.err;
+        EXPECT_EQ(r.err.find(".dermis-"), std::string::npos) << "names a temporary:\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(c.mustNotExist)) << c.arguments;
+    }
+    const ProcessResult help = runProcess(kDermis + " render -h");
+    EXPECT_EQ(help.exitCode, 0) << help.err;
+    EXPECT_EQ(help.out.rfind("usage: dermis render", 0), 0u) << help.out;
+}

@@ -59,8 +59,10 @@ TEST(ReferenceCli, BadInputFailsCleanly) {
         {furnaceScene() + " --out " + dir.file("ref.png"), 2, ".exr"},
         {furnaceScene() + " --out " + out + " --set sss.mix=7", 2, "mix"},  // a refused --set is a usage error
         {dir.file("missing.json") + " --out " + out, 1, "missing.json"},
-        {furnaceScene() + " --out " + dir.file("no/such/dir/ref.exr"), 1, "no such directory"},
+        // A file where the folder should be: found before the reference is computed.
+        {furnaceScene() + " --out " + dir.file("a-file/ref.exr"), 1, dir.file("a-file") + ": cannot create the directory: a file of that name is in the way"},
     };
+    dermis::test::writeTextFile(dir.file("a-file"), "not a folder");
     for (const Case& c : cases) {
         const ProcessResult r = runProcess(kDermis + " reference " + c.arguments);
         EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.err;
@@ -69,4 +71,38 @@ TEST(ReferenceCli, BadInputFailsCleanly) {
         EXPECT_FALSE(std::filesystem::exists(out));
         EXPECT_FALSE(std::filesystem::exists(dir.file("ref.png")));
     }
+}
+
+// compare --reference takes only a reference of the scene it renders: one of
+// another scene, of other settings the reference reads, or an 8-bit image gives
+// one error naming the file and what differs, where metrics of a meaningless
+// comparison used to be written with exit 0. What the reference leaves out
+// (SSAO here) may differ.
+TEST(ReferenceCli, CompareRefusesAReferenceOfAnotherScene) {
+    TempDir dir;
+    const std::string furnace = furnaceScene();
+    const std::string slab = dermis::test::contentScene("slab.json");
+    ASSERT_EQ(runProcess(kDermis + " reference " + furnace + " --size 8x6 --density 2 --spp 1 --quiet --out " +
+                         dir.file("ref.exr")).exitCode, 0);
+    ASSERT_EQ(runProcess(kDermis + " render " + furnace + " --size 8x6 --frames 1 --quiet --out " + dir.file("frame.png")).exitCode, 0);
+    const std::string compare = " --size 8x6 --frames 1 --quiet --reference ";
+
+    const ProcessResult same = runProcess(kDermis + " compare " + furnace + compare + dir.file("ref.exr") +
+                                          " --set ssao.enabled=false --out " + dir.file("same"));
+    EXPECT_EQ(same.exitCode, 0) << same.err;
+
+    const ProcessResult other = runProcess(kDermis + " compare " + slab + compare + dir.file("ref.exr") + " --out " + dir.file("other"));
+    EXPECT_EQ(other.exitCode, 1) << other.err;
+    EXPECT_NE(other.err.find(dir.file("ref.exr") + ": a reference of another scene: its camera"), std::string::npos) << other.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("other") + "/metrics.json"));
+
+    const ProcessResult mix = runProcess(kDermis + " compare " + furnace + compare + dir.file("ref.exr") +
+                                         " --set sss.mix=0.3 --out " + dir.file("mix"));
+    EXPECT_EQ(mix.exitCode, 1) << mix.err;
+    EXPECT_NE(mix.err.find("its settings differ from"), std::string::npos) << mix.err;
+
+    const ProcessResult png = runProcess(kDermis + " compare " + furnace + compare + dir.file("frame.png") + " --out " + dir.file("png"));
+    EXPECT_EQ(png.exitCode, 1) << png.err;
+    EXPECT_NE(png.err.find("must be a linear float image"), std::string::npos) << png.err;
+    for (const ProcessResult* r : {&other, &mix, &png}) EXPECT_EQ(errorLines(r->err), 1u) << r->err;
 }

@@ -133,15 +133,17 @@ TEST(View, BadOptionsAreUsageErrors) {
         EXPECT_EQ(r.exitCode, 2) << options << "\n" << r.err;
         EXPECT_NE(r.err.find("error: "), std::string::npos) << options << "\n" << r.err;
     }
+    // A value the scene refuses, given on the command line, is a usage error (2) for
+    // --set-b as for --set.
     const ProcessResult bad = runProcess(kDermis + " view " + defaultScene() + " --set-b sss.taps=4 --frames 1");
-    EXPECT_EQ(bad.exitCode, 1) << bad.err;
+    EXPECT_EQ(bad.exitCode, 2) << bad.err;
     EXPECT_NE(bad.err.find("--set-b sss.taps=4"), std::string::npos) << bad.err;
 }
 
 TEST(View, HelpListsTheOptions) {
     const ProcessResult r = runProcess(kDermis + " view --help");
     ASSERT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--size", "--frames", "--screenshot", "--set", "--set-b", "--view", "--aov"}) {
+    for (const char* flag : {"--size", "--frames", "--screenshot", "--set", "--set-b", "--view", "--aov", "--quiet"}) {
         EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
     }
     const ProcessResult top = runProcess(kDermis + " --help");

@@ -26,6 +26,10 @@ Result<ParsedArgs> parseArgs(const std::vector<std::string>& args, const std::se
     ParsedArgs parsed;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
+        if (arg == "-h" && switches.count("help")) {  // as `dermis -h` takes it
+            parsed.flags.insert("help");
+            continue;
+        }
         if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) {
             parsed.positional.push_back(arg);
             continue;
@@ -148,7 +152,8 @@ Result<gl::Backend> parseBackend(const std::string& name) {
 int failure(const Error& error) {
     log::error(error.message());
     // A value given on the command line that the scene refuses (--set PATH=VALUE) is a usage error.
-    return error.where.rfind("--set ", 0) == 0 ? 2 : 1;
+    const bool override = error.where.rfind("--set ", 0) == 0 || error.where.rfind("--set-b ", 0) == 0;
+    return override ? 2 : 1;
 }
 
 int usageError(const Error& error) {

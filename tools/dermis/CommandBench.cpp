@@ -88,7 +88,8 @@ const char* const kHelp =
     "                     The shipped default settings of each swept mode are always measured.\n"
     "  --size WxH         the compared frame size (default 640x360)\n"
     "  --frames N         timed frames per configuration, after one warm-up (default 5)\n"
-    "  --reference FILE   an existing full reference .exr of this scene at --size (skips computing it)\n"
+    "  --reference FILE   an existing full reference .exr of this scene at --size (skips computing it);\n"
+    "                     one whose header records another scene, or an 8-bit image, is refused\n"
     "REFERENCE_OPTIONS"
     "  --set PATH=VALUE   override a scene value for every configuration; repeatable\n"
     "  --shard K/N        measure only configurations K, K+N, K+2N, ... (K from 1) of the plan;\n"
@@ -96,7 +97,8 @@ const char* const kHelp =
     "                     this part measured and bench_shard.json, and `dermis merge` joins\n"
     "                     the N directories into the files above (docs/shards.md)\n"
     "  --backend NAME     egl or osmesa (default: egl, falling back to osmesa)\n"
-    "  --no-plots         write the CSV and JSON files only (no Python needed; no PNGs, no errors.md)\n"
+    "  --no-plots         no matplotlib plots and no errors.md (no Python needed); the CSV and\n"
+    "                     JSON files and the error images above are still written\n"
     "  --quiet            no progress (warnings stay)\n"
     "  --help             this text\n"
     "\n"
@@ -202,14 +204,14 @@ int runBench(const std::vector<std::string>& rawArgs) {
     OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
     if (Status prepared = outputs.prepareDirectory(options->outDir.string()); !prepared.ok())
         return failure(prepared.error());
+    auto session = Session::open(options->scenePath, options->base, options->backend, false);
+    if (!session.ok()) return failure(session.error());
     std::optional<Image> givenReference;
     if (!options->givenReference.empty()) {
-        auto loaded = loadReferenceImage(options->givenReference, options->width, options->height);
+        auto loaded = loadReferenceImage(options->givenReference, options->width, options->height, *session->scene);
         if (!loaded.ok()) return failure(loaded.error());
         givenReference = std::move(*loaded);
     }
-    auto session = Session::open(options->scenePath, options->base, options->backend, false);
-    if (!session.ok()) return failure(session.error());
     const std::string identity = benchIdentity(*options, *session->scene);  // before any configuration changes it
     ReferenceImages references(options->outDir, options->reference);
     auto meter = CauseMeter::create(*session, references, std::move(givenReference));

@@ -51,7 +51,10 @@ const char* const kHelp =
     "                      reference SCENE --size WxH --out FILE); metrics.json then holds\n"
     "                      each mode's relative RMSE, largest difference and PSNR against it\n"
     "                      over SSS pixels. The reference takes ambient occlusion as 1:\n"
-    "                      add --set ssao.enabled=false to compare like with like\n"
+    "                      add --set ssao.enabled=false to compare like with like. A\n"
+    "                      reference whose header records another scene (camera, lights,\n"
+    "                      characters, profiles, environment, or the settings it reads) or\n"
+    "                      an 8-bit image is refused\n"
     "  --errors            each mode's error split by cause (total against the full CPU\n"
     "                      reference, irradiance with SSS off on both sides, scatter against\n"
     "                      the matched-irradiance reference) and by region, as `dermis bench`\n"
@@ -156,14 +159,14 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     std::filesystem::create_directories(options->outDir, ec);
     if (ec || !std::filesystem::is_directory(options->outDir))
         return failure(makeError(options->outDir.string(), "cannot create the directory"));
+    auto session = Session::open(options->scenePath, options->overrides, options->backend, options->glDebug);
+    if (!session.ok()) return failure(session.error());
     std::optional<Image> reference;
     if (!options->referencePath.empty()) {
-        auto loaded = loadReferenceImage(options->referencePath, options->width, options->height);
+        auto loaded = loadReferenceImage(options->referencePath, options->width, options->height, *session->scene);
         if (!loaded.ok()) return failure(loaded.error());
         reference = std::move(*loaded);
     }
-    auto session = Session::open(options->scenePath, options->overrides, options->backend, options->glDebug);
-    if (!session.ok()) return failure(session.error());
     auto modes = renderEveryMode(*session, options->scenePath, options->width, options->height, options->frames);
     if (!modes.ok()) return failure(modes.error());
     double heatmapScaleMax = 0.0;

@@ -92,9 +92,19 @@ int runMerge(const std::vector<std::string>& rawArgs) {
     if (!args->has("out") || args->get("out", "").empty()) return usageError(makeError("merge", "--out FILE is required"));
     const std::string outPath = args->get("out", "");
     if (args->positional.empty()) return usageError(makeError("merge", "expected the shards"));
+    for (const std::string& shard : args->positional) {
+        std::error_code missing;
+        if (!std::filesystem::exists(shard, missing)) return failure(makeError(shard, "no such file or directory"));
+    }
     std::error_code error;
-    if (std::filesystem::is_directory(args->positional[0], error)) return mergeBench(outPath, *args);
     const std::string extension = std::filesystem::path(outPath).extension().string();
+    if (std::filesystem::is_directory(args->positional[0], error)) {
+        if (extension == ".exr" || extension == ".json") {
+            return usageError(makeError("--out " + outPath, "bench shard directories merge into a directory, not a " +
+                                                            extension + " file"));
+        }
+        return mergeBench(outPath, *args);
+    }
     if (extension != ".exr" && extension != ".json") {
         return usageError(makeError("--out " + outPath, "expected FILE.exr (reference shards), FILE.json (tune tables or stress "
                                                         "summaries) or a directory (bench shard directories)"));

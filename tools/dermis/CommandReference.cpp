@@ -6,6 +6,7 @@
 #include "ReferenceOptions.h"
 #include "measure/ReferenceImages.h"
 #include "measure/Session.h"
+#include "scene/JsonReader.h"
 
 #include "core/Image.h"
 #include "core/Log.h"
@@ -142,11 +143,6 @@ Result<ReferenceCommandOptions> parseReferenceCommandOptions(const ParsedArgs& a
     options.outPath = args.get("out", "");
     if (std::filesystem::path(options.outPath).extension() != ".exr")
         return makeError("--out " + options.outPath, "the reference is linear float: the file must end in .exr");
-    const std::filesystem::path outDir = std::filesystem::path(options.outPath).parent_path();
-    if (!outDir.empty() && !std::filesystem::is_directory(outDir)) {
-        *usage = false;
-        return makeError("--out " + options.outPath, "no such directory: " + outDir.string());
-    }
     const std::string aov = args.get("aov", "diffuse");
     if (aov != "diffuse") return makeError("--aov " + aov, "the reference computes only: diffuse");
     auto size = parseSize(args.get("size", "640x360"), kMaxReferenceDimension);
@@ -197,6 +193,8 @@ int runReference(const std::vector<std::string>& rawArgs) {
     options->renderer.showProgress = !log::quiet();
     auto scene = loadScene(options->scenePath, options->overrides);
     if (!scene.ok()) return failure(scene.error());
+    OutputFiles out;  // the image (and a shard's note), or nothing
+    if (Status writable = out.checkWritable(options->outPath); !writable.ok()) return failure(writable.error());
 
     const auto start = std::chrono::steady_clock::now();
     log::info("reference: loading " + options->scenePath);
@@ -204,7 +202,7 @@ int runReference(const std::vector<std::string>& rawArgs) {
     if (!renderer.ok()) return failure(renderer.error());
     const auto built = std::chrono::steady_clock::now();
     log::info("reference: " + std::to_string(options->width) + "x" + std::to_string(options->height) + ", density " +
-              std::to_string(options->renderer.quadrature.density) + " per s^2, " +
+              formatNumberForMessage(options->renderer.quadrature.density) + " per s^2, " +
               std::to_string(options->renderer.samplesPerPixel) + " samples per pixel, " +
               std::to_string(raytrace::resolveThreadCount(options->renderer.threads)) + " threads");
     const shards::ShardRange rows = shards::shardRange(options->shard, options->height);
@@ -213,7 +211,6 @@ int runReference(const std::vector<std::string>& rawArgs) {
                             ? renderer->renderDiffuse(options->width, options->height)
                             : renderer->renderDiffuseRows(options->width, options->height, rows.first, rows.count);
     const auto done = std::chrono::steady_clock::now();
-    OutputFiles out;
     if (Status staged = out.stageImage(options->outPath, image); !staged.ok()) return failure(staged.error());
     if (!options->shard.whole()) {
         const shards::ReferenceShardNote note{options->shard, options->width, options->height, rows.first, rows.count,

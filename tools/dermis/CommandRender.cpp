@@ -62,10 +62,11 @@ const char* const kHelp =
     "                      ... up to E, written as --out with a 4-digit frame number\n"
     "                      before the extension (out/walk_0000.png, ...); not with --time\n"
     "                      or --frames (at most %d frames)\n"
-    "  --mode MODE         the subsurface-scattering technique, the same as --set mode=MODE:\n"
+    "  --mode MODE         the subsurface-scattering technique, the same as --set mode=MODE\n"
+    "                      given after every --set (it wins over a --set mode=...):\n"
     "%s"
     "  --variant V         Vila Verde 2015's variants of the screen-space frame, the same as\n"
-    "                      --set sss.variant=V --set sss.blur=variant:\n"
+    "                      --set sss.variant=V --set sss.blur=variant after every --set:\n"
     "%s"
     "  --set PATH=VALUE    override a scene value, checked like the file; repeatable.\n"
     "                      PATH is dot-separated from the root, or from \"settings\" when\n"
@@ -288,6 +289,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
               std::to_string(options->request.height) + ", " + std::to_string(options->frames) + " frames on " +
               session->context->renderer());
     OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
+    if (options->sequence.empty()) {  // a sequence's frames are checked as each is written
+        if (Status writable = outputs.checkWritable(options->outPath); !writable.ok()) return failure(writable.error());
+    }
     auto wallMsPerFrame = renderFrames(*options, *session, outputs);
     if (!wallMsPerFrame.ok()) return failure(wallMsPerFrame.error());
     Renderer& renderer = *session->renderer;

@@ -160,9 +160,9 @@ Result<std::vector<SoakSample>> soakMode(const SoakOptions& options, SssMode mod
                           renderer->texturePoolBytes()};
         samples.push_back(sample);
         if (!options.quiet) {
-            std::printf("soak %s frame %d/%d: resident %.1f MiB, texture pool %.2f MiB, %d characters\n",
+            std::printf("soak %s frame %d/%d: resident %.1f MiB, texture pool %.2f MiB, %d character%s\n",
                         label.c_str(), sample.frame, options.frames, double(sample.residentBytes) / kMiB,
-                        double(sample.poolBytes) / kMiB, sample.characters);
+                        double(sample.poolBytes) / kMiB, sample.characters, sample.characters == 1 ? "" : "s");
             std::fflush(stdout);
         }
     }

@@ -188,7 +188,12 @@ int runStress(const std::vector<std::string>& rawArgs) {
     const auto start = std::chrono::steady_clock::now();
     // The report and the failed cases' scenes, all or none (docs/cli.md,
     // "Outputs"): failed cases are results, so a run that ends commits them.
+    // Their folder is checked before the cases run, not found unwritable after.
     OutputFiles outputs;
+    if (!options->failedScenesDir.empty()) {
+        if (const Status prepared = outputs.prepareDirectory(options->failedScenesDir); !prepared.ok())
+            return failure(Error{"--failed-scenes " + prepared.error().where, prepared.error().what});
+    }
     stress::StressRun run;
     runCases(*options, caseOptions, assets.string(), run, outputs);
     if (!options->plantPass.empty() && !run.planted()) {

@@ -42,6 +42,7 @@ const char* const kHelp =
     "  --screenshot FILE   batch mode: after the last frame, save the whole window (panels\n"
     "                      included) as a PNG; without --frames, 30 frames are rendered\n"
     "  --gl-debug          GL debug context; in batch mode any driver error fails the run\n"
+    "  --quiet             no progress (warnings still print)\n"
     "  --help              this text\n"
     "\n"
     "Exit status: 0 on success, 1 when the scene, its content, the display or the GL context\n"
@@ -68,8 +69,9 @@ Error nameBOverride(Error error, const std::vector<std::string>& bOverrides) {
 
 int runView(const std::vector<std::string>& rawArgs) {
     auto args = parseArgs(rawArgs, {"size", "set", "set-b", "view", "aov", "frames", "screenshot"},
-                          {"no-panels", "gl-debug", "help"});
+                          {"no-panels", "gl-debug", "quiet", "help"});
     if (!args.ok()) return usageError(args.error());
+    log::setQuiet(args->flags.count("quiet") > 0);
     if (args->flags.count("help")) {
         std::printf(kHelp, kAovs.helpLines("                        ").c_str());
         return 0;

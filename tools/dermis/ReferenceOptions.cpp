@@ -1,5 +1,6 @@
 #include "ReferenceOptions.h"
 
+#include "frame/IrradianceCapture.h"
 #include "reference/PixelSampling.h"
 
 #include <cstdio>
@@ -32,8 +33,9 @@ std::string referenceOptionsHelp() {
            "                     where the engine shades)\n"
            "  --change-spp N     the same for the matched reference's scattering change (default " +
            std::to_string(defaults.changeSamplesPerPixel) + ")\n"
-           "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference\n"
-           "                     (default " + std::to_string(defaults.irradianceSizeTexels) + ")\n"
+           "  --irradiance-size N  texels per side of the engine's irradiance for the matched reference,\n"
+           "                     a power of two from " + std::to_string(kMinIrradianceCaptureTexels) + " to " +
+           std::to_string(kMaxIrradianceCaptureTexels) + " (default " + std::to_string(defaults.irradianceSizeTexels) + ")\n"
            "  --target-error PCT the full and SSS-off references repeat with independent environment\n"
            "                     rays until the estimated relative RMSE of their noise is at most PCT\n"
            "                     percent (default " +
@@ -68,22 +70,29 @@ Result<ReferenceSettings> referenceSettingsFromArgs(const ParsedArgs& args) {
         if (!density.ok()) return density.error();
         settings.density = *density;
     }
+    // Each checked here, before any reference is computed and written.
+    enum class Rule { SquareSamples, CaptureSize };
     const struct {
         const char* name;
         int* target;
-        bool square;  // sub-samples per pixel: checked here, before any reference is computed and written
-    } integers[] = {{"spp", &settings.samplesPerPixel, true},
-                    {"change-spp", &settings.changeSamplesPerPixel, true},
-                    {"irradiance-size", &settings.irradianceSizeTexels, false}};
+        Rule rule;
+    } integers[] = {{"spp", &settings.samplesPerPixel, Rule::SquareSamples},
+                    {"change-spp", &settings.changeSamplesPerPixel, Rule::SquareSamples},
+                    {"irradiance-size", &settings.irradianceSizeTexels, Rule::CaptureSize}};
     for (const auto& integer : integers) {
         if (!args.has(integer.name)) continue;
         const std::string option = std::string("--") + integer.name;
         auto value = parsePositiveInt(option, args.get(integer.name, ""));
         if (!value.ok()) return value.error();
-        if (integer.square && reference::strataPerSide(*value) == 0) {
+        if (integer.rule == Rule::SquareSamples && reference::strataPerSide(*value) == 0) {
             return makeError(option, "must be a perfect square from 1 to " +
                                          std::to_string(reference::kMaxSamplesPerPixel) + ", got " +
                                          std::to_string(*value));
+        }
+        if (integer.rule == Rule::CaptureSize &&
+            (*value < kMinIrradianceCaptureTexels || *value > kMaxIrradianceCaptureTexels || (*value & (*value - 1)) != 0)) {
+            return makeError(option, "must be a power of two from " + std::to_string(kMinIrradianceCaptureTexels) + " to " +
+                                         std::to_string(kMaxIrradianceCaptureTexels) + ", got " + std::to_string(*value));
         }
         *integer.target = *value;
     }

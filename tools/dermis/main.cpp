@@ -43,7 +43,7 @@ void printUsage(std::FILE* out) {
     std::fprintf(out,
                  "\noptions of every command:\n"
                  "  --quiet        no progress (warnings still print)\n"
-                 "  --no-warnings  no warnings either (errors always print)\n"
+                 "  --no-warnings  no warnings (progress stays unless --quiet; errors always print)\n"
                  "  --help         the command's options\n"
                  "\n"
                  "dermis --version prints the version, the git revision it was built from and the\n"

@@ -3,6 +3,7 @@
 #include "core/Log.h"
 #include "plan/Aov.h"
 #include "frame/Renderer.h"
+#include "reference/ReferenceDefinition.h"
 
 #include <chrono>
 #include <cmath>
@@ -63,9 +64,24 @@ Result<std::vector<uint8_t>> sssMask(Renderer& renderer, int width, int height) 
     return mask;
 }
 
-Result<Image> loadReferenceImage(const std::string& path, int width, int height) {
+Result<Image> loadReferenceImage(const std::string& path, int width, int height, const Scene& scene) {
     auto image = loadImage(path, ColourSpace::Linear);
     if (!image.ok()) return image.error();
+    if (image->storedType != "float" && image->storedType != "half") {
+        return makeError(path, "the reference must be a linear float image (dermis reference writes one as .exr), not " +
+                                   image->storedType + " values");
+    }
+    for (const auto& [name, record] : image->attributes) {
+        if (name != reference::kDefinitionAttribute) continue;
+        const std::vector<std::string> differing = reference::definitionMismatch(record, scene);
+        if (differing.empty()) break;
+        std::string parts;
+        for (const std::string& part : differing) parts += (parts.empty() ? "" : ", ") + part;
+        return makeError(path, "a reference of another scene: its " + parts + " differ from " +
+                                   (scene.path.empty() ? std::string("this scene") : scene.path) +
+                                   "'s (make it with dermis reference " +
+                                   (scene.path.empty() ? std::string("SCENE") : scene.path) + " and the same --set)");
+    }
     if (image->width != width || image->height != height) {
         return makeError(path, "the reference is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
                                    " but the frame is " + std::to_string(width) + "x" + std::to_string(height) +

@@ -40,9 +40,12 @@ Result<std::vector<int>> objectIds(Session& session, int width, int height);
 // its scatter map not 0 there). Renders one frame of that AOV.
 Result<std::vector<uint8_t>> sssMask(Renderer& renderer, int width, int height);
 
-// A linear float image of exactly width x height (the CPU reference), or an
-// error naming the file and the size it should have.
-Result<Image> loadReferenceImage(const std::string& path, int width, int height);
+// A linear float image of exactly width x height (the CPU reference) of
+// `scene`, or an error naming the file and what is wrong: the size, an 8-bit
+// (encoded, not linear) file, or a reference recorded as made from another
+// scene (reference/ReferenceDefinition.h; a file without the record, made
+// elsewhere, is taken as it is).
+Result<Image> loadReferenceImage(const std::string& path, int width, int height, const Scene& scene);
 
 // relative_rmse, rmse, max_abs_difference, psnr_db, peak, sss_pixels; JSON
 // has no infinity, so a non-finite figure is written as null.

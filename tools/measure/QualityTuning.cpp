@@ -41,7 +41,7 @@ Result<QualityTable> tuneQualityTable(Session& session, const TuneSettings& sett
     const SssSettings sss = session.scene->settings.sss;
     const std::vector<SssChoice>& candidates = bench::tuneCandidates();
     const size_t total = settings.distances.size() * (candidates.size() + 1);
-    log::info("tune: margin " + formatNumberForMessage(settings.margin) + " x budget; " + settings.scenePath + " at " +
+    log::info("tune: margin " + formatNumberForMessage(float(settings.margin)) + " x budget; " + settings.scenePath + " at " +
               std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
               std::to_string(settings.distances.size()) + " distances x " + std::to_string(candidates.size() + 1) +
               " choices, " + std::to_string(settings.frames) + " frames each");
@@ -65,8 +65,13 @@ Result<QualityTable> tuneQualityTable(Session& session, const TuneSettings& sett
         auto mask = sssMask(*session.renderer, settings.width, settings.height);
         if (!mask.ok()) return mask.error();
         if (pixelsPerMm <= 0.0f || std::count(mask->begin(), mask->end(), uint8_t{1}) == 0) {
-            return (makeError(settings.scenePath, "no SSS pixel is seen at distance factor " +
-                                                    formatNumberForMessage(distance) + " (fewer or smaller --distances)"));
+            const bool anyScatters = session.scene->settings.sss.enabled &&
+                                     std::any_of(session.scene->characters.begin(), session.scene->characters.end(),
+                                                 [](const Character& c) { return c.material.profile != "none"; });
+            return makeError(settings.scenePath, "no SSS pixel is seen at distance factor " + formatNumberForMessage(distance) +
+                                                     (anyScatters ? " (fewer or smaller --distances)"
+                                                                  : ": no character's material scatters (every profile is "
+                                                                    "\"none\", or settings.sss.enabled is false)"));
         }
         const double finestSssMs = sssGpuMs(finest->timings);
         ++done;

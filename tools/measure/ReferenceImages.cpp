@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -88,10 +89,11 @@ std::string referenceStagesSummary(const reference::ReferenceStats& stats) {
     char text[512];
     std::snprintf(text, sizeof text,
                   "reference: last pass %.1f s nearest hits, %.1f s base cells, %.1f s integral; "
-                  "%zu sample values asked, %.1f %% reused; %d pass(es), estimated relative RMSE %.3f %%",
+                  "%zu sample values asked, %.1f %% reused; %d pass%s, estimated relative RMSE %.3f %%",
                   stats.traceSeconds, stats.baseCellSeconds, stats.scatterSeconds, stats.sampleLookups,
                   stats.sampleLookups ? 100.0 * double(stats.sampleMemoHits) / double(stats.sampleLookups) : 0.0,
-                  stats.passes, 100.0 * stats.estimatedRelativeRmse);
+                  std::max(stats.passes, 1), stats.passes > 1 ? "es" : "",  // one pass unless progressive
+                  100.0 * stats.estimatedRelativeRmse);
     return text;
 }
 

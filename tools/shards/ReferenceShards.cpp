@@ -80,6 +80,7 @@ Result<Image> mergeReferenceShards(const std::vector<std::string>& imagePaths) {
             return makeError(path, "the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
                                        ", its note says " + std::to_string(note.width) + "x" + std::to_string(note.height));
         }
+        merged.attributes = image->attributes;  // what it is a reference of: one job, one scene (the identity)
         const size_t begin = size_t(note.firstRow) * size_t(note.width);
         const size_t end = begin + size_t(note.rows) * size_t(note.width);
         std::copy(image->texels.begin() + long(begin), image->texels.begin() + long(end), merged.texels.begin() + long(begin));

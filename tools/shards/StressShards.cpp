@@ -69,7 +69,8 @@ Result<Json> mergeStressSummaries(const std::vector<std::string>& summaryPaths) 
             return makeError(path, std::string("not JSON: ") + error.what());
         }
         if (!summary.is_object() || !summary.contains("shard") || !summary["shard"].is_object()) {
-            return makeError(path, "/shard: missing; a stress shard is written by dermis stress --shard K/N");
+            return makeError(path, "not a shard: a stress shard (dermis stress --shard K/N) has /shard, and a tune "
+                                   "shard (dermis tune --shard K/N) a note beside it");
         }
         Json shard = summary["shard"];
         for (const char* key : {"index", "of", "job_first_seed", "job_cases"}) {
