@@ -99,7 +99,9 @@ SssStart addSssInit(graph::RenderGraph& graph, const FrameContext& frame, const 
             builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
             builder.skipIf(!anyVisible, "no SSS pixel on screen");
             // Their accumulation starts (and stays) at the irradiance itself.
-            builder.skipIf(frame.plan.sss.onlyLightingScatters(), "every SSS slot on screen scatters in the lighting pass");
+            builder.skipIf(frame.plan.sss.chainIsIdentity(),
+                           "no SSS slot on screen blurs (each scatters in the lighting pass or has every Gaussian "
+                           "under min_width_px)");
         },
         [frame](const graph::PassResources& resources, const InitData& d) {
             const Programs& programs = *frame.gl->programs;

@@ -144,9 +144,13 @@ bool blursOnScreen(const SssSlotPlan& slot) {
 
 bool SssPlan::anyScattersInLighting() const { return std::any_of(slots.begin(), slots.end(), scattersInLightingPass); }
 
-bool SssPlan::onlyLightingScatters() const {
-    return anyVisible() && std::all_of(slots.begin(), slots.end(), [](const SssSlotPlan& s) {
-               return !s.visible || scattersInLightingPass(s);
+bool SssPlan::chainIsIdentity() const {
+    const auto wholeIrradiance = [](const SssSlotPlan& s) {
+        const glm::vec3 offBy = glm::abs(s.initWeight - glm::vec3(1.0f));
+        return std::max({offBy.r, offBy.g, offBy.b}) <= kIdentityInitWeightTolerance;
+    };
+    return anyVisible() && std::all_of(slots.begin(), slots.end(), [&](const SssSlotPlan& s) {
+               return !s.visible || scattersInLightingPass(s) || (!blursOnScreen(s) && wholeIrradiance(s));
            });
 }
 

@@ -75,6 +75,12 @@ bool scattersInLightingPass(const SssSlotPlan& slot);
 // Only a blurring pass reads the thin-edge fill (include/SssChain.glsl).
 bool blursOnScreen(const SssSlotPlan& slot);
 
+// How far from 1 a slot's initWeight may be for its chain to count as the
+// irradiance itself. Profiles are normalised when made (DiffusionProfile::
+// create), so their weights sum to 1 up to float rounding; a weight further
+// off would mean "sss init" scales, and it runs.
+constexpr float kIdentityInitWeightTolerance = 1e-5f;
+
 // The choice a character's SSS submeshes render with, for reports.
 struct CharacterSssChoice {
     bool hasSss = false;      // some submesh has a diffusion profile
@@ -93,8 +99,12 @@ struct SssPlan {
     bool anyVisible() const;
     // Some visible slot's technique scatters in the lighting pass ("preintegrated").
     bool anyScattersInLighting() const;
-    // Every visible slot's technique scatters in the lighting pass: no SSS pass has work.
-    bool onlyLightingScatters() const;
+    // Some slot is visible, and no visible slot's chain differs from the
+    // irradiance: each scatters in the lighting pass, or blurs nothing on
+    // screen (blursOnScreen) and starts at the whole irradiance (an initWeight
+    // of 1 in every channel, within kIdentityInitWeightTolerance). No SSS pass
+    // has work then, "sss init" included.
+    bool chainIsIdentity() const;
     bool hasSss(size_t character) const;  // some submesh of it has a slot
     int slotOf(size_t character, size_t submesh) const;  // 0 (opaque) for a submesh it does not know
 };

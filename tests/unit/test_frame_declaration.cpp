@@ -198,7 +198,9 @@ TEST(FrameDeclaration, PreintegratedSkinRunsNoSssPass) {
     ASSERT_TRUE(frames.declare());
     EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
     EXPECT_EQ(frames.declaredWithPrefix("sss skin"), 0) << frames.listing();
-    EXPECT_EQ(frames.culledBecause("sss init"), "predicate: every SSS slot on screen scatters in the lighting pass");
+    EXPECT_EQ(frames.culledBecause("sss init"),
+              "predicate: no SSS slot on screen blurs (each scatters in the lighting pass or has every Gaussian under "
+              "min_width_px)");
     EXPECT_TRUE(frames.executed("lighting"));
     EXPECT_TRUE(frames.executed("composite"));
 }
@@ -279,7 +281,10 @@ TEST(FrameDeclaration, GaussiansUnderTheMinimumWidthAreSkipped) {
     ASSERT_TRUE(far.declare());
     EXPECT_EQ(far.executedWithPrefix("sss skin g"), 0) << far.listing();
     EXPECT_NE(far.culledBecause("sss skin g5 h").find("px wide at the nearest SSS pixel (< 0.5 px)"), std::string::npos);
-    EXPECT_TRUE(far.executed("sss init"));  // the head is on screen: its identity weight still starts the sum
+    // Nothing blurs and the identity weight is the whole irradiance: the copy would change nothing.
+    EXPECT_EQ(far.culledBecause("sss init"),
+              "predicate: no SSS slot on screen blurs (each scatters in the lighting pass or has every Gaussian under "
+              "min_width_px)");
 }
 
 // Both modes read the thin-edge passes; switched off, they are culled with

@@ -106,6 +106,34 @@ TEST(SssPlan, ASlotBlursOnScreenUnlessNoGaussianReachesMinWidthOrItScattersInThe
     EXPECT_FALSE(blursOnScreen(behind->slots[0]));
 }
 
+// "sss init" only copies the irradiance times the slot's initWeight; when
+// nothing blurs and that weight is 1 the copy is the irradiance itself, and
+// the pass is skipped (SssPlan::chainIsIdentity). At 4 m every skin Gaussian
+// is under min_width_px (the test above works it out from the view); at 1.2 m
+// one is not. Profiles are normalised when made, so a weight other than 1 is
+// planted here to show that the weight, not the steps alone, decides.
+TEST(SssPlan, TheChainIsTheIrradianceOnlyWhenNothingBlursAndTheWeightIsWhole) {
+    auto far = planSss(headScene(), {kHeadBounds}, viewFrom(4.0f));
+    auto middle = planSss(headScene(), {kHeadBounds}, viewFrom(1.2f));
+    ASSERT_TRUE(far.ok() && middle.ok());
+    EXPECT_TRUE(far->chainIsIdentity());
+    EXPECT_FALSE(middle->chainIsIdentity());
+
+    glm::dvec3 sum(0.0);  // the skin profile's weights, summed here: the whole irradiance
+    for (const ProfileGaussian& g : skinProfile().gaussians()) sum += glm::dvec3(g.weight);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], 1.0, 1e-6) << c;
+
+    SssPlan darker = *far;
+    darker.slots[0].initWeight = glm::vec3(0.8f);
+    EXPECT_FALSE(darker.chainIsIdentity());
+
+    // Off screen: no slot is visible, and nothing is judged.
+    const Bounds behindCamera{glm::vec3(-0.1f, -0.1f, 1.0f), glm::vec3(0.1f, 0.1f, 1.2f)};
+    auto behind = planSss(headScene(), {behindCamera}, viewFrom(0.45f));
+    ASSERT_TRUE(behind.ok());
+    EXPECT_FALSE(behind->chainIsIdentity());
+}
+
 TEST(SssPlan, SkippedGaussiansKeepTheirEnergyInTheIdentityTerm) {
     for (float distance : {0.3f, 1.0f, 3.0f, 20.0f}) {
         auto plan = planSss(headScene(), {kHeadBounds}, viewFrom(distance));
