@@ -318,6 +318,12 @@ TEST(QualityTune, CheapestWithinTheBudgetElseTheFinest) {
     EXPECT_EQ(bench::cheapestWithin(3.0f, tied, 0.01, 4.0).choice, close);    // 2.2 <= 1.15 x 2.0
     const std::vector<bench::TuneMeasurement> apart = {{middle, 0.008, 2.0, 6.0}, {close, 0.004, 2.4, 6.0}};
     EXPECT_EQ(bench::cheapestWithin(3.0f, apart, 0.01, 4.0).choice, middle);  // 2.4 > 2.3
+    // Equal losses (the same image under two names): the first candidate, whatever
+    // their timings, so that a rerun or a shard picks the same name.
+    // The first is taken even when its own time is outside the tie (2.6 > 1.15 x 2.0):
+    // its image was measured at 2.0.
+    const std::vector<bench::TuneMeasurement> same = {{middle, 0.004, 2.6, 6.0}, {close, 0.004, 2.0, 6.0}};
+    EXPECT_EQ(bench::cheapestWithin(3.0f, same, 0.01, 4.0).choice, middle);
     // The finest (loss 0) within the tie of the cheapest candidate: the finest.
     EXPECT_EQ(bench::cheapestWithin(3.0f, tied, 0.01, 2.25).choice, SssChoice::finest());
     // 5 x 3 Gaussian chains, 4 separable and 4 disk sample counts, the pre-integrated table.

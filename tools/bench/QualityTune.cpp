@@ -60,6 +60,16 @@ QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>&
     row.loss = 0.0;
     row.sssMs = finestSssMs;
     row.finestSssMs = finestSssMs;
+    // Equal losses are the same image (several `gaussians` choices whose every
+    // Gaussian is under min_width_px: no pass of theirs runs), so the same
+    // work: each counts at the least time measured for its image, and the
+    // first in candidate order is taken, not the luckier timing, so that
+    // reruns and shards agree.
+    const auto imageMs = [&](const TuneMeasurement& m) {
+        double ms = m.sssMs;
+        for (const TuneMeasurement& other : measured) ms = other.loss == m.loss ? std::min(ms, other.sssMs) : ms;
+        return ms;
+    };
     double cheapestMs = finestSssMs;  // the finest is a candidate too, with loss 0
     for (const TuneMeasurement& m : measured) {
         if (m.loss <= budget) cheapestMs = std::min(cheapestMs, m.sssMs);
@@ -68,8 +78,8 @@ QualityRow cheapestWithin(float pixelsPerMm, const std::vector<TuneMeasurement>&
     if (finestSssMs <= tiedMs) return row;  // nothing clearly cheaper than the finest: it has the lowest loss
     const TuneMeasurement* best = nullptr;  // some candidate is at cheapestMs, so one is found
     for (const TuneMeasurement& m : measured) {
-        if (m.loss > budget || m.sssMs > tiedMs) continue;
-        if (!best || m.loss < best->loss || (m.loss == best->loss && m.sssMs < best->sssMs)) best = &m;
+        if (m.loss > budget || imageMs(m) > tiedMs) continue;
+        if (!best || m.loss < best->loss) best = &m;
     }
     row.choice = best->choice;
     row.loss = best->loss;
