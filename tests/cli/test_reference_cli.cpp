@@ -94,7 +94,8 @@ TEST(ReferenceCli, CompareRefusesAReferenceOfAnotherScene) {
     const ProcessResult other = runProcess(kDermis + " compare " + slab + compare + dir.file("ref.exr") + " --out " + dir.file("other"));
     EXPECT_EQ(other.exitCode, 1) << other.err;
     EXPECT_NE(other.err.find(dir.file("ref.exr") + ": a reference of another scene: its camera"), std::string::npos) << other.err;
-    EXPECT_FALSE(std::filesystem::exists(dir.file("other") + "/metrics.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("other"))) << "the folder it made for its outputs stays";
+    EXPECT_TRUE(std::filesystem::exists(dir.file("same") + "/metrics.json"));
 
     const ProcessResult mix = runProcess(kDermis + " compare " + furnace + compare + dir.file("ref.exr") +
                                          " --set sss.mix=0.3 --out " + dir.file("mix"));

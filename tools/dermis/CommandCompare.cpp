@@ -155,10 +155,11 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     if (!options.ok()) return usageError(options.error());
     log::setQuiet(args->flags.count("quiet") > 0);
 
-    std::error_code ec;
-    std::filesystem::create_directories(options->outDir, ec);
-    if (ec || !std::filesystem::is_directory(options->outDir))
-        return failure(makeError(options->outDir.string(), "cannot create the directory"));
+    // Every file of the command, or none (docs/cli.md, "Outputs"); the folder
+    // exists from here on (--errors computes its references into it) and goes
+    // again, if this made it, when the command fails.
+    OutputFiles outputs;
+    if (Status prepared = outputs.prepareDirectory(options->outDir.string()); !prepared.ok()) return failure(prepared.error());
     auto session = Session::open(options->scenePath, options->overrides, options->backend, options->glDebug);
     if (!session.ok()) return failure(session.error());
     std::optional<Image> reference;
@@ -173,7 +174,6 @@ int runCompare(const std::vector<std::string>& rawArgs) {
     std::optional<ImageDifference> difference;
     auto metrics = compareMetrics(*options, *session, *modes, reference, &heatmapScaleMax, &difference);
     if (!metrics.ok()) return failure(metrics.error());
-    OutputFiles outputs;  // every file of the command, or none (docs/cli.md, "Outputs")
     if (Status staged = stageCompareOutputs(*options, *modes, *metrics, heatmapScaleMax, outputs); !staged.ok())
         return failure(staged.error());
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
