@@ -6,6 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
+#include <set>
+#include <system_error>
 #include <utility>
 
 namespace dermis::reference {
@@ -19,10 +22,28 @@ std::string hex(uint64_t value) {
 
 uint64_t digest(const std::string& text) { return fnv1a(text.data(), text.size()); }
 
+// A file the scene names, one way whatever the working directory or the
+// scene path's form (relative or absolute) the command was given.
+void canonicalPaths(nlohmann::json& value) {
+    static const std::set<std::string> kPathKeys = {"gltf",         "albedo_map",   "normal_map", "roughness_map",
+                                                    "specular_map", "scatter_map", "source"};
+    if (!value.is_structured()) return;
+    for (auto item = value.begin(); item != value.end(); ++item) {
+        const bool pathKey = value.is_object() && kPathKeys.count(item.key()) > 0;
+        if (pathKey && item->is_string() && !item->get<std::string>().empty() && !isBuiltInEnvironment(item->get<std::string>())) {
+            std::error_code ignored;
+            *item = std::filesystem::weakly_canonical(std::filesystem::absolute(item->get<std::string>()), ignored).generic_string();
+        } else {
+            canonicalPaths(*item);
+        }
+    }
+}
+
 std::vector<std::pair<std::string, std::string>> parts(const Scene& scene) {
     Scene unplaced = scene;
-    unplaced.path.clear();  // file paths as resolved, not relative to where the scene file lies
-    const nlohmann::json document = nlohmann::json::parse(sceneToJson(unplaced));
+    unplaced.path.clear();  // file paths as resolved (from the working directory), made canonical below
+    nlohmann::json document = nlohmann::json::parse(sceneToJson(unplaced));
+    canonicalPaths(document);
     const auto section = [&](const char* key) { return document.contains(key) ? document[key].dump() : std::string(); };
     const RenderSettings& s = scene.settings;
     const nlohmann::json settings = {{"ambient", {s.ambient.x, s.ambient.y, s.ambient.z}},
