@@ -13,13 +13,21 @@ struct AxisTaps {
 };
 
 AxisTaps axisTaps(float coordinate, int size, TextureWrap wrap) {
-    // Repeat first, so that huge coordinates keep their precision and fit an int.
-    const float inRange = wrap == TextureWrap::Repeat ? coordinate - std::floor(coordinate) : std::clamp(coordinate, 0.0f, 1.0f);
+    // Into one period first, so that huge coordinates keep their precision and
+    // fit an int: [0, 1) for repeat, [0, 2) for mirrored repeat (its period).
+    float inRange = std::clamp(coordinate, 0.0f, 1.0f);
+    if (wrap == TextureWrap::Repeat) inRange = coordinate - std::floor(coordinate);
+    if (wrap == TextureWrap::MirroredRepeat) inRange = coordinate - 2.0f * std::floor(coordinate * 0.5f);
     const float texel = inRange * float(size) - 0.5f;
     const float firstTexel = std::floor(texel);
     const int first = static_cast<int>(firstTexel);
     const auto index = [&](int i) {
         if (wrap == TextureWrap::ClampToEdge) return std::clamp(i, 0, size - 1);
+        if (wrap == TextureWrap::MirroredRepeat) {  // texels 0..size-1, then size-1..0, repeating
+            const int period = 2 * size;
+            const int r = ((i % period) + period) % period;
+            return r < size ? r : period - 1 - r;
+        }
         const int r = i % size;
         return r < 0 ? r + size : r;
     };

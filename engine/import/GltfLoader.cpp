@@ -38,6 +38,16 @@
 namespace dermis {
 namespace {
 
+// glTF 2.0 §5.26: a sampler's wrapS / wrapT, whose values are OpenGL's enums.
+std::optional<TextureWrap> textureWrapOf(int glTFValue) {
+    switch (glTFValue) {
+        case 10497: return TextureWrap::Repeat;
+        case 33071: return TextureWrap::ClampToEdge;
+        case 33648: return TextureWrap::MirroredRepeat;
+        default: return std::nullopt;
+    }
+}
+
 namespace fs = std::filesystem;
 
 constexpr size_t kMaxFileBytes = size_t(1) << 31;
@@ -264,6 +274,7 @@ public:
           mAccessors(gltf, mPath) {}
 
     Result<Model> convert() {
+        if (Status status = checkVersion(); !status) return status.error();
         if (Status status = checkExtensions(); !status) return status.error();
         if (GltfRigBuilder::wanted(mGltf)) {
             mRig.emplace(mGltf, mAccessors, mPath);
@@ -279,6 +290,19 @@ public:
 
 private:
     Error fail(const std::string& what) const { return makeError(mPath, what); }
+
+    // glTF 2.0 §3.2: asset.version is the major.minor the file follows and
+    // asset.minVersion the least a loader must support; this one reads 2.0.
+    Status checkVersion() const {
+        const std::string& version = mGltf.asset.version;
+        if (version.rfind("2.", 0) != 0)
+            return fail("glTF " + (version.empty() ? std::string("of no asset.version") : version) +
+                        " is not supported: Dermis reads glTF 2.0 (convert the file, e.g. with Blender)");
+        const std::string& minVersion = mGltf.asset.minVersion;
+        if (!minVersion.empty() && minVersion != "2.0")
+            return fail("asset.minVersion " + minVersion + ": Dermis reads glTF 2.0");
+        return success();
+    }
 
     // Required extensions it cannot honour are refused or named; optional
     // ones it ignores are named in one warning.
@@ -647,14 +671,15 @@ private:
             int texCoord;
             ColourSpace colourSpace;
             Image* out;
+            TextureWraps* wrap;
         };
         std::vector<Map> maps = {
             Map{"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, ColourSpace::Srgb,
-                &out.albedoMap},
+                &out.albedoMap, &out.albedoWrap},
             Map{"normalTexture", material.normalTexture.index, material.normalTexture.texCoord, ColourSpace::Linear,
-                &out.normalMap},
+                &out.normalMap, &out.normalWrap},
             Map{"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                ColourSpace::Linear, &out.metallicRoughnessMap}};
+                ColourSpace::Linear, &out.metallicRoughnessMap, &out.metallicRoughnessWrap}};
         // The surface beneath: KHR_materials_diffuse_transmission (factor, texture A),
         // KHR_materials_volume (thickness, texture G), KHR_materials_transmission (factor).
         auto extension = [&](const char* name) -> const tinygltf::Value* {
@@ -665,20 +690,21 @@ private:
             return object.Has(key) && object.Get(key).IsNumber() ? static_cast<float>(object.Get(key).GetNumberAsDouble())
                                                                  : fallback;
         };
-        auto textureOf = [&](const tinygltf::Value& object, const char* key, const char* role, Image* image) {
+        auto textureOf = [&](const tinygltf::Value& object, const char* key, const char* role, Image* image, TextureWraps* wrap) {
             if (!object.Has(key) || !object.Get(key).IsObject()) return;
             const tinygltf::Value& info = object.Get(key);
             const int texture = info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
             const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
-            maps.push_back(Map{role, texture, texCoord, ColourSpace::Linear, image});
+            maps.push_back(Map{role, texture, texCoord, ColourSpace::Linear, image, wrap});
         };
         if (const tinygltf::Value* diffuse = extension("KHR_materials_diffuse_transmission")) {
             out.diffuseTransmission = std::clamp(number(*diffuse, "diffuseTransmissionFactor", 0.0f), 0.0f, 1.0f);
-            textureOf(*diffuse, "diffuseTransmissionTexture", "diffuseTransmissionTexture", &out.diffuseTransmissionMap);
+            textureOf(*diffuse, "diffuseTransmissionTexture", "diffuseTransmissionTexture", &out.diffuseTransmissionMap,
+                      &out.scatterWrap);
         }
         if (const tinygltf::Value* volume = extension("KHR_materials_volume")) {
             out.thicknessFactor = std::max(number(*volume, "thicknessFactor", 0.0f), 0.0f);
-            textureOf(*volume, "thicknessTexture", "thicknessTexture", &out.thicknessMap);
+            textureOf(*volume, "thicknessTexture", "thicknessTexture", &out.thicknessMap, &out.thicknessWrap);
         }
         if (const tinygltf::Value* transmission = extension("KHR_materials_transmission"))
             out.transmission = std::clamp(number(*transmission, "transmissionFactor", 0.0f), 0.0f, 1.0f);
@@ -691,6 +717,21 @@ private:
             if (static_cast<size_t>(map.texture) >= mGltf.textures.size())
                 return fail(where + ": texture " + std::to_string(map.texture) + " is out of range");
             const tinygltf::Texture& texture = mGltf.textures[static_cast<size_t>(map.texture)];
+            if (texture.sampler >= 0) {
+                if (static_cast<size_t>(texture.sampler) >= mGltf.samplers.size())
+                    return fail(where + ": texture " + std::to_string(map.texture) + "'s sampler " +
+                                std::to_string(texture.sampler) + " is out of range");
+                const tinygltf::Sampler& sampler = mGltf.samplers[static_cast<size_t>(texture.sampler)];
+                TextureWrap* axes[] = {&map.wrap->s, &map.wrap->t};
+                const int values[] = {sampler.wrapS, sampler.wrapT};
+                for (int axis = 0; axis < 2; ++axis) {
+                    auto wrap = textureWrapOf(values[axis]);
+                    if (!wrap)
+                        return fail("sampler " + std::to_string(texture.sampler) + ": " + (axis == 0 ? "wrapS " : "wrapT ") +
+                                    std::to_string(values[axis]) + " is not 33071, 33648 or 10497 (glTF 2.0 §5.26)");
+                    *axes[axis] = *wrap;
+                }
+            }
             const int source = texture.source;
             // KTX2 (KHR_texture_basisu): no Debian package decodes it. Without a PNG or JPEG
             // fallback in `source`, the map is skipped with one warning and the material's

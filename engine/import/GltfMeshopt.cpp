@@ -48,7 +48,9 @@ Status setAsideMeshoptFallbacks(nlohmann::json& document, MeshoptFallbacks& fall
     nlohmann::json& buffers = document["buffers"];
     for (size_t i = 0; i < buffers.size(); ++i) {
         nlohmann::json& buffer = buffers[i];
-        if (!buffer.is_object() || buffer.contains("uri")) continue;
+        // With or without a `uri` (gltfpack -cf writes a .fallback.bin): Dermis
+        // decodes every view into it and never reads the file, which may be absent.
+        if (!buffer.is_object()) continue;
         const auto extensions = buffer.find("extensions");
         if (extensions == buffer.end() || !extensions->is_object()) continue;
         const auto extension = extensions->find(kExtension);

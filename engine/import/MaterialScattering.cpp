@@ -54,7 +54,7 @@ void decideScattering(const Character& character, size_t index, ModelMaterial& m
     } else if (material.diffuseTransmission >= 0.0f) {
         material.profile = material.diffuseTransmission > 0.0f ? character.material.profile : std::string(kOpaqueProfile);
         material.scatter = material.diffuseTransmission;
-        material.scatterMap = std::move(material.diffuseTransmissionMap);  // read nowhere else
+        material.scatterMap = std::move(material.diffuseTransmissionMap);  // read nowhere else; its sampler is scatterWrap
         material.scatterReason = "KHR_materials_diffuse_transmission";
     } else if (material.alphaMode != "OPAQUE") {
         makeOpaque(material, "alphaMode " + material.alphaMode);

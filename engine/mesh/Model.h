@@ -7,6 +7,7 @@
 
 #include "anim/Rig.h"
 #include "core/Image.h"
+#include "core/ImageSampling.h"
 #include "mesh/Mesh.h"
 
 #include <glm/glm.hpp>
@@ -28,6 +29,8 @@ struct ModelMaterial {
     Image metallicRoughnessMap;           // glTF convention: G = roughness, B = metallic, linear
     Image roughnessMap;                   // the scene's roughness_map: R = Beckmann m, linear
     Image specularMap;                    // the scene's specular_map: R multiplies rho_s, linear
+    // The file's samplers of its maps (the scene's own maps repeat).
+    TextureWraps albedoWrap, normalWrap, metallicRoughnessWrap, scatterWrap, thicknessWrap;
 
     // What the file says about the surface beneath (glTF 2.0 §3.9.6 and the
     // KHR_materials_* extensions), for import/MaterialScattering.h to decide

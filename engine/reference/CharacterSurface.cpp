@@ -47,9 +47,9 @@ Result<CharacterSurface> CharacterSurface::create(const Character& character, Mo
         ModelMaterial& source = model.materials[m];
         const Material& scene = characterMaterial(character, source.name, m);
         SurfaceMaterial material;
-        material.albedoMap = MipPyramid(decodeToLinear(source.albedoMap));
-        material.normalMap = MipPyramid(std::move(source.normalMap));
-        material.scatterMap = MipPyramid(std::move(source.scatterMap));
+        material.albedoMap = MipPyramid(decodeToLinear(source.albedoMap), source.albedoWrap);
+        material.normalMap = MipPyramid(std::move(source.normalMap), source.normalWrap);
+        material.scatterMap = MipPyramid(std::move(source.scatterMap), source.scatterWrap);
         material.albedoTint = scene.albedo * glm::vec3(source.baseColourFactor);
         material.roughness = scene.roughness;
         material.rhoS = scene.rhoS;
@@ -174,6 +174,8 @@ void CharacterSurface::hashContent(ContentHash& hash) const {
             return;
         }
         hash.image(map.level(0));  // the other levels follow from it
+        const int wraps[] = {int(map.wraps().s), int(map.wraps().t)};
+        hash.bytes(wraps, sizeof wraps);
     };
     for (const SurfaceMaterial& m : mMaterials) {
         hashMap(m.albedoMap);

@@ -25,7 +25,7 @@ Image halve(const Image& source) {
 
 }  // namespace
 
-MipPyramid::MipPyramid(Image level0) {
+MipPyramid::MipPyramid(Image level0, TextureWraps wraps) : mWraps(wraps) {
     if (level0.empty()) return;
     mLevels.push_back(std::move(level0));
     while (mLevels.back().width > 1 || mLevels.back().height > 1) mLevels.push_back(halve(mLevels.back()));
@@ -39,22 +39,22 @@ float MipPyramid::levelOfDetail(const MapFootprint& footprint) const {
 
 glm::vec4 MipPyramid::sample(const glm::vec2& uv, const glm::vec4& fallback) const {
     if (empty()) return fallback;
-    return sampleBilinear(mLevels[0], uv, fallback);
+    return sampleBilinear(mLevels[0], uv, fallback, mWraps.s, mWraps.t);
 }
 
 glm::vec4 MipPyramid::sample(const glm::vec2& uv, const MapFootprint& footprint, const glm::vec4& fallback) const {
     if (empty()) return fallback;
     const float lambda = levelOfDetail(footprint);
     // NaN (a degenerate footprint) reads level 0, like a zero footprint; +inf the last level.
-    if (!(lambda > 0.0f)) return sampleBilinear(mLevels[0], uv, fallback);
+    if (!(lambda > 0.0f)) return sampleBilinear(mLevels[0], uv, fallback, mWraps.s, mWraps.t);
     const float last = float(mLevels.size() - 1);
     const float d = std::min(lambda, last);
     const auto lower = static_cast<size_t>(std::floor(d));
     const size_t upper = std::min(lower + 1, mLevels.size() - 1);
     const float blend = d - float(lower);
-    const glm::vec4 a = sampleBilinear(mLevels[lower], uv, fallback);
+    const glm::vec4 a = sampleBilinear(mLevels[lower], uv, fallback, mWraps.s, mWraps.t);
     if (blend == 0.0f || upper == lower) return a;
-    return glm::mix(a, sampleBilinear(mLevels[upper], uv, fallback), blend);
+    return glm::mix(a, sampleBilinear(mLevels[upper], uv, fallback, mWraps.s, mWraps.t), blend);
 }
 
 }  // namespace dermis::reference

@@ -1,7 +1,7 @@
 #pragma once
 // A map's mip pyramid and its trilinear read, as the renderer's textures are
 // sampled (engine/render/GpuScene.cpp: glGenerateTextureMipmap, then
-// GL_LINEAR_MIPMAP_LINEAR with GL_REPEAT). Levels halve (floor) down to 1x1;
+// GL_LINEAR_MIPMAP_LINEAR with the map's wrap modes). Levels halve (floor) down to 1x1;
 // each texel of level k+1 is a bilinear tap of level k at its centre, which for
 // even sizes is the 2x2 box of glGenerateMipmap. Level 0 is the image as given
 // (sRGB maps are decoded first, as the GPU filters sRGB textures in linear).
@@ -9,6 +9,7 @@
 // longer of the two pixel-step UV derivatives, in level-0 texels.
 
 #include "core/Image.h"
+#include "core/ImageSampling.h"
 
 #include <glm/glm.hpp>
 
@@ -25,11 +26,12 @@ struct MapFootprint {
 class MipPyramid {
 public:
     MipPyramid() = default;
-    explicit MipPyramid(Image level0);
+    explicit MipPyramid(Image level0, TextureWraps wraps = {});
 
     bool empty() const { return mLevels.empty(); }
     size_t levelCount() const { return mLevels.size(); }
     const Image& level(size_t i) const { return mLevels[i]; }
+    const TextureWraps& wraps() const { return mWraps; }
 
     // lambda for this footprint (unclamped; <= 0 reads level 0).
     float levelOfDetail(const MapFootprint& footprint) const;
@@ -40,6 +42,7 @@ public:
 
 private:
     std::vector<Image> mLevels;
+    TextureWraps mWraps;
 };
 
 }  // namespace dermis::reference

@@ -120,6 +120,27 @@ GpuRig uploadRig(const Rig& rig, const MeshData& mesh, const std::string& owner)
     return gpu;
 }
 
+// The file's wrap modes on a texture of its maps (glTF 2.0 sampler.wrapS/T;
+// the values are OpenGL's enums).
+GLint glWrap(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::Repeat: return GL_REPEAT;
+        case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    }
+    return GL_REPEAT;
+}
+
+void applyWrap(const gl::Texture& texture, const TextureWraps& wrap) {
+    if (!texture.isValid()) return;
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, glWrap(wrap.s));
+    glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, glWrap(wrap.t));
+}
+
+void applyWrap(const GpuNormalMaps& maps, const TextureWraps& wrap) {
+    for (const gl::Texture* texture : {&maps.normalMap, &maps.leanMap1, &maps.leanMap2}) applyWrap(*texture, wrap);
+}
+
 // Trilinear filtering and wrapping, as glTF samplers default to.
 gl::Texture createMipmappedTexture(GLsizei levels, GLenum internalFormat, int width, int height, const std::string& label) {
     gl::Texture texture = gl::createTexture(GL_TEXTURE_2D, label);
@@ -154,20 +175,29 @@ Result<GpuMaterial> uploadMaterial(const ModelMaterial& material) {
     gpu.roughnessFactor = material.roughnessFactor;
     gpu.scatter = material.profile.empty() ? -1.0f : material.scatter;
     gpu.thicknessMm = material.thicknessMm;
-    const std::pair<const Image*, gl::Texture*> maps[] = {{&material.albedoMap, &gpu.albedoMap},
-                                                          {&material.metallicRoughnessMap, &gpu.metallicRoughnessMap},
-                                                          {&material.roughnessMap, &gpu.roughnessMap},
-                                                          {&material.specularMap, &gpu.specularMap},
-                                                          {&material.scatterMap, &gpu.scatterMap},
-                                                          {&material.thicknessMap, &gpu.thicknessMap}};
+    const TextureWraps repeat;  // the scene's own grey maps
+    const struct {
+        const Image* image;
+        gl::Texture* texture;
+        const TextureWraps* wrap;
+        const char* name;
+    } maps[] = {{&material.albedoMap, &gpu.albedoMap, &material.albedoWrap, "albedo"},
+                {&material.metallicRoughnessMap, &gpu.metallicRoughnessMap, &material.metallicRoughnessWrap, "metallic-roughness"},
+                {&material.roughnessMap, &gpu.roughnessMap, &repeat, "roughness"},
+                {&material.specularMap, &gpu.specularMap, &repeat, "specular"},
+                {&material.scatterMap, &gpu.scatterMap, &material.scatterWrap, "scatter"},
+                {&material.thicknessMap, &gpu.thicknessMap, &material.thicknessWrap, "thickness"}};
     const std::string owner = material.name.empty() ? "material (unnamed)" : "material '" + material.name + "'";
-    const char* const mapNames[] = {"albedo", "metallic-roughness", "roughness", "specular", "scatter", "thickness"};
-    for (size_t i = 0; i < std::size(maps); ++i)
-        if (!maps[i].first->empty()) *maps[i].second = uploadImage(*maps[i].first, owner + ": " + mapNames[i] + " map");
+    for (const auto& map : maps) {
+        if (map.image->empty()) continue;
+        *map.texture = uploadImage(*map.image, owner + ": " + map.name + " map");
+        applyWrap(*map.texture, *map.wrap);
+    }
     // The normal map goes up with the LEAN maps baked from it.
     if (!material.normalMap.empty()) {
         auto normals = uploadNormalMaps(material.normalMap, owner);
         if (!normals.ok()) return normals.error();
+        applyWrap(*normals, material.normalWrap);
         gpu.normalMap = std::move(normals->normalMap);
         gpu.leanMap1 = std::move(normals->leanMap1);
         gpu.leanMap2 = std::move(normals->leanMap2);
@@ -282,6 +312,7 @@ Result<SharedUpload> makeSharedUpload(const Model& model) {
                                                                           " of material " + std::to_string(m));
                 if (!uploaded.ok()) return uploaded.error();
                 maps = std::move(*uploaded);
+                if (m < model.materials.size()) applyWrap(maps, model.materials[m].normalWrap);
             }
             lod.normalMaps->push_back(std::move(maps));
         }

@@ -101,6 +101,20 @@ TEST_F(CompressedGltf, GltfpackOutputRendersAsItsSource) {
     }
 }
 
+// gltfpack -cf writes the uncompressed data to a fallback buffer file for
+// loaders without EXT_meshopt_compression; Dermis decodes and never reads it, so
+// the file may be left out (it was refused: "buffer 1 ... not found").
+TEST_F(CompressedGltf, AMeshoptFallbackFileIsNotNeeded) {
+    ASSERT_EQ(runProcess("gltfpack -i " + mDir.file("cylinder.gltf") + " -o " + mDir.file("cylinder_cf.glb") + " -cf").exitCode, 0);
+    ASSERT_TRUE(std::filesystem::exists(mDir.file("cylinder_cf.fallback.bin")));
+    const dermis::Image with = render("cylinder_cf.glb", "with_fallback");
+    std::filesystem::remove(mDir.file("cylinder_cf.fallback.bin"));
+    const dermis::Image without = render("cylinder_cf.glb", "without_fallback");
+    ASSERT_GT(litTexels(with), 300u);
+    ASSERT_EQ(without.texels.size(), with.texels.size());
+    EXPECT_EQ(meanDifference255(without, with), 0.0);
+}
+
 TEST_F(CompressedGltf, CorruptMeshoptDataIsRefusedNamingTheView) {
     ASSERT_EQ(runProcess("gltfpack -i " + mDir.file("cylinder.gltf") + " -o " + mDir.file("c.gltf") + " -c").exitCode, 0);
     // Overwrite the start of the compressed buffer (c.bin, the same size): the first view's

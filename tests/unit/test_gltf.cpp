@@ -1015,6 +1015,57 @@ TEST_F(GltfTest, TextureTransformFollowsTheExtensionsWorkedExample) {
     }
 }
 
+// glTF 2.0 §5.26: a texture's sampler says how its map wraps; the loader
+// keeps it for the GPU and the reference (it used to make every map repeat).
+// A sampler index out of range, or a wrap value that is none of the three, is refused.
+TEST_F(GltfTest, SamplersWrapModesReachTheMaterial) {
+    writeTestPng(path("albedo.png"));
+    GltfBuilder b = texturedQuad(json::object());
+    b.doc["extensionsUsed"] = json::array();
+    b.doc["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};
+    b.doc["textures"][0]["sampler"] = 0;
+    b.writeGltf(path("wrapped.gltf"));
+    Result<Model> model = loadGltf(path("wrapped.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    EXPECT_EQ(model->materials[0].albedoWrap.s, TextureWrap::ClampToEdge);
+    EXPECT_EQ(model->materials[0].albedoWrap.t, TextureWrap::MirroredRepeat);
+
+    GltfBuilder plain = texturedQuad(json::object());
+    plain.doc["extensionsUsed"] = json::array();
+    plain.writeGltf(path("plain.gltf"));
+    Result<Model> repeating = loadGltf(path("plain.gltf").string());
+    ASSERT_TRUE(repeating) << repeating.error().message();
+    EXPECT_EQ(repeating->materials[0].albedoWrap, TextureWraps{});  // no sampler: repeat
+
+    b.doc["textures"][0]["sampler"] = 5;
+    b.writeGltf(path("far.gltf"));
+    Result<Model> far = loadGltf(path("far.gltf").string());
+    ASSERT_FALSE(far);
+    EXPECT_NE(far.error().message().find("sampler 5 is out of range"), std::string::npos) << far.error().message();
+    b.doc["textures"][0]["sampler"] = 0;
+    b.doc["samplers"][0]["wrapS"] = 9729;  // GL_LINEAR: a filter, not a wrap
+    b.writeGltf(path("odd.gltf"));
+    Result<Model> odd = loadGltf(path("odd.gltf").string());
+    ASSERT_FALSE(odd);
+    EXPECT_NE(odd.error().message().find("sampler 0: wrapS 9729 is not 33071, 33648 or 10497"), std::string::npos)
+        << odd.error().message();
+}
+
+// glTF 2.0 §3.2: a file of another version, or one asking for a later minor
+// version, is refused in one line (a 1.0 file used to read "no triangles").
+TEST_F(GltfTest, OtherVersionsAreRefusedByName) {
+    for (const auto& [asset, message] : {std::pair{json{{"version", "1.0"}}, "glTF 1.0 is not supported"},
+                                         std::pair{json{{"version", "2.0"}, {"minVersion", "2.1"}}, "asset.minVersion 2.1"}}) {
+        GltfBuilder b = quadBuilder(kUnsignedShort);
+        b.doc["asset"] = asset;
+        b.writeGltf(path("version.gltf"));
+        Result<Model> model = loadGltf(path("version.gltf").string());
+        ASSERT_FALSE(model) << asset.dump();
+        EXPECT_NE(model.error().message().find(std::string("version.gltf: ") + message), std::string::npos)
+            << model.error().message();
+    }
+}
+
 TEST_F(GltfTest, QuantizedUvsAreScaledBackByTheirTextureTransform) {
     writeTestPng(path("albedo.png"));
     // As gltfpack writes them: UVs as normalised uint16 of (uv - offset) / scale, with the

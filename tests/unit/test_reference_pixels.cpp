@@ -217,3 +217,22 @@ TEST(ReferencePixels, SubSamplesConvergeOnTheEdgeCoverage) {
     }
     EXPECT_LT(previous, 0.03);  // 64 samples: a 1/64-area grid cell per sample, ~0.015 expected
 }
+
+// The three wrap modes against their definitions (OpenGL 4.5 §8.14.2): a row of
+// four texels 0, 1, 2, 3 read at texel centres beyond [0, 1]. Repeat starts
+// again at 0, clamp stays at the last texel, mirrored repeat runs back 3, 2, 1, 0.
+TEST(ReferencePixels, MapsWrapAsTheirSamplersSay) {
+    Image row;
+    row.width = 4;
+    row.height = 1;
+    for (int i = 0; i < 4; ++i) row.texels.push_back(glm::vec4(float(i)));
+    const float centreBeyond[] = {1.125f, 1.375f, 1.625f, 1.875f, -0.125f};  // texels 4, 5, 6, 7 and -1
+    const float repeat[] = {0, 1, 2, 3, 3}, clamp[] = {3, 3, 3, 3, 0}, mirrored[] = {3, 2, 1, 0, 0};
+    for (auto [wrap, expected] : {std::pair{TextureWrap::Repeat, repeat}, std::pair{TextureWrap::ClampToEdge, clamp},
+                                  std::pair{TextureWrap::MirroredRepeat, mirrored}}) {
+        const reference::MipPyramid map(row, TextureWraps{wrap, TextureWrap::Repeat});
+        for (int k = 0; k < 5; ++k)
+            EXPECT_NEAR(map.sample(glm::vec2(centreBeyond[k], 0.5f), glm::vec4(-1.0f)).r, expected[k], 1e-5f)
+                << int(wrap) << " at u " << centreBeyond[k];
+    }
+}
