@@ -2,6 +2,7 @@
 
 #include "core/Log.h"
 #include "mesh/Tangents.h"
+#include "scene/JsonReader.h"
 
 // The one translation unit that compiles tinygltf. Images are not decoded by
 // tinygltf: its loader callback only keeps the encoded bytes of data URIs, and
@@ -301,6 +302,9 @@ private:
         const std::string& minVersion = mGltf.asset.minVersion;
         if (!minVersion.empty() && minVersion != "2.0")
             return fail("asset.minVersion " + minVersion + ": Dermis reads glTF 2.0");
+        if (mGltf.defaultScene >= static_cast<int>(mGltf.scenes.size()))  // §5.1: scene must index scenes
+            return fail("scene " + std::to_string(mGltf.defaultScene) + " is out of range (the file has " +
+                        std::to_string(mGltf.scenes.size()) + " scenes)");
         return success();
     }
 
@@ -593,6 +597,11 @@ private:
         if (info.count != vertexCount)
             return fail(where + ": COLOR_0 has " + std::to_string(info.count) + " elements, POSITION has " +
                         std::to_string(vertexCount));
+        const bool integer = info.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             info.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        if (integer && !info.normalized)  // read as they are, colours would reach 255 or 65535
+            return fail(where + ": COLOR_0 accessor " + std::to_string(accessor) +
+                        " holds unsigned integers but is not normalized (glTF 2.0 §3.7.2.1)");
         Result<std::vector<float>> values = mAccessors.readFloats(accessor, info.type, where + " COLOR_0");
         if (!values) return values.error();
         const size_t components = info.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
@@ -661,8 +670,13 @@ private:
         const tinygltf::Material& material = mGltf.materials[static_cast<size_t>(index)];
         const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
         out.name = material.name;
-        for (size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c)
-            out.baseColourFactor[static_cast<int>(c)] = static_cast<float>(pbr.baseColorFactor[c]);
+        for (size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c) {
+            const double factor = pbr.baseColorFactor[c];
+            if (!(factor >= 0.0 && factor <= 1.0))  // glTF 2.0 §5.22.1: each in [0, 1]; NaN too
+                return fail("material " + std::to_string(index) + quoted(material.name) + ": baseColorFactor[" +
+                            std::to_string(c) + "] " + formatNumberForMessage(factor) + " is outside [0, 1]");
+            out.baseColourFactor[static_cast<int>(c)] = static_cast<float>(factor);
+        }
         out.roughnessFactor = static_cast<float>(pbr.roughnessFactor);
         out.alphaMode = material.alphaMode.empty() ? "OPAQUE" : material.alphaMode;
         struct Map {

@@ -1066,6 +1066,38 @@ TEST_F(GltfTest, OtherVersionsAreRefusedByName) {
     }
 }
 
+// Values glTF 2.0 forbids, which used to load as something else: a default
+// scene out of range (scene 0 was drawn), unsigned-integer colours not
+// normalized (read up to 255, the albedo saturated), a base colour factor
+// outside [0, 1]. Each is refused in one line naming the value.
+TEST_F(GltfTest, ValuesTheSpecificationForbidsAreRefusedByName) {
+    GltfBuilder scene = quadBuilder(kUnsignedShort);
+    scene.doc["scene"] = 5;
+    scene.writeGltf(path("scene.gltf"));
+    Result<Model> wrongScene = loadGltf(path("scene.gltf").string());
+    ASSERT_FALSE(wrongScene);
+    EXPECT_NE(wrongScene.error().message().find("scene 5 is out of range (the file has 1 scenes)"), std::string::npos)
+        << wrongScene.error().message();
+
+    GltfBuilder colours = quadBuilder(kUnsignedShort);
+    const std::vector<uint8_t> bytes(16, 200);
+    colours.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = colours.accessor(bytes, kUnsignedByte, "VEC4", 4);
+    colours.writeGltf(path("colours.gltf"));
+    Result<Model> raw = loadGltf(path("colours.gltf").string());
+    ASSERT_FALSE(raw);
+    EXPECT_NE(raw.error().message().find("holds unsigned integers but is not normalized"), std::string::npos)
+        << raw.error().message();
+
+    GltfBuilder factor = quadBuilder(kUnsignedShort);
+    factor.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {5.0, 0.5, 0.5, 1.0}}}}}};
+    factor.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    factor.writeGltf(path("factor.gltf"));
+    Result<Model> bright = loadGltf(path("factor.gltf").string());
+    ASSERT_FALSE(bright);
+    EXPECT_NE(bright.error().message().find("material 0: baseColorFactor[0] 5 is outside [0, 1]"), std::string::npos)
+        << bright.error().message();
+}
+
 TEST_F(GltfTest, QuantizedUvsAreScaledBackByTheirTextureTransform) {
     writeTestPng(path("albedo.png"));
     // As gltfpack writes them: UVs as normalised uint16 of (uv - offset) / scale, with the
