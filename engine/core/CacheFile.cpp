@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -44,9 +43,7 @@ uint64_t payloadHash(const std::vector<Bytes>& parts) {
 }  // namespace
 
 std::string cacheFileName(const std::string& prefix, uint64_t key) {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(key));
-    return prefix + hex + ".bin";
+    return prefix + hex16(key) + ".bin";
 }
 
 Status writeCacheFile(const fs::path& file, const CacheFileKind& kind, uint64_t key, const std::vector<ConstBytes>& parts) {

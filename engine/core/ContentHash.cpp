@@ -2,6 +2,7 @@
 
 #include "core/Image.h"
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -45,6 +46,12 @@ uint64_t programContentHash() {
         return content.value();
     }();
     return hash;
+}
+
+std::string hex16(uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
 }
 
 }  // namespace dermis

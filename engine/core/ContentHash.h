@@ -45,4 +45,7 @@ private:
 // key that holds it goes stale with any rebuild. 0 when it cannot be read.
 uint64_t programContentHash();
 
+// A 64-bit hash as 16 lower-case hex digits: cache file names, identities.
+std::string hex16(uint64_t value);
+
 }  // namespace dermis

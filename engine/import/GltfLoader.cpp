@@ -275,7 +275,7 @@ public:
           mAccessors(gltf, mPath) {}
 
     Result<Model> convert() {
-        if (Status status = checkVersion(); !status) return status.error();
+        if (Status status = checkAsset(); !status) return status.error();
         if (Status status = checkExtensions(); !status) return status.error();
         if (GltfRigBuilder::wanted(mGltf)) {
             mRig.emplace(mGltf, mAccessors, mPath);
@@ -294,7 +294,8 @@ private:
 
     // glTF 2.0 §3.2: asset.version is the major.minor the file follows and
     // asset.minVersion the least a loader must support; this one reads 2.0.
-    Status checkVersion() const {
+    // §5.1: the default scene, when given, is one of the file's scenes.
+    Status checkAsset() const {
         const std::string& version = mGltf.asset.version;
         if (version.rfind("2.", 0) != 0)
             return fail("glTF " + (version.empty() ? std::string("of no asset.version") : version) +
@@ -302,7 +303,7 @@ private:
         const std::string& minVersion = mGltf.asset.minVersion;
         if (!minVersion.empty() && minVersion != "2.0")
             return fail("asset.minVersion " + minVersion + ": Dermis reads glTF 2.0");
-        if (mGltf.defaultScene >= static_cast<int>(mGltf.scenes.size()))  // §5.1: scene must index scenes
+        if (mGltf.defaultScene >= static_cast<int>(mGltf.scenes.size()))
             return fail("scene " + std::to_string(mGltf.defaultScene) + " is out of range (the file has " +
                         std::to_string(mGltf.scenes.size()) + " scenes)");
         return success();

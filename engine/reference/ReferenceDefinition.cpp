@@ -5,7 +5,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <system_error>
@@ -14,13 +13,7 @@
 namespace dermis::reference {
 namespace {
 
-std::string hex(uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
-}
-
-uint64_t digest(const std::string& text) { return fnv1a(text.data(), text.size()); }
+std::string digest(const std::string& text) { return hex16(fnv1a(text.data(), text.size())); }
 
 // A file the scene names, one way whatever the working directory or the
 // scene path's form (relative or absolute) the command was given.
@@ -49,9 +42,9 @@ std::vector<std::pair<std::string, std::string>> parts(const Scene& scene) {
     const nlohmann::json settings = {{"ambient", {s.ambient.x, s.ambient.y, s.ambient.z}},
                                      {"energy_conservation", s.energyConservation},
                                      {"sss", {{"enabled", s.sss.enabled}, {"width_scale", s.sss.widthScale}, {"mix", s.sss.mix}}}};
-    return {{"camera", hex(digest(section("camera")))},           {"lights", hex(digest(section("lights")))},
-            {"characters", hex(digest(section("characters")))},   {"profiles", hex(digest(section("profiles")))},
-            {"environment", hex(digest(section("environment")))}, {"settings", hex(digest(settings.dump()))}};
+    return {{"camera", digest(section("camera"))},           {"lights", digest(section("lights"))},
+            {"characters", digest(section("characters"))},   {"profiles", digest(section("profiles"))},
+            {"environment", digest(section("environment"))}, {"settings", digest(settings.dump())}};
 }
 
 }  // namespace

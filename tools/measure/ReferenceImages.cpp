@@ -62,8 +62,7 @@ Result<Image> sharedOrComputed(const std::string& identity, const reference::Ref
     if (directory.empty() || programContentHash() == 0) return compute();
     const std::string fullIdentity = identity + "\ncontent " + std::to_string(renderer.contentHash()) + " program " +
                                      std::to_string(programContentHash());
-    char name[32];
-    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(ContentHash().text(fullIdentity).value()));
+    const std::string name = hex16(ContentHash().text(fullIdentity).value());
     const std::filesystem::path image = directory / "reference" / (std::string(name) + ".exr");
     const std::filesystem::path note = directory / "reference" / (std::string(name) + ".json");
     std::error_code error;

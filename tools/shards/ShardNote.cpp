@@ -2,7 +2,6 @@
 
 #include "core/ContentHash.h"
 
-#include <cstdio>
 #include <fstream>
 
 namespace dermis::shards {
@@ -12,9 +11,7 @@ nlohmann::ordered_json shardNoteJson(const std::string& kind, const ShardSpec& s
 }
 
 std::string identityOf(const std::string& text) {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(text.data(), text.size())));
-    return hex;
+    return hex16(fnv1a(text.data(), text.size()));
 }
 
 Result<ShardNote> readShardNote(const std::string& path, const std::string& kind, const std::string& writtenBy) {

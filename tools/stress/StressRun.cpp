@@ -1,5 +1,6 @@
 #include "stress/StressRun.h"
 
+#include "core/ContentHash.h"
 #include "frame/Renderer.h"
 #include "scene/SceneLoader.h"
 #include "stress/InvariantFrame.h"
@@ -71,12 +72,6 @@ void renderCase(const StressCase& c, Scene& scene, const CaseOptions& options, C
     result.detectorSeconds = lap.next();
 }
 
-std::string hex(uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(value));
-    return text;
-}
-
 // `message` with the case's asset folder (per process) written as "ASSETS".
 std::string withoutAssetDirectory(std::string message, const std::string& directory) {
     if (directory.empty()) return message;
@@ -118,7 +113,7 @@ void StressRun::add(const CaseResult& r, const std::string& failedScenesDir, Out
     mNonFinite += r.nonFinite;
     mPlanted = mPlanted || r.planted;
     mRefused += r.refused ? 1 : 0;
-    mHashes.push_back(hex(r.hash));
+    mHashes.push_back(hex16(r.hash));
     mSetUpSeconds += r.setUpSeconds;
     mFrameSeconds += r.frameSeconds;
     mDetectorSeconds += r.detectorSeconds;
