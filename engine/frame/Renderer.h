@@ -79,6 +79,9 @@ public:
     void setWarmUpFrames(size_t frames) { mTimings.setWarmUpFrames(frames); }
     // Off: GL_TIME_ELAPSED instead of GL_TIMESTAMP pairs, so no GPU thread in a trace (what they cost: tools/benchmarks).
     void setGpuTimestamps(bool on) { mProfiler.setTimestamps(on); }
+    // Off: no glFlush at each pass's start on llvmpipe (gl/GpuProfiler.h), so passes that share a framebuffer
+    // share their time; what the flushes cost: tools/benchmarks.
+    void setGpuBatchSplit(bool on) { mProfiler.setSplitBatches(on); }
     GpuScene& gpuScene() { return mGpuScene; }
     // The environment's GPU side: its map, block and per-character transfer buffers.
     const GpuEnvironment& gpuEnvironment() const;

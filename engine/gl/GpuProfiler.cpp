@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <cstring>
 
 namespace dermis::gl {
 
@@ -46,6 +47,11 @@ void GpuProfiler::beginFrame(uint64_t frame) {
         mFreeQueries[GL_TIME_ELAPSED].push_back(warmUp);
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
     }
+    if (!mSplitBatchesKnown) {
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        mSplitBatches = renderer != nullptr && std::strstr(renderer, "llvmpipe") != nullptr;
+        mSplitBatchesKnown = true;
+    }
     if (!mClockPaired) {
         GLint counterBits = 0;
         glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &counterBits);
@@ -72,6 +78,12 @@ void GpuProfiler::beginPass(const std::string& name) {
         mActiveQuery = newQuery(GL_TIME_ELAPSED);
         glBeginQuery(GL_TIME_ELAPSED, mActiveQuery);
     }
+    // llvmpipe bins a batch's commands per 64x64 tile and runs each tile's
+    // list in turn, all passes of the batch at once; a stamp reads the time
+    // its last tile reached it. Two passes in one batch (the same
+    // framebuffer, no flush between) so read as one, the whole batch's time
+    // on the first. Ending the batch here keeps this pass out of the last one's.
+    if (mSplitBatches) glFlush();
     mPassStart = std::chrono::steady_clock::now();
 }
 

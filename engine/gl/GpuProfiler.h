@@ -41,6 +41,12 @@ public:
 
     // Off: GL_TIME_ELAPSED queries, no place in time (gpuBeginMs NaN); what the stamps cost is benchmarked against it.
     void setTimestamps(bool on) { mTimestamps = on; }
+    // On llvmpipe (found at the first frame unless set before it), each pass starts a new batch of
+    // work (glFlush) so that its stamps do not take the time of another pass that shares its framebuffer.
+    void setSplitBatches(bool on) {
+        mSplitBatches = on;
+        mSplitBatchesKnown = true;
+    }
 
     void beginFrame(uint64_t frame);
     void beginPass(const std::string& name);
@@ -66,6 +72,8 @@ private:
     std::vector<GLuint> mAllQueries;
     std::chrono::steady_clock::time_point mEpoch = std::chrono::steady_clock::now();
     bool mTimestamps = true;
+    bool mSplitBatches = false;  // glFlush at each pass's start: on llvmpipe (GpuProfiler.cpp says why)
+    bool mSplitBatchesKnown = false;
     bool mClockPaired = false;
     double mGpuToCpuMs = 0.0;  // add to a GL_TIMESTAMP in ms to get ms since mEpoch
     std::vector<PassTiming> mCompleted;

@@ -5,6 +5,9 @@
 //    time): two renderers of the default head at 640x360 taking turns frame
 //    by frame; the wall time of each frame (glFinish after it), so that
 //    whatever the queries cost anywhere is counted;
+//  - on llvmpipe, the glFlush at each pass's start that keeps passes sharing
+//    a framebuffer apart (gl/GpuProfiler.h): a third renderer, stamped
+//    without it, takes its turn with the two;
 //  - keeping the frame's samples (FrameTimings::addPassReports and
 //    addTimings): the CPU time of folding in one frame's reports and timers,
 //    timed over many frames of a real run's records.
@@ -33,21 +36,23 @@ double wallMsOfFrame(Renderer& renderer) {
 
 void timestampQueries(benchmark::State& state) {
     context();
-    std::unique_ptr<Renderer> renderers[2];
-    for (int stamped = 0; stamped < 2; ++stamped) {
+    // 0: elapsed-time queries, 1: timestamp pairs, 2: timestamp pairs without the batch split.
+    std::unique_ptr<Renderer> renderers[3];
+    for (int stamped = 0; stamped < 3; ++stamped) {
         auto renderer = Renderer::create(contentScene("default.json"));
         if (!renderer.ok()) {
             state.SkipWithError(renderer.error().message().c_str());
             return;
         }
         renderers[stamped] = std::move(*renderer);
-        renderers[stamped]->setGpuTimestamps(stamped == 1);
+        renderers[stamped]->setGpuTimestamps(stamped >= 1);
+        if (stamped == 2) renderers[stamped]->setGpuBatchSplit(false);
         for (int i = 0; i < 3; ++i) (void)wallMsOfFrame(*renderers[stamped]);  // programs, shadow maps
     }
-    std::vector<double> ms[2];
+    std::vector<double> ms[3];
     for (auto _ : state) {
         double total = 0.0;
-        for (int stamped = 0; stamped < 2; ++stamped) {
+        for (int stamped = 0; stamped < 3; ++stamped) {
             ms[stamped].push_back(wallMsOfFrame(*renderers[stamped]));
             total += ms[stamped].back();
         }
@@ -55,6 +60,7 @@ void timestampQueries(benchmark::State& state) {
     }
     recorded()["profiling/frame with elapsed-time queries"] = median(ms[0]);
     recorded()["profiling/frame with timestamp pairs"] = median(ms[1]);
+    recorded()["profiling/frame with timestamp pairs, batches not split"] = median(ms[2]);
 
     // Folding one frame in, with the run's own records replayed into a fresh FrameTimings.
     renderers[1]->finishTimings();
@@ -91,8 +97,13 @@ void printProfilingSummary() {
     std::printf("| frame timed and placed by a GL_TIMESTAMP pair per pass (%.0f passes) | %.3f | %+.2f%% |\n",
                 r.at("profiling/passes per frame"), on,
                 100.0 * (on - off) / off);
+    const double unsplit = r.at("profiling/frame with timestamp pairs, batches not split");
+    std::printf("| the same without a glFlush at each pass's start (llvmpipe's batch split) | %.3f | %+.2f%% |\n", unsplit,
+                100.0 * (unsplit - off) / off);
+    // (the flushes cost the difference of this row and the one above)
     std::printf("| keeping one frame's samples (CPU) | %.4f | %.4f%% |\n", fold, 100.0 * fold / off);
-    const double total = (on - off) / off + fold / off;
+    // The stamps against elapsed-time queries, plus the flushes against none, plus the folding.
+    const double total = (on - off) / off + (on - unsplit) / unsplit + fold / off;
     std::printf("recording every frame: %+.2f%% of the frame%s\n", 100.0 * total,
                 total < 0.01 ? " (under 1%)" : " (OVER 1%)");
 }
