@@ -1,6 +1,7 @@
 #include "import/GltfLoader.h"
 
 #include "core/Log.h"
+#include "mesh/FlatNormals.h"
 #include "mesh/Tangents.h"
 #include "scene/JsonReader.h"
 
@@ -501,6 +502,21 @@ private:
         if (mRig ? mRig->mirroredAtRest(node) : glm::determinant(glm::mat3(world)) < 0.0f)
             for (size_t i = 0; i + 2 < piece.mesh.indices.size(); i += 3)
                 std::swap(piece.mesh.indices[i + 1], piece.mesh.indices[i + 2]);
+        // Without NORMAL the primitive is drawn flat (mesh/FlatNormals.h): each
+        // triangle its own vertices, each the copy of the file's vertex named here.
+        std::vector<uint32_t> fileVertexOf;
+        if (!normals) {
+            UnweldedMesh flat = unweldWithFaceNormals(piece.mesh);
+            if (flat.mesh.vertices.size() > kMaxVertices - mModel.mesh.vertices.size())
+                return fail("the scene has more than " + std::to_string(kMaxVertices) +
+                            " vertices once the primitives without normals have a vertex per triangle corner");
+            std::vector<bool> badTangent;
+            for (uint32_t source : flat.sourceVertex) badTangent.push_back(piece.badTangent[source]);
+            piece.badTangent = std::move(badTangent);
+            piece.badNormal = std::move(flat.degenerate);
+            piece.mesh = std::move(flat.mesh);
+            fileVertexOf = std::move(flat.sourceVertex);
+        }
         repairFrames(piece);
 
         if (primitive.material >= 0 && static_cast<size_t>(primitive.material) >= mGltf.materials.size())
@@ -508,8 +524,16 @@ private:
         addSubmesh(primitive.material, piece.mesh.indices.size());
         const size_t firstVertex = mModel.mesh.vertices.size();
         append(piece.mesh);
+        if (!fileVertexOf.empty() && !colours->empty()) {
+            std::vector<glm::vec4> copied;
+            copied.reserve(fileVertexOf.size());
+            for (uint32_t source : fileVertexOf) copied.push_back((*colours)[source]);
+            *colours = std::move(copied);
+        }
         addColours(*colours, firstVertex);
-        if (mRig) return mRig->addPrimitive(node, primitive, firstVertex, vertexCount, where);
+        if (!mRig) return success();
+        if (Status status = mRig->addPrimitive(node, primitive, firstVertex, vertexCount, where); !status) return status;
+        if (!fileVertexOf.empty()) return mRig->copyVertices(firstVertex, fileVertexOf);
         return success();
     }
 

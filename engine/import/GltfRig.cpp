@@ -384,6 +384,23 @@ Status GltfRigBuilder::readMorphTargets(int node, const tinygltf::Primitive& pri
     return success();
 }
 
+Status GltfRigBuilder::copyVertices(size_t firstVertex, const std::vector<uint32_t>& source) {
+    if (mRig.morphSlots.size() * (firstVertex + source.size()) > kMaxMorphDeltas)
+        return fail("morph targets x vertices exceeds " + std::to_string(kMaxMorphDeltas) +
+                    " once the primitives without normals have a vertex per triangle corner");
+    auto copyTail = [&](auto& values) {
+        if (values.size() <= firstVertex) return;  // nothing of this primitive's (a morph attribute it lacks)
+        auto tail = values;
+        tail.erase(tail.begin(), tail.begin() + std::ptrdiff_t(firstVertex));
+        values.resize(firstVertex);
+        for (uint32_t index : source) values.push_back(tail[index]);
+    };
+    copyTail(mRig.influences);
+    for (MorphTarget& target : mRig.morphTargets)
+        for (std::vector<glm::vec3>* attribute : {&target.positions, &target.normals, &target.tangents}) copyTail(*attribute);
+    return success();
+}
+
 Rig GltfRigBuilder::finish(MeshData& mesh) {
     if (mRenormalised > 0)
         log::warn(mPath + ": the skin weights of " + std::to_string(mRenormalised) + " vertices do not sum to one (worst " +

@@ -63,6 +63,10 @@ public:
     // appended to the model's mesh at firstVertex.
     Status addPrimitive(int node, const tinygltf::Primitive& primitive, size_t firstVertex, size_t vertexCount,
                         const std::string& where);
+    // The vertices from firstVertex on, just added, become copies of them:
+    // vertex firstVertex + i copies firstVertex + source[i] (a primitive drawn
+    // flat, with a vertex per triangle corner: mesh/FlatNormals.h).
+    Status copyVertices(size_t firstVertex, const std::vector<uint32_t>& source);
     // Keeps the mesh's vertices as the bind vertices and poses the rest pose into it.
     Rig finish(MeshData& mesh);
 

@@ -324,6 +324,44 @@ TEST_F(GltfTest, GeneratesMissingNormalsAndTangents) {
     }
 }
 
+// glTF 2.0 §3.7.2.1: without NORMAL, flat normals. A unit cube of 8 shared
+// vertices and 12 triangles, stretched along x by its node, with a colour per
+// corner: every triangle gets three vertices of its own, whose normal is
+// the axis its face looks along (closed form), and each copy keeps its
+// corner's position and colour. Smooth normals (what the loader gave before)
+// point along the cube's diagonals: 0.577 from every axis.
+TEST_F(GltfTest, PrimitiveWithoutNormalsIsDrawnFlat) {
+    GltfBuilder b;
+    std::vector<float> corners, colours;
+    for (int i = 0; i < 8; ++i) {
+        const float x = float(i & 1), y = float((i >> 1) & 1), z = float((i >> 2) & 1);
+        corners.insert(corners.end(), {x, y, z});
+        colours.insert(colours.end(), {x, y, z, 1.0f});
+    }
+    // Counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
+    const std::vector<uint16_t> cube = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                                        2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+    b.doc["meshes"] = {{{"primitives",
+                         {{{"attributes", {{"POSITION", b.vec3(corners)}, {"COLOR_0", b.accessor(colours, kFloat, "VEC4", 8)}}},
+                           {"indices", b.accessor(cube, kUnsignedShort, "SCALAR", cube.size())}}}}}};
+    b.doc["nodes"] = {{{"mesh", 0}, {"scale", {2, 1, 1}}}};
+    b.writeGltf(path("cube.gltf"));
+    Result<Model> model = loadGltf(path("cube.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    ASSERT_EQ(model->mesh.vertices.size(), 36u);
+    ASSERT_EQ(model->colours.size(), 36u);
+    const glm::vec3 faceNormals[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (size_t i = 0; i < model->mesh.indices.size(); ++i) {
+        const uint32_t index = model->mesh.indices[i];
+        const Vertex& v = model->mesh.vertices[index];
+        const glm::vec3 corner(corners[3 * cube[i]], corners[3 * cube[i] + 1], corners[3 * cube[i] + 2]);
+        EXPECT_LT(glm::distance(v.normal, faceNormals[i / 6]), 1e-6f) << "corner " << i;
+        EXPECT_LT(glm::distance(v.position, corner * glm::vec3(2, 1, 1)), 1e-6f) << "corner " << i;
+        EXPECT_EQ(model->colours[index], glm::vec4(corner, 1.0f)) << "corner " << i;
+    }
+    expectFramesValid(model->mesh);
+}
+
 TEST_F(GltfTest, FileTangentsAreKeptAndOrthogonalised) {
     GltfBuilder b = quadBuilder(kUnsignedShort);
     // Slightly off the surface, and with w = -1: kept, made orthogonal, sign kept.
@@ -355,11 +393,13 @@ TEST_F(GltfTest, GlbAndExternalBinLoadTheSameMesh) {
 TEST_F(GltfTest, StripsFansAndNonTriangles) {
     GltfBuilder b;
     int positions = b.vec3(kQuadPositions);
+    int normals = b.vec3(kQuadNormals);  // without them every triangle would get vertices of its own
     int strip = b.accessor(std::vector<uint16_t>{0, 1, 3, 2}, kUnsignedShort, "SCALAR", 4);
+    const json attributes = {{"POSITION", positions}, {"NORMAL", normals}};
     b.doc["meshes"] = {{{"primitives",
-                         {{{"attributes", {{"POSITION", positions}}}, {"indices", strip}, {"mode", 5}},
-                          {{"attributes", {{"POSITION", positions}}}, {"mode", 6}},
-                          {{"attributes", {{"POSITION", positions}}}, {"mode", 1}}}}}};  // lines: skipped
+                         {{{"attributes", attributes}, {"indices", strip}, {"mode", 5}},
+                          {{"attributes", attributes}, {"mode", 6}},
+                          {{"attributes", attributes}, {"mode", 1}}}}}};  // lines: skipped
     b.doc["nodes"] = {{{"mesh", 0}}};
     b.writeGltf(path("strips.gltf"));
     Result<Model> model = loadGltf(path("strips.gltf").string());
@@ -829,6 +869,25 @@ TEST_F(GltfTest, SkinClipsAndMorphTargetsAreImported) {
     EXPECT_NEAR(glm::distance(half.positions[1], glm::vec3(1.0f, 0.5f, 0.0f)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::distance(half.positions[2], glm::vec3(1.0f, 1.5f, 0.0f)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::distance(half.positions[0], glm::vec3(0.0f)), 0.0f, 1e-6f);
+}
+
+// The skinned quad without normals: each corner copy keeps its vertex's joint,
+// so the lift clip still raises exactly the x = 1 edge.
+TEST_F(GltfTest, FlatPrimitiveCopiesKeepTheirSkinWeights) {
+    GltfBuilder b = skinnedQuad(kQuadJoints, kQuadWeights);
+    b.doc["meshes"][0]["primitives"][0]["attributes"].erase("NORMAL");
+    addLiftClip(b, 2);
+    b.writeGltf(path("flat_lift.gltf"));
+    Result<Model> model = loadGltf(path("flat_lift.gltf").string());
+    ASSERT_TRUE(model) << model.error().message();
+    ASSERT_EQ(model->mesh.vertices.size(), 6u);
+    ASSERT_EQ(model->rig.influences.size(), 6u);
+    const SkinnedVertices lifted = deformRig(model->rig, poseRig(model->rig, 0, 1.0f));
+    for (size_t v = 0; v < 6; ++v) {
+        const glm::vec3 rest = model->mesh.vertices[v].position;
+        EXPECT_NEAR(lifted.positions[v].y - rest.y, rest.x, 1e-6f) << v;  // x = 1 rises by 1, x = 0 stays
+        EXPECT_NEAR(model->mesh.vertices[v].normal.z, 1.0f, 1e-6f) << v;
+    }
 }
 
 TEST_F(GltfTest, UnskinnedMeshUnderAnAnimatedNodeMovesRigidly) {
