@@ -27,7 +27,8 @@ void main() {
     int slot = slotFromKey(key);
     vec3 weight = slot > 0 && slot <= DERMIS_MAX_PROFILES ? uProfiles.profiles[slot].initWeight : vec3(1.0);
     float scalarWeight = (weight.r + weight.g + weight.b) / 3.0;
-    oAccumulated = vec4(irradiance.rgb * weight, irradiance.a * scalarWeight);
+    // debugPlant: `dermis stress --plant-nan "sss init"` (the irradiance was sanitised by the lighting pass).
+    oAccumulated = debugPlant(vec4(irradiance.rgb * weight, irradiance.a * scalarWeight));
 #if SSS_EXTRA_TARGETS > 0
     vec4 extra = texelFetch(uExtra, pixel, 0);
     oExtraAccumulated = scalarWeight * extra;

@@ -44,10 +44,23 @@ constexpr double kMaxLightAngularDiameterDeg = 30.0;
 // precision); a field of view of 1e-10 degrees breaks the projection; an
 // exposure of 1e20 overflows the tone curve, so the brightest pixels turn black.
 constexpr double kMinNearM = 1e-4;
+// World coordinates (the camera's position and target, lights' positions,
+// characters' translations), metres. float32 steps by 8 mm at 1e5 m, already
+// coarser than a skin feature. Measured past it: a camera at 1e38 m crashed
+// the reference's ray tracer (Embree refused the rays) and rendered an empty
+// frame.
+constexpr double kMaxWorldCoordinateM = 1e5;
+// The camera's target must be at least this far from its position: a view
+// direction 1e-30 m long underflowed in float and rendered an empty frame.
+constexpr double kMinCameraTargetDistanceM = 1e-6;
 constexpr double kMaxFarOverNear = 1e5;
 constexpr double kMinVerticalFovDeg = 1.0;
 constexpr double kMaxVerticalFovDeg = 179.0;
 constexpr double kMaxExposure = 1e4;
+// sss.width_scale and a material's width_scale: 1e4 times skin's widths is
+// metres, every blur long saturated. Measured: from 2e19 the screen-space
+// blurs scattered nothing while texture space still did.
+constexpr double kMaxWidthScale = 1e4;
 // settings.lod.max_error_px: beyond a few pixels a level of detail is a visible change of shape.
 constexpr double kMaxLodErrorPx = 8.0;
 constexpr double kMaxLightRadiusM = 1.0;

@@ -149,6 +149,7 @@ std::vector<CharacterReport> Renderer::characterReports() const {
         report.name = mScene.characters[c].name;
         report.visible = placement.visible;
         report.culledBecause = placement.culledBecause;
+        report.footprintPixels = placement.footprintPixels;
         report.animated = placement.animated;
         report.clipTimeS = placement.clipTimeS;
         report.lod = placement.lod;

@@ -27,6 +27,7 @@ void markVisibleCharacters(const FrameRequest& request, FramePlan& plan) {
         const ScreenFootprint footprint = screenFootprint(c.worldBounds, plan.view);
         c.visible = request.everyCharacterVisible || footprint.visible;
         c.culledBecause = c.visible ? "" : std::string("off screen: ") + footprint.outside;
+        c.footprintPixels = footprint.unclippedPixels;
     }
 }
 

@@ -86,6 +86,7 @@ struct CharacterPlacement {
     // Its bounds may cover a pixel (plan/ScreenFootprint.h); else why not.
     bool visible = true;
     std::string culledBecause;
+    float footprintPixels = 0.0f;  // its bounds' area on screen, unclipped (INFINITY across the near plane)
     // The level of detail it draws (plan/LevelOfDetail.h; 0: the full mesh)
     // and that level's error projected on screen, pixels.
     int lod = 0;

@@ -10,7 +10,7 @@ namespace {
 
 // Clip planes in the order screenFootprint counts them: -x, +x, -y, +y, -z (near), +z (far).
 constexpr const char* kOutsidePlane[6] = {"left of the view",  "right of the view",          "below the view",
-                                          "above the view",    "behind the camera (near plane)", "beyond the far plane"};
+                                          "above the view",    "behind the camera or nearer than the near plane", "beyond the far plane"};
 // The order a reason is looked for in: behind the camera first, since a box
 // there can be outside a side plane too.
 constexpr int kReasonOrder[6] = {4, 5, 0, 1, 2, 3};

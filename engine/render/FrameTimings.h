@@ -69,6 +69,7 @@ struct CharacterReport {
     std::string name;
     bool visible = true;
     std::string culledBecause;  // why not visible
+    float footprintPixels = 0.0f;  // its bounds' area on screen (plan/ScreenFootprint.h)
     bool animated = false;
     float clipTimeS = 0.0f;
     int textureSpaceSize = 0;      // irradiance texture side; 0 when texture space does not draw it

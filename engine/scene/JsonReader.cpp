@@ -344,7 +344,8 @@ bool JsonObject::readFloat(const json& value, const std::string& where, const Ra
     // float) is stored as the float next to it inside the range.
     auto f = static_cast<float>(x);
     if (range.contains(x) && !range.contains(double(f))) {
-        const float inward = std::nextafter(f, 0.0f);
+        // One float towards the written value, which lies inside.
+        const float inward = std::nextafter(f, double(f) < x ? HUGE_VALF : -HUGE_VALF);
         if (range.contains(double(inward))) f = inward;
     }
     if (!range.contains(double(f))) {

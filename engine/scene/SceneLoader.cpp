@@ -33,6 +33,8 @@ constexpr int kBurleySceneGaussians = 6;
 // can move the last bit).
 constexpr double kUnitLengthTolerance = 1e-6;
 constexpr double kParallelTolerance = 1e-6;
+// A limit on a ratio of two floats holds to their rounding (2^-24 each), with room.
+constexpr double kFloatRatioTolerance = 1e-6;
 
 
 double length(const glm::vec3& v) {
@@ -62,6 +64,15 @@ std::string formatProductForMessage(double x) {
     return text;
 }
 
+// A ratio next to a limit, with enough digits to tell it from the limit (100001, not 1e+05).
+std::string formatRatioForMessage(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", x);
+    return text;
+}
+
+const Range kWorldCoordinates = Range::closed(-kMaxWorldCoordinateM, kMaxWorldCoordinateM);
+
 void readCamera(JsonObject& root, Camera& camera) {
     const json* value = root.member("camera");
     if (value == nullptr) {
@@ -69,8 +80,8 @@ void readCamera(JsonObject& root, Camera& camera) {
     }
     JsonObject object(root.context(), *value, root.pointer("camera"),
                       {"position_m", "target_m", "up", "vertical_fov_deg", "near_m", "far_m"});
-    object.vec3("position_m", camera.positionM);
-    object.vec3("target_m", camera.targetM);
+    object.vec3("position_m", camera.positionM, kWorldCoordinates);
+    object.vec3("target_m", camera.targetM, kWorldCoordinates);
     object.vec3("up", camera.up);
     object.number("vertical_fov_deg", camera.verticalFovDeg, Range::closed(kMinVerticalFovDeg, kMaxVerticalFovDeg));
     object.number("near_m", camera.nearM, Range::atLeast(kMinNearM));
@@ -83,11 +94,14 @@ void readCamera(JsonObject& root, Camera& camera) {
     context.check(camera.nearM < camera.farM, object.pointer("near_m"),
                   "must be less than far_m (" + formatNumberForMessage(camera.farM) + "), got " +
                       formatNumberForMessage(camera.nearM));
-    context.check(double(camera.farM) <= kMaxFarOverNear * double(camera.nearM), object.pointer("far_m"),
+    // The ratio of the two floats as written: 1000 / 0.01 is 1e5 in decimals but 100000.002 in floats.
+    const double farOverNear = double(camera.farM) / double(camera.nearM);
+    context.check(farOverNear <= kMaxFarOverNear * (1.0 + kFloatRatioTolerance), object.pointer("far_m"),
                   "must be at most " + formatNumberForMessage(kMaxFarOverNear) + " x near_m (depth precision), got " +
-                      formatProductForMessage(double(camera.farM) / double(camera.nearM)) + " x");
-    context.check(camera.positionM != camera.targetM, object.pointer("target_m"),
-                  "must differ from position_m (the camera needs a view direction)");
+                      formatRatioForMessage(farOverNear) + " x");
+    context.check(length(camera.targetM - camera.positionM) >= kMinCameraTargetDistanceM, object.pointer("target_m"),
+                  "must be at least " + formatNumberForMessage(kMinCameraTargetDistanceM) +
+                      " m from position_m (the camera needs a view direction)");
     if (!context.check(length(camera.up) > 0.0, object.pointer("up"), "must not be the zero vector") ||
         context.failed()) {
         return;
@@ -95,6 +109,8 @@ void readCamera(JsonObject& root, Camera& camera) {
     const glm::dvec3 view = normalised(camera.targetM - camera.positionM);
     context.check(glm::length(glm::cross(view, normalised(camera.up))) > kParallelTolerance, object.pointer("up"),
                   "must not be parallel to the view direction (target_m - position_m)");
+    // Stored at unit length: a float lookAt of an up 1e-30 or 3e38 long under- or overflowed.
+    if (std::fabs(length(camera.up) - 1.0) > kUnitLengthTolerance) camera.up = glm::vec3(normalised(camera.up));
 }
 
 void readLight(JsonContext& context, const json& value, const std::string& pointer, Light& light) {
@@ -103,7 +119,7 @@ void readLight(JsonContext& context, const json& value, const std::string& point
         {"type", "position_m", "direction", "colour", "intensity", "spot_inner_deg", "spot_outer_deg", "shadow",
          "angular_diameter_deg", "radius_m"});
     choice(object, "type", kLightTypes, light.type);
-    object.vec3("position_m", light.positionM);
+    object.vec3("position_m", light.positionM, kWorldCoordinates);
     object.vec3("direction", light.direction);
     object.vec3("colour", light.colour, Range::atLeast(0.0));
     object.number("intensity", light.intensity, Range::atLeast(0.0));
@@ -137,7 +153,7 @@ void readTransform(JsonObject& parent, Transform& transform) {
     }
     JsonObject object(parent.context(), *value, parent.pointer("transform"),
                       {"translation_m", "rotation_deg", "scale"});
-    object.vec3("translation_m", transform.translationM);
+    object.vec3("translation_m", transform.translationM, kWorldCoordinates);
     object.vec3("rotation_deg", transform.rotationDeg);
     object.number("scale", transform.scale, Range::above(0.0));
 }
@@ -201,7 +217,7 @@ void readMaterialFields(JsonObject& object, const std::string& sceneFile, const 
     object.vec3("albedo", material.albedo, Range::closed(0.0, 1.0));
     object.number("roughness", material.roughness, Range::leftOpen(0.0, 1.0));
     object.number("rho_s", material.rhoS, Range::closed(0.0, 1.0));
-    object.number("width_scale", material.widthScale, Range::above(0.0));
+    object.number("width_scale", material.widthScale, Range::leftOpen(0.0, kMaxWidthScale));
     object.number("scatter", material.scatter, Range::closed(0.0, 1.0));
     material.scatteringGiven = object.has("profile") || object.has("scatter") || object.has("scatter_map");
     object.string("profile", material.profile, false);

@@ -42,7 +42,7 @@ void visitSssFields(S& s, V& v) {
     }
     v.number("bilateral_depth_mm", s.bilateralDepthMm, Range::above(0.0));
     v.number("control_depth_scale_per_mm", s.controlDepthScalePerMm, Range::atLeast(0.0));
-    v.number("width_scale", s.widthScale, Range::atLeast(0.0));
+    v.number("width_scale", s.widthScale, Range::closed(0.0, kMaxWidthScale));
     v.number("min_width_px", s.minWidthPx, Range::atLeast(0.0));
     v.number("mix", s.mix, Range::closed(0.0, 1.0));
     v.number("lean_moment_width_mm", s.leanMomentWidthMm, Range::atLeast(0.0));

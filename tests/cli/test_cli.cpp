@@ -248,6 +248,15 @@ TEST(Cli, FrameThatShowsNothingWarnsWhy) {
     EXPECT_NE(away.err.find("no character is on screen ('head': off screen"), std::string::npos) << away.err;
     EXPECT_EQ(away.err.find("every pixel is black"), std::string::npos) << "the background colour shows:\n" << away.err;
 
+    // Every pixel 255, and the head too small to cover a pixel (a probe found both silent).
+    const ProcessResult white = runProcess(render + dir.file("white.png") + " --set exposure=10000");
+    ASSERT_EQ(white.exitCode, 0) << white.err;
+    EXPECT_NE(white.err.find("warning: " + dir.file("white.png") + ": every pixel is white, saturated"), std::string::npos)
+        << white.err;
+    const ProcessResult tiny = runProcess(render + dir.file("tiny.png") + " --set characters.0.transform.scale=0.00001");
+    ASSERT_EQ(tiny.exitCode, 0) << tiny.err;
+    EXPECT_NE(tiny.err.find("every character on screen spans less than a pixel ('head': "), std::string::npos) << tiny.err;
+
     const ProcessResult lit = runProcess(render + dir.file("lit.png"));
     ASSERT_EQ(lit.exitCode, 0) << lit.err;
     EXPECT_EQ(lit.err.find("warning:"), std::string::npos) << lit.err;

@@ -3,6 +3,8 @@
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 using dermis::test::runProcess;
@@ -96,6 +98,26 @@ TEST(Stress, PlantedNanFailsTheRunAndNamesThePass) {
         EXPECT_EQ(failure["pass"], "tonemap") << failure.dump(2);
         EXPECT_GT(failure["counts"]["sanitised"]["tonemap"]["nan"].get<uint64_t>(), 0u) << failure.dump(2);
     }
+}
+
+// A plant must be tested to show anything. The ss-ts check runs on every
+// tenth seed, so seeds 1-3 never test its planted violation: a usage error
+// (exit 2, no summary), where the run used to pass with the check run 0
+// times. And "sss init" plants its NaN: seed 15, the first of 1-30 to run
+// the pass, fails on it (it passed before, the pass's output unplanted).
+// ctest: slow cost=12
+TEST(Stress, APlantNoCaseTestsIsAnErrorAndSssInitPlants) {
+    TempDir dir;
+    const auto untested = runProcess(std::string(DERMIS_BINARY) + " stress --cases 3 --seed 1 --quiet --plant-violation ss-ts --out " +
+                                     dir.file("untested.json"));
+    EXPECT_EQ(untested.exitCode, 2) << untested.out << untested.err;
+    EXPECT_NE(untested.err.find("no case ran the 'ss-ts' check (seeds 1 to 3)"), std::string::npos) << untested.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("untested.json")));
+
+    const auto init = runProcess(std::string(DERMIS_BINARY) + " stress --cases 1 --seed 15 --quiet --plant-nan 'sss init' --out " +
+                                 dir.file("init.json"));
+    EXPECT_EQ(init.exitCode, 1) << init.out << init.err;
+    EXPECT_NE(init.out.find("1 failed in 'sss init'"), std::string::npos) << init.out;
 }
 
 TEST(Stress, UnknownPlantPassIsAUsageErrorListingThePasses) {

@@ -384,7 +384,7 @@ TEST(FrameDeclaration, OffScreenCharactersAreCulledFromTheGBufferTextureSpaceAnd
         const std::string& name = frames.scene().characters[c].name;
         EXPECT_FALSE(plan.characters[c].visible) << name;
         // The G-buffer draws only visible characters (passes/GBufferPass.cpp).
-        EXPECT_EQ(plan.characters[c].culledBecause, name.rfind("behind", 0) == 0 ? "off screen: behind the camera (near plane)"
+        EXPECT_EQ(plan.characters[c].culledBecause, name.rfind("behind", 0) == 0 ? "off screen: behind the camera or nearer than the near plane"
                                                                                : "off screen: left of the view")
             << name;
         EXPECT_EQ(frames.culledBecause("ts " + name + " irradiance"), "predicate: character off screen");

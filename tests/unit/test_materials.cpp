@@ -105,7 +105,7 @@ TEST_F(MaterialsTest, BadMaterialsAndProfilesAreRefusedWithTheirKey) {
         std::string characterMembers, rootMembers, pointer, words;
     };
     const Case cases[] = {
-        {R"(, "materials": {"Skin": {"width_scale": 0}})", "", "/characters/0/materials/Skin/width_scale", "> 0"},
+        {R"(, "materials": {"Skin": {"width_scale": 0}})", "", "/characters/0/materials/Skin/width_scale", "must be in (0, 10000]"},
         {R"(, "materials": {"Skin": {"profile": "jelly"}})", "", "/characters/0/materials/Skin/profile",
          "unknown diffusion profile"},
         {R"(, "materials": {"Skin": {"shine": 1}})", "", "/characters/0/materials/Skin/shine", "unknown key"},

@@ -182,7 +182,7 @@ TEST(SceneOverrides, ChecksAcrossKeysNameTheOverrideThatBrokeThem) {
     EXPECT_ERROR(errorOf({"camera.far_m=0.01"}), "--set camera.far_m=0.01",
                  "/camera/near_m: must be less than far_m (0.01), got 0.05");
     EXPECT_ERROR(errorOf({"exposure=2", "camera.position_m=[0,0,0]"}), "--set camera.position_m=[0,0,0]",
-                 "/camera/target_m: must differ from position_m (the camera needs a view direction)");
+                 "/camera/target_m: must be at least 1e-06 m from position_m (the camera needs a view direction)");
     EXPECT_ERROR(errorOf({"characters.0.mesh.gltf=a.glb"}), "--set characters.0.mesh.gltf=a.glb",
                  "/characters/0/mesh: give exactly one of \"procedural\" and \"gltf\", not both");
 }

@@ -180,21 +180,33 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
     return options;
 }
 
-// A frame that shows nothing says why, rather than leaving a black file to
-// puzzle over: every character off screen, or every pixel black.
+// A frame that shows nothing says why, rather than leaving a blank file to
+// puzzle over: every character off screen or smaller than a pixel, or every
+// pixel black or white.
 void warnIfNothingShows(const RenderOptions& options, const Image& image, const std::vector<CharacterReport>& characters) {
     const auto shown = std::find_if(characters.begin(), characters.end(), [](const CharacterReport& c) { return c.visible; });
     if (!characters.empty() && shown == characters.end()) {
         log::warn(options.scenePath + ": no character is on screen ('" + characters.front().name + "': " +
                   characters.front().culledBecause + "); check the camera");
     }
-    if (options.request.aov != Aov::Final && options.request.aov != Aov::Radiance) return;  // a black AOV (no transmittance, no AO) can be right
-    const bool black = std::all_of(image.texels.begin(), image.texels.end(),
-                                   [](const glm::vec4& t) { return t.r == 0.0f && t.g == 0.0f && t.b == 0.0f; });
-    if (black) {
-        log::warn(options.outPath + ": every pixel is black (settings.exposure, the lights and the background " +
-                  "colour decide what shows)");
+    const auto large = std::find_if(characters.begin(), characters.end(),
+                                    [](const CharacterReport& c) { return c.visible && !(c.footprintPixels < 1.0f); });
+    if (shown != characters.end() && large == characters.end()) {
+        char pixels[32];
+        std::snprintf(pixels, sizeof pixels, "%.2g", double(shown->footprintPixels));
+        log::warn(options.scenePath + ": every character on screen spans less than a pixel ('" + shown->name + "': " +
+                  pixels + " pixels); it may cover none (check the camera and the characters' scale)");
     }
+    if (options.request.aov != Aov::Final && options.request.aov != Aov::Radiance) return;  // a black AOV (no transmittance, no AO) can be right
+    const auto every = [&](auto predicate) { return std::all_of(image.texels.begin(), image.texels.end(), predicate); };
+    const std::string why = " (settings.exposure, the lights and the background colour decide what shows)";
+    if (every([](const glm::vec4& t) { return t.r == 0.0f && t.g == 0.0f && t.b == 0.0f; }))
+        log::warn(options.outPath + ": every pixel is black" + why);
+    // White: the tone-mapped frame's 8-bit 255 (its target is RGBA8), the radiance's largest half float
+    // (where the sanitisers clamp).
+    const float white = options.request.aov == Aov::Final ? 1.0f : 65504.0f;
+    if (every([white](const glm::vec4& t) { return t.r >= white && t.g >= white && t.b >= white; }))
+        log::warn(options.outPath + ": every pixel is white, saturated" + why);
 }
 
 // Renders every frame; a sequence's frames are staged as they come, else the last one is.

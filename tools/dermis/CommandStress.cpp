@@ -202,6 +202,15 @@ int runStress(const std::vector<std::string>& rawArgs) {
         return usageError(makeError("--plant-nan", "no case's frame runs a pass named '" + options->plantPass +
                                                        "'; the frames ran: " + names));
     }
+    const std::string plantName(stress::kPlants.name(options->plant));
+    const stress::InvariantTally* plantedCheck =
+        options->plant == stress::Plant::None ? nullptr : &run.invariants()[stress::plantedInvariant(options->plant)];
+    if (plantedCheck != nullptr && plantedCheck->checked == 0) {
+        return usageError(makeError("--plant-violation", "no case ran the '" + plantName + "' check (seeds " +
+                                                             std::to_string(options->seed) + " to " +
+                                                             std::to_string(options->seed + uint64_t(options->cases) - 1) +
+                                                             "), so the planted violation was never tested; run more cases"));
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::ordered_json header = {{"cases", options->cases},       {"first_seed", options->seed},
                                      {"renderer", (*context)->renderer()}, {"plant_nan", options->plantPass},
@@ -217,6 +226,14 @@ int runStress(const std::vector<std::string>& rawArgs) {
         return failure(written.error());
     if (const Status committed = outputs.commit(); !committed.ok()) return failure(committed.error());
     std::printf("%s\n", run.line(options->cases, seconds, options->outPath).c_str());
+    // A plant that nothing caught fails the run: it was there to show a detector works.
+    if (!options->plantPass.empty() && run.failed() == 0)
+        return failure(makeError("--plant-nan", "the pass '" + options->plantPass +
+                                                    "' ran with its planted NaN, but no case failed: no counter or check saw it"));
+    if (plantedCheck != nullptr && plantedCheck->violated == 0)
+        return failure(makeError("--plant-violation", "the '" + plantName + "' check ran " +
+                                                          std::to_string(plantedCheck->checked) +
+                                                          " times on the planted violation and never failed"));
     return run.failed() == 0 ? 0 : 1;
 }
 

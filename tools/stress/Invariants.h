@@ -43,6 +43,19 @@ inline constexpr EnumTable<Plant, 6> kPlants{
       {Plant::MoreLight, "more-light", "the frame with more light is scaled by 0.9"}}}};
 static_assert(kPlants.isOneToOne(), "every plant and every name appears once");
 
+// The invariant a plant must make fail.
+constexpr Invariant plantedInvariant(Plant plant) {
+    switch (plant) {
+        case Plant::Coverage: return Invariant::Coverage;
+        case Plant::Energy: return Invariant::Energy;
+        case Plant::Black: return Invariant::Black;
+        case Plant::SsTs: return Invariant::SsTs;
+        case Plant::MoreLight: return Invariant::MoreLight;
+        case Plant::None: break;
+    }
+    return Invariant::Coverage;  // not asked for Plant::None
+}
+
 // Violations kept per invariant and case with their numbers.
 constexpr size_t kMaxViolationDetails = 4;
 

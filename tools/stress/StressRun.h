@@ -57,6 +57,7 @@ public:
     int failed() const { return mFailed; }
     bool planted() const { return mPlanted; }
     const std::vector<std::string>& passesSeen() const { return mPassesSeen; }
+    const InvariantReport& invariants() const { return mInvariants; }
     // summary.json's content (docs/stress.md); `header` holds the run's own settings, first.
     nlohmann::ordered_json summary(nlohmann::ordered_json header, double seconds) const;
     // The run in one line: cases, failures and their passes, refusals, the counts, the invariants.
