@@ -161,7 +161,7 @@ std::vector<CharacterReport> Renderer::characterReports() const {
         }
         if (!mPlan->textureSpace && c < mPlan->sss.characterChoices.size()) {
             const CharacterSssChoice& sss = mPlan->sss.characterChoices[c];
-            report.hasSss = sss.hasSss;
+            report.hasSss = sss.hasSss && mScene.settings.sss.enabled;  // disabled: no choice to report
             report.sssChoice = sss.choice;
             report.pixelsPerMm = sss.pixelsPerMm;
             report.sssChoiceSource = sss.source;

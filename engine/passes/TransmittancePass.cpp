@@ -36,6 +36,7 @@ graph::TextureHandle addTransmittancePass(graph::RenderGraph& graph, const Frame
                     d.out = builder.write(addInto);
                 }
                 builder.skipIf(!settings.enabled, "transmittance disabled");
+                builder.skipIf(!frame.plan.scene->settings.sss.enabled, "SSS disabled");
                 builder.skipIf(!frame.plan.sss.anyVisible(), "no SSS pixel on screen");
                 builder.skipIf(!frame.plan.anyBackLight, "no shadowed light behind an SSS character");
             },

@@ -101,6 +101,7 @@ void planGaussians(TsCharacterPlan& plan, const SssSettings& sss, float denseMmP
 }  // namespace
 
 std::string TsCharacterPlan::skipReason() const {
+    if (sssDisabled) return "SSS disabled";
     if (!visible) return "character off screen";
     if (!fallback.empty()) return "falls back to screen space: " + fallback;
     return "";
@@ -157,7 +158,8 @@ Result<TsPlan> planTextureSpace(const Scene& scene, const std::vector<TsCharacte
             if (surfaces.size() > 1) p.label += " " + p.profile->name() + " " + std::to_string(p.submeshes.front());
             const TsCharacterInput& input = inputs[c];
             const ScreenFootprint footprint = screenFootprint(input.worldBounds, view);
-            p.visible = settings.sss.enabled && footprint.visible;
+            p.sssDisabled = !settings.sss.enabled;
+            p.visible = !p.sssDisabled && footprint.visible;
             p.nearestViewDepthM = footprint.nearestViewDepthM;
             if (!(input.uvlessSurfaceFraction <= kMaxUvlessSurfaceFraction)) {
                 char why[128];

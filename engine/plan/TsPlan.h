@@ -94,7 +94,8 @@ struct TsCharacterPlan {
     const DiffusionProfile* profile = nullptr;
     float widthScale = 1.0f;            // settings.sss.widthScale x the material's width_scale
     std::vector<size_t> submeshes;      // the character's submeshes this surface draws
-    bool visible = false;
+    bool visible = false;  // on screen, with SSS enabled
+    bool sssDisabled = false;  // settings.sss.enabled false: no pass runs, whatever the screen shows
     // Why it falls back to screen space; empty when texture space can run it.
     std::string fallback;
     bool runs() const { return visible && fallback.empty(); }

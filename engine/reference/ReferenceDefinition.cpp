@@ -37,6 +37,14 @@ std::vector<std::pair<std::string, std::string>> parts(const Scene& scene) {
     unplaced.path.clear();  // file paths as resolved (from the working directory), made canonical below
     nlohmann::json document = nlohmann::json::parse(sceneToJson(unplaced));
     canonicalPaths(document);
+    // The environment as the reference reads it: the map, its intensity, rotation and background. How
+    // the engine approximates it (occlusion, diffuse, specular, sh_bands, the extracted light) is the
+    // engine's own, like SSAO: what a comparison with the reference measures.
+    if (document.contains("environment")) {
+        nlohmann::json& environment = document["environment"];
+        for (const char* engineOnly : {"occlusion", "diffuse", "specular", "sh_bands", "extract_light", "extract_threshold"})
+            environment.erase(engineOnly);
+    }
     const auto section = [&](const char* key) { return document.contains(key) ? document[key].dump() : std::string(); };
     const RenderSettings& s = scene.settings;
     const nlohmann::json settings = {{"ambient", {s.ambient.x, s.ambient.y, s.ambient.z}},

@@ -8,7 +8,9 @@
 // the diffusion profiles, the environment, and the settings it reads
 // (ambient, energy_conservation, sss.enabled, sss.width_scale, sss.mix).
 // The engine's own knobs (SSAO, taps, the mode, transmittance, which the
-// reference leaves out) are not in it: a reference serves every setting of them.
+// reference leaves out, and how it approximates the environment: occlusion,
+// diffuse, specular, SH bands, the extracted light) are not in it: a reference
+// serves every setting of them.
 
 #include "scene/Scene.h"
 
@@ -19,6 +21,9 @@ namespace dermis::reference {
 
 // The EXR attribute that holds the record (core/Image.h Image::attributes).
 constexpr const char* kDefinitionAttribute = "dermis:reference_definition";
+// Its samples per pixel (--spp): above 1 each pixel is a box filter over its
+// area, where the engine shades the pixel's centre (docs/reference.md).
+constexpr const char* kSamplesPerPixelAttribute = "dermis:reference_spp";
 
 // "camera=HEX;lights=HEX;...": the record of `scene`.
 std::string definitionRecord(const Scene& scene);

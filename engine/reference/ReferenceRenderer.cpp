@@ -397,7 +397,8 @@ Image ReferenceRenderer::renderPixels(Quantity quantity, int width, int height, 
         mStats.shadedBaseCells = std::max(mStats.shadedBaseCells, first.shadedBaseCells);  // the cells overlap
         mStats.sssHits += first.sssHits;
     }
-    image.attributes = {{kDefinitionAttribute, definitionRecord(mScene)}};  // what it is a reference of
+    image.attributes = {{kDefinitionAttribute, definitionRecord(mScene)},  // what it is a reference of
+                        {kSamplesPerPixelAttribute, std::to_string(mOptions.samplesPerPixel)}};
     return image;
 }
 

@@ -93,17 +93,50 @@ TEST(ReferenceCli, CompareRefusesAReferenceOfAnotherScene) {
 
     const ProcessResult other = runProcess(kDermis + " compare " + slab + compare + dir.file("ref.exr") + " --out " + dir.file("other"));
     EXPECT_EQ(other.exitCode, 1) << other.err;
-    EXPECT_NE(other.err.find(dir.file("ref.exr") + ": a reference of another scene: its camera"), std::string::npos) << other.err;
+    EXPECT_NE(other.err.find(dir.file("ref.exr") + ": a reference of another scene: it differs from " + slab + " in its camera"),
+              std::string::npos)
+        << other.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("other"))) << "the folder it made for its outputs stays";
     EXPECT_TRUE(std::filesystem::exists(dir.file("same") + "/metrics.json"));
 
     const ProcessResult mix = runProcess(kDermis + " compare " + furnace + compare + dir.file("ref.exr") +
                                          " --set sss.mix=0.3 --out " + dir.file("mix"));
     EXPECT_EQ(mix.exitCode, 1) << mix.err;
-    EXPECT_NE(mix.err.find("its settings differ from"), std::string::npos) << mix.err;
+    EXPECT_NE(mix.err.find("in its settings"), std::string::npos) << mix.err;
 
     const ProcessResult png = runProcess(kDermis + " compare " + furnace + compare + dir.file("frame.png") + " --out " + dir.file("png"));
     EXPECT_EQ(png.exitCode, 1) << png.err;
     EXPECT_NE(png.err.find("must be a linear float image"), std::string::npos) << png.err;
     for (const ProcessResult* r : {&other, &mix, &png}) EXPECT_EQ(errorLines(r->err), 1u) << r->err;
+    EXPECT_EQ(same.err.find("samples per pixel"), std::string::npos) << same.err;
+
+    // An antialiased reference (--spp 4) is used, with a warning: the engine shades pixel centres.
+    ASSERT_EQ(runProcess(kDermis + " reference " + furnace + " --size 8x6 --density 2 --spp 4 --quiet --out " +
+                         dir.file("ref4.exr")).exitCode, 0);
+    const ProcessResult boxed = runProcess(kDermis + " compare " + furnace + compare + dir.file("ref4.exr") +
+                                           " --set ssao.enabled=false --out " + dir.file("boxed"));
+    EXPECT_EQ(boxed.exitCode, 0) << boxed.err;
+    EXPECT_NE(boxed.err.find(dir.file("ref4.exr") + ": the reference averages 4 samples per pixel (--spp 4)"), std::string::npos)
+        << boxed.err;
+}
+
+// How the engine approximates an environment (occlusion, diffuse, specular, SH bands, the
+// extracted light) is its own, as SSAO is: a reference serves every choice of them. The map,
+// its intensity and rotation are the scene's.
+TEST(ReferenceCli, TheEnginesEnvironmentChoicesMayDifferFromTheReferences) {
+    TempDir dir;
+    const std::string furnace = furnaceScene();
+    const std::string sky = " --set 'environment={\"source\":\"sky\",\"intensity\":0.5}'";
+    ASSERT_EQ(runProcess(kDermis + " reference " + furnace + " --size 8x6 --density 2 --spp 1 --quiet --out " +
+                         dir.file("ref.exr") + sky).exitCode, 0);
+    const std::string compare = kDermis + " compare " + furnace + " --size 8x6 --frames 1 --quiet --reference " +
+                                dir.file("ref.exr") + " --set ssao.enabled=false";
+    const ProcessResult engine = runProcess(compare + " --out " + dir.file("engine") +
+                                            " --set 'environment={\"source\":\"sky\",\"intensity\":0.5,\"occlusion\":\"none\","
+                                            "\"diffuse\":\"sh\",\"sh_bands\":2,\"extract_light\":\"off\"}'");
+    EXPECT_EQ(engine.exitCode, 0) << engine.err;
+    const ProcessResult brighter = runProcess(compare + " --out " + dir.file("brighter") +
+                                              " --set 'environment={\"source\":\"sky\",\"intensity\":0.6}'");
+    EXPECT_EQ(brighter.exitCode, 1) << brighter.err;
+    EXPECT_NE(brighter.err.find("in its environment"), std::string::npos) << brighter.err;
 }

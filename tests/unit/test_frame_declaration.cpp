@@ -323,6 +323,17 @@ TEST(FrameDeclaration, DisabledEffectsAreCulledWithTheirReason) {
     EXPECT_EQ(frames.culledBecause("transmittance"), "predicate: transmittance disabled");
     EXPECT_EQ(frames.executedWithPrefix("sss"), 0) << frames.listing();
     EXPECT_TRUE(frames.executed("lighting"));
+
+    // SSS off with the transmittance on, and in texture space: the passes say SSS is off, not that
+    // nothing is on screen (a probe read "character off screen" with the head filling the frame).
+    DeclaredFrames screen("default.json", {"sss.enabled=false"});
+    ASSERT_TRUE(screen.declare());
+    EXPECT_EQ(screen.culledBecause("transmittance"), "predicate: SSS disabled");
+    DeclaredFrames texture("default.json", {"sss.enabled=false", "mode=ts"});
+    ASSERT_TRUE(texture.declare());
+    const std::map<std::string, std::string> headPasses = texture.culledWithPrefix("ts head ");
+    EXPECT_GT(headPasses.size(), 10u) << texture.listing();
+    for (const auto& [name, why] : headPasses) EXPECT_EQ(why, "predicate: SSS disabled") << name;
 }
 
 TEST(FrameDeclaration, CachedShadowMapIsCulledOnTheSecondFrame) {

@@ -72,15 +72,20 @@ Result<Image> loadReferenceImage(const std::string& path, int width, int height,
                                    image->storedType + " values");
     }
     for (const auto& [name, record] : image->attributes) {
+        if (name == reference::kSamplesPerPixelAttribute && record != "1") {
+            log::warn(path + ": the reference averages " + record + " samples per pixel (--spp " + record +
+                      "), where the engine shades each pixel's centre: the outlines' antialiasing counts as error "
+                      "(make it with dermis reference --spp 1)");
+        }
         if (name != reference::kDefinitionAttribute) continue;
         const std::vector<std::string> differing = reference::definitionMismatch(record, scene);
-        if (differing.empty()) break;
+        if (differing.empty()) continue;
         std::string parts;
         for (const std::string& part : differing) parts += (parts.empty() ? "" : ", ") + part;
-        return makeError(path, "a reference of another scene: its " + parts + " differ from " +
-                                   (scene.path.empty() ? std::string("this scene") : scene.path) +
-                                   "'s (make it with dermis reference " +
-                                   (scene.path.empty() ? std::string("SCENE") : scene.path) + " and the same --set)");
+        const std::string scenePath = scene.path.empty() ? std::string("SCENE") : scene.path;
+        return makeError(path, "a reference of another scene: it differs from " +
+                                   (scene.path.empty() ? std::string("this scene") : scene.path) + " in its " + parts +
+                                   " (make it with dermis reference " + scenePath + " and the same --set)");
     }
     if (image->width != width || image->height != height) {
         return makeError(path, "the reference is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
