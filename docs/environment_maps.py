@@ -86,6 +86,7 @@ def outdoor(width, height):
     sun_radiance = (2.0e4, 1.8e4, 1.5e4)
     pixels = [[(0.0, 0.0, 0.0)] * width for _ in range(height)]
     sun_texels, sun_solid_angle = [], 0.0
+    nearest, nearest_dot, nearest_solid_angle = None, -2.0, 0.0  # for a sun smaller than a texel
     for v in range(height):
         row_solid_angle = 2 * math.pi / width * (math.cos(math.pi * v / height) - math.cos(math.pi * (v + 1) / height))
         for u in range(width):
@@ -109,6 +110,12 @@ def outdoor(width, height):
             if math.acos(max(min(dot(d, sun), 1.0), -1.0)) <= sun_radius:
                 sun_texels.append((u, v))
                 sun_solid_angle += row_solid_angle
+            if dot(d, sun) > nearest_dot:
+                nearest, nearest_dot, nearest_solid_angle = (u, v), dot(d, sun), row_solid_angle
+    if not sun_texels:
+        # No texel centre within the disc (--height 128 and below): its whole power goes to the nearest
+        # texel, so the sun is not lost (it was, and the glow around it became the dominant light).
+        sun_texels, sun_solid_angle = [nearest], nearest_solid_angle
     # The sun's power, radiance x its disc's solid angle, spread over the texels it covers.
     disc = 2 * math.pi * (1 - math.cos(sun_radius))
     for u, v in sun_texels:

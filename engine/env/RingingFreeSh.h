@@ -48,6 +48,11 @@ struct SplitSh {
 };
 SplitSh projectLatLongSplit(const Image& map);
 
+// The smooth part as a map: each texel's radiance scaled down to the part of
+// its power below the cap (the hot share taken out). The visible share's rays
+// read it; the hot part is weighed apart (env/ShTransfer.h, shareLightOf).
+Image smoothPartOfLatLong(const Image& map);
+
 // projectLatLong with the hot part of each texel windowed, as above: smooth + hot.
 Sh9 projectLatLongWithoutRinging(const Image& map);
 

@@ -2,6 +2,8 @@
 
 #include "core/Hash.h"
 #include "core/Luminance.h"
+#include "env/PrefilteredEnvironment.h"
+#include "env/RingingFreeSh.h"
 #include "raytrace/EmbreeBvh.h"
 #include "raytrace/ParallelFor.h"
 #include "raytrace/Sampling.h"
@@ -252,7 +254,7 @@ Result<ShTransfer> computeShTransfer(const MeshData& mesh, const ShTransferOptio
 }
 
 std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransfer& transfer, const Image& lit,
-                                            const glm::mat3& mapFromObject) {
+                                            const glm::mat3& mapFromObject, const std::vector<HotDirection>& hot) {
     const size_t words = visibilityWords(transfer.raysPerVertex);
     if (transfer.visibility.size() != mesh.vertices.size() * words || lit.empty()) return transfer.perVertex;
     const int strataPerSide = int(std::lround(std::sqrt(double(transfer.raysPerVertex))));
@@ -261,6 +263,12 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
     constexpr float kBand2 = kPi / 4.0f;
     const float clampedCosine[9] = {kPi, kBand1, kBand1, kBand1, kBand2, kBand2, kBand2, kBand2, kBand2};
     const LuminanceCube luminance(lit);
+    // The hot directions in object space (mapFromObject is a rotation).
+    std::vector<glm::vec3> hotObject;
+    for (const HotDirection& h : hot) hotObject.push_back(glm::transpose(mapFromObject) * h.directionMap);
+    const float coneCosine = std::cos(kHotVisibilityConeDeg * kPi / 180.0f);
+    // Each cosine-weighted ray stands for pi / n of the irradiance of a unit radiance.
+    const double rayWeight = double(kPi) / double(transfer.raysPerVertex);
     std::vector<float> shares(mesh.vertices.size(), 0.0f);
     raytrace::parallelFor(mesh.vertices.size(), 0, [&](size_t vertexIndex) {
         glm::vec3 normal;
@@ -268,11 +276,38 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
         const uint32_t* escaped = transfer.visibility.data() + vertexIndex * words;
         double visible = 0.0;
         double all = 0.0;
+        std::vector<glm::vec3> rays;
+        if (!hot.empty()) rays.reserve(size_t(transfer.raysPerVertex));
         forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
             const double radiance = luminance.at(mapFromObject * direction);
             all += radiance;
             if (escaped[i / 32] & (1u << (i % 32))) visible += radiance;
+            if (!hot.empty()) rays.push_back(direction);
         });
+        visible *= rayWeight;
+        all *= rayWeight;
+        for (size_t h = 0; h < hot.size(); ++h) {
+            const float cosine = glm::dot(normal, hotObject[h]);
+            if (!(cosine > 0.0f)) continue;
+            double escapedWeight = 0.0, weight = 0.0;
+            float nearest = -2.0f;
+            bool nearestEscaped = false;
+            for (size_t i = 0; i < rays.size(); ++i) {
+                const float closeness = glm::dot(rays[i], hotObject[h]);
+                const bool rayEscaped = (escaped[i / 32] & (1u << (i % 32))) != 0;
+                if (closeness > nearest) {
+                    nearest = closeness;
+                    nearestEscaped = rayEscaped;
+                }
+                if (closeness <= coneCosine) continue;
+                weight += closeness - coneCosine;
+                if (rayEscaped) escapedWeight += closeness - coneCosine;
+            }
+            const double visibility = weight > 0.0 ? escapedWeight / weight : (nearestEscaped ? 1.0 : 0.0);
+            const double light = double(hot[h].power) * double(cosine);
+            all += light;
+            visible += light * visibility;
+        }
         shares[vertexIndex] = all > 0.0 ? float(visible / all) : 0.0f;
     });
     fillFromNeighbours(mesh, transfer.buried, 1, shares.data());
@@ -282,6 +317,38 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
         if (!unitNormal(mesh.vertices[vertexIndex], normal)) continue;
         const ShScalar9 basis = shBasis(normal);
         for (size_t k = 0; k < basis.size(); ++k) out[vertexIndex][k] = shares[vertexIndex] * clampedCosine[k] * basis[k];
+    }
+    return out;
+}
+
+ShareLight shareLightOf(const Image& lit, int width) {
+    const int height = width / 2;
+    const Image smoothFull = smoothPartOfLatLong(lit);
+    Image hotFull = lit;
+    for (size_t i = 0; i < hotFull.texels.size(); ++i)
+        hotFull.texels[i] = glm::vec4(glm::vec3(lit.texels[i]) - glm::vec3(smoothFull.texels[i]), lit.texels[i].a);
+    ShareLight out;
+    out.smooth = resampleLatLongByArea(smoothFull, width, height);
+    const Image hotMap = resampleLatLongByArea(hotFull, width, height);
+    struct Texel {
+        int u, v;
+        float power;
+    };
+    std::vector<Texel> hotTexels;
+    for (int v = 0; v < height; ++v)
+        for (int u = 0; u < width; ++u) {
+            const float power = relativeLuminance(glm::vec3(hotMap.at(u, v))) * latLongTexelSolidAngle(v, width, height);
+            if (power > 0.0f) hotTexels.push_back({u, v, power});
+        }
+    std::sort(hotTexels.begin(), hotTexels.end(), [](const Texel& a, const Texel& b) { return a.power > b.power; });
+    for (size_t i = 0; i < hotTexels.size(); ++i) {
+        const Texel& t = hotTexels[i];
+        if (i < size_t(kMaxHotDirections)) {
+            out.hot.push_back({latLongDirection(t.u, t.v, width, height), t.power});
+        } else {
+            glm::vec4& into = out.smooth.at(t.u, t.v);  // beyond the brightest: read by the rays, as before
+            into = glm::vec4(glm::vec3(into) + glm::vec3(hotMap.at(t.u, t.v)), into.a);
+        }
     }
     return out;
 }

@@ -93,8 +93,40 @@ ShScalar9 rotateTransfer(const ShScalar9& transfer, const glm::mat3& rotation);
 // the whole occlusion of that map, where the SH transfer spreads an
 // occluder's shadow over directions it does not hide. Returns the transfer
 // unchanged when it holds no visibility.
+//
+// A sun left in the map (extract_light off, or a second sun) is a few texels
+// that 256 rays a vertex meet by chance: the share jumped from vertex to
+// vertex, dark blotches on a face. So the map's hot part (its texels' power
+// above the cap of env/RingingFreeSh.h) is kept apart, `hot`, one direction
+// per share-map texel, and each is weighed at every vertex by its cosine and
+// its visibility: the mean escape of the vertex's rays within
+// kHotVisibilityConeDeg of it (the nearest ray's where none is):
+//   s = (pi/n sum_i V_i L(w_i) + sum_h V_h P_h max(N . h, 0))
+//     / (pi/n sum_i L(w_i)     + sum_h P_h max(N . h, 0))
+// with `lit` the map without them and P_h their luminance x solid angle.
+struct HotDirection {
+    glm::vec3 directionMap{0.0f, 1.0f, 0.0f};  // unit, in the map's space
+    float power = 0.0f;                        // luminance x solid angle
+};
 std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransfer& transfer, const Image& lit,
-                                            const glm::mat3& mapFromObject);
+                                            const glm::mat3& mapFromObject, const std::vector<HotDirection>& hot = {});
+
+// The rays' half-angle over which a hot direction's visibility is averaged:
+// the 256 rays lie about 9 degrees apart, so about 6 rays fall in it near
+// the normal and the shadow's edge is softened by as much.
+constexpr float kHotVisibilityConeDeg = 15.0f;
+// The most hot directions weighed apart (the brightest); the others stay in
+// the map the rays read.
+constexpr int kMaxHotDirections = 32;
+
+// A lit map split for visibleShareTransfer at width x width / 2: the map its
+// rays read (the smooth part, plus any hot part beyond the kMaxHotDirections
+// brightest) and the hot directions.
+struct ShareLight {
+    Image smooth;
+    std::vector<HotDirection> hot;
+};
+ShareLight shareLightOf(const Image& lit, int width);
 
 // Each buried vertex (buried[v] != 0) takes the mean of its neighbours'
 // values (vertices that share a triangle with it) that are not buried, or

@@ -110,7 +110,7 @@ void GpuEnvironment::prepare(const EnvironmentPlan& plan, const Scene& scene) {
             mMap = uploadLatLong(prefiltered.levels(), "environment: prefiltered map");
             mMapLevels = static_cast<int>(prefiltered.levels().size());
             mIrradiance = uploadStackedLatLong(plan.light->irradiancePowers, "environment: irradiance map and cosine powers");
-            mShareMap = resampleLatLongByArea(plan.light->lit(), kShareMapWidth, kShareMapWidth / 2);
+            mShareLight = shareLightOf(plan.light->lit(), kShareMapWidth);
             const Image& base = prefiltered.levels().front();
             mBackground = plan.light->extracted.empty()
                               ? gl::Texture()
@@ -163,7 +163,7 @@ Status GpuEnvironment::prepareTransfer(size_t character, const MeshData& mesh, b
             !other.uploaded.empty())
             same = &other;
     transfer.uploaded = same ? same->uploaded
-                        : light ? visibleShareTransfer(mesh, transfer.traced, mShareMap, mapFromObject)
+                        : light ? visibleShareTransfer(mesh, transfer.traced, mShareLight.smooth, mapFromObject, mShareLight.hot)
                                 : transfer.traced.perVertex;
     transfer.light = light;
     transfer.mapFromObject = mapFromObject;

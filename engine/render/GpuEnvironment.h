@@ -65,7 +65,7 @@ private:
     gl::Texture mMap;
     gl::Texture mIrradiance;  // env/IrradianceMap.h, at DERMIS_UNIT_ENVIRONMENT_IRRADIANCE
     gl::Texture mBackground;  // only when the map lit is not the map shown
-    Image mShareMap;          // the lit map by area at kShareMapWidth, for visibleShareTransfer
+    ShareLight mShareLight;   // the lit map by area at kShareMapWidth and its hot directions, for visibleShareTransfer
     std::shared_ptr<const EnvironmentLight> mMapLight;  // what mMap was made from
     int mMapLevels = 0;
     struct Transfer {

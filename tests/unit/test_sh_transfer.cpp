@@ -8,6 +8,7 @@
 #include "core/Luminance.h"
 #include "anim/Rig.h"
 #include "env/EnvironmentMap.h"
+#include "env/SphericalHarmonics.h"
 #include "env/ShTransfer.h"
 #include "env/ShTransferCache.h"
 #include "import/GltfLoader.h"
@@ -552,6 +553,40 @@ TEST(ShTransfer, VisibleShareMatchesTheWallsClosedForms) {
                 shOpen);
     EXPECT_GT(std::abs(shBehind), 0.05f);
     EXPECT_GT(std::abs(1.0f - shOpen), 0.05f);
+}
+
+// A sun left in the map: a dim uniform sky (0.01) and one texel of 1e4 at
+// 512 x 256, 37 degrees to either side of the wall's plane. The share
+// weighs the sun by its own visibility (0 behind the wall, 1 on the open
+// side; every ray within kHotVisibilityConeDeg of it is on its side) and its
+// cosine 0.6, the sky by the rays: closed forms
+//   behind: (E_sky / 2) / (E_sky + E_sun),  open: (E_sky / 2 + E_sun) / (E_sky + E_sun)
+// with E_sky = 0.01 pi and E_sun = 0.6 x the texel's luminance x solid
+// angle. Bound 0.005: the sky's half moves by 8e-3 of E_sky (the rays, as
+// above), the sun's cosine by the share map's 2.8-degree texels. Before the
+// sun was kept apart, no ray of this vertex met its texel and both read
+// 0.5: the share jumped wherever a ray did (blotches on a face).
+TEST(ShTransfer, VisibleShareWeighsASunInTheMapByItsOwnVisibility) {
+    const MeshData mesh = vertexBesideAWall();
+    auto traced = computeShTransfer(mesh, quietOptions(256));
+    ASSERT_TRUE(traced) << traced.error().message();
+    const float unoccludedT00 = 0.886227f;
+    for (const float side : {1.0f, -1.0f}) {
+        const glm::vec3 sun = glm::normalize(glm::vec3(side * 0.6f, 0.6f, 0.53f));
+        Image map = test::latLongImage(512, 256, [](const glm::vec3&) { return glm::vec3(0.01f); });
+        const glm::vec2 uv = latLongUv(sun);
+        const int u = int(uv.x * 512.0f), v = int(uv.y * 256.0f);
+        map.at(u, v) = glm::vec4(1e4f, 1e4f, 1e4f, 1.0f);
+        const ShareLight light = shareLightOf(map, 128);
+        ASSERT_EQ(light.hot.size(), 1u);
+        const double skyE = 0.01 * glm::pi<double>();
+        const double sunE = 0.6 * 1e4 * double(latLongTexelSolidAngle(v, 512, 256));
+        const double expected = side > 0.0f ? 0.5 * skyE / (skyE + sunE) : (0.5 * skyE + sunE) / (skyE + sunE);
+        const float share = visibleShareTransfer(mesh, *traced, light.smooth, glm::mat3(1.0f), light.hot)[0][0] / unoccludedT00;
+        std::printf("[ measured ] sun %s the wall: share %.4f (closed form %.4f)\n", side > 0.0f ? "behind" : "beside", share,
+                    expected);
+        EXPECT_NEAR(share, expected, 0.005) << "sun " << (side > 0.0f ? "behind" : "beside") << " the wall";
+    }
 }
 
 // The procedural head's vertices against the reference's parity count
