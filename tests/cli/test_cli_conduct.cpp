@@ -45,6 +45,11 @@ TEST(CliConduct, MistypedNamesGetASuggestion) {
         {"render " + scene() + " --frame 2" + out, "--frame: unknown option (did you mean '--frames'?)"},
         {"render " + scene() + kTiny + " --set sss.tap=5" + out, "unknown key \"tap\": did you mean \"taps\"?"},
         {"render " + scene() + kTiny + " --set mode=sss" + out, "unknown SSS mode \"sss\": did you mean \"ss\"?"},
+        // Option values of a closed set, as docs/cli.md promises (a probe found them without).
+        {"render " + scene() + kTiny + " --aov normals" + out, "(did you mean 'normal'?)"},
+        {"render " + scene() + kTiny + " --mode sss" + out, "--mode sss: expected ss or ts (did you mean 'ss'?)"},
+        {"render " + scene() + kTiny + " --variant lbv" + out, "(did you mean 'lbb'?)"},
+        {"view " + scene() + " --view splt", "--view splt: expected single, split or diff (did you mean 'split'?)"},
     };
     for (const Case& c : cases) {
         const ProcessResult r = runProcess(kDermis + " " + c.arguments + " --quiet");

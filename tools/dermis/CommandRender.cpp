@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
+#include "core/Suggest.h"
 #include "core/Image.h"
 #include "core/Limits.h"
 #include "core/Log.h"
@@ -110,12 +111,18 @@ struct RenderOptions {
 Status addModeOverrides(const ParsedArgs& args, std::vector<std::string>& overrides) {
     if (args.has("mode")) {
         const std::string mode = args.get("mode", "");
-        if (!kSssModes.parse(mode)) return makeError("--mode " + mode, "expected " + expectedNames(kSssModes));
+        if (!kSssModes.parse(mode))
+            return makeError("--mode " + mode, "expected " + expectedNames(kSssModes) + didYouMean(mode, kSssModes.names()));
         overrides.push_back("mode=" + mode);
     }
     if (args.has("variant")) {
         const std::string variant = args.get("variant", "");
-        if (!kSssVariants.parse(variant)) return makeError("--variant " + variant, "expected " + expectedNames(kSssVariants));
+        if (!kSssVariants.parse(variant))
+            return makeError("--variant " + variant,
+                             "expected " + expectedNames(kSssVariants) + didYouMean(variant, kSssVariants.names()));
+        if (args.get("mode", "") == "ts")
+            log::warn("--variant " + variant + ": texture space draws the control variant (c) whatever the variant; "
+                      "it applies to screen space (docs/texture-space.md)");
         // The variant's blur too, whatever the scene file names.
         overrides.push_back("sss.variant=" + variant);
         overrides.push_back("sss.blur=variant");
@@ -133,7 +140,12 @@ Result<RenderOptions> parseRenderOptions(const ParsedArgs& args) {
     if (!frames.ok()) return frames.error();
     options.allAovs = args.get("aov", "") == "all";
     auto aov = options.allAovs ? std::optional<Aov>(Aov::Radiance) : kAovs.parse(args.get("aov", "final"));
-    if (!aov) return makeError("--aov " + args.get("aov", ""), "expected one of " + kAovs.list() + " or all");
+    if (!aov) {
+        std::vector<std::string> names = kAovs.names();
+        names.push_back("all");
+        return makeError("--aov " + args.get("aov", ""),
+                         "expected one of " + kAovs.list() + " or all" + didYouMean(args.get("aov", ""), names));
+    }
     const std::string defaultOut = "out/" + std::filesystem::path(options.scenePath).stem().string() + ".png";
     options.outPath = args.get("out", defaultOut);
     const std::string extension = std::filesystem::path(options.outPath).extension().string();

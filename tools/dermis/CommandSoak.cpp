@@ -9,6 +9,7 @@
 #include "SoakGrowth.h"
 #include "SoakMotion.h"
 
+#include "core/Suggest.h"
 #include "core/DataDirectory.h"
 #include "core/Log.h"
 #include "core/TextFile.h"
@@ -248,7 +249,9 @@ Result<SoakOptions> parseSoakOptions(const ParsedArgs& args) {
     } else if (auto mode = kSssModes.parse(modeName)) {
         o.modes = {*mode};
     } else {
-        return makeError("--mode " + modeName, "expected " + expectedNames(kSssModes) + " or both");
+        std::vector<std::string> names = kSssModes.names();
+        names.push_back("both");
+        return makeError("--mode " + modeName, "expected " + expectedNames(kSssModes) + " or both" + didYouMean(modeName, names));
     }
     auto backend = parseBackend(args.get("backend", "auto"));
     if (!backend.ok()) return backend.error();

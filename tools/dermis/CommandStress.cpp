@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
+#include "core/Suggest.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
 #include "core/TextFile.h"
@@ -104,7 +105,9 @@ Result<StressOptions> parseStressOptions(const ParsedArgs& args, bool* usage) {
     auto backend = parseBackend(args.get("backend", "auto"));
     if (!backend.ok()) return backend.error();
     const auto plant = stress::kPlants.parse(args.get("plant-violation", "none"));
-    if (!plant) return makeError("--plant-violation", "expected " + stress::kPlants.list());
+    if (!plant)
+        return makeError("--plant-violation " + args.get("plant-violation", ""),
+                         "expected " + stress::kPlants.list() + didYouMean(args.get("plant-violation", ""), stress::kPlants.names()));
     StressOptions options;
     options.cases = *cases;
     options.seed = *seed;

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
+#include "core/Suggest.h"
 #include "core/Log.h"
 #include "plan/Aov.h"
 #include "frame/Renderer.h"
@@ -54,7 +55,7 @@ Result<viewer::ViewMode> parseViewMode(const std::string& name) {
     if (name == "single") return viewer::ViewMode::Single;
     if (name == "split") return viewer::ViewMode::Split;
     if (name == "diff") return viewer::ViewMode::Difference;
-    return makeError("--view " + name, "expected single, split or diff");
+    return makeError("--view " + name, "expected single, split or diff" + didYouMean(name, {"single", "split", "diff"}));
 }
 
 // An error caused by one of the B side's overrides names it as the user wrote it.
@@ -84,7 +85,9 @@ int runView(const std::vector<std::string>& rawArgs) {
     auto mode = parseViewMode(args->get("view", "single"));
     if (!mode.ok()) return usageError(mode.error());
     auto aov = kAovs.parse(args->get("aov", "final"));
-    if (!aov) return usageError(makeError("--aov " + args->get("aov", ""), "expected one of " + kAovs.list()));
+    if (!aov)
+        return usageError(makeError("--aov " + args->get("aov", ""),
+                                    "expected one of " + kAovs.list() + didYouMean(args->get("aov", ""), kAovs.names())));
     int frames = 0;
     if (args->has("frames")) {
         auto parsed = parsePositiveInt("--frames", args->get("frames", ""));
