@@ -76,6 +76,14 @@ public:
     bool parse_error(std::size_t, const std::string&, const json::exception&) { return false; }
 
     bool tooDeep() const { return mTooDeep; }
+    // Where the parser is: the pointer of the value it reads (after an
+    // exception, the value that threw).
+    std::string currentPointer() const {
+        std::string pointer;
+        for (const Frame& frame : mFrames)
+            pointer += "/" + (frame.isObject ? jsonPointerSegment(frame.currentKey) : std::to_string(frame.index));
+        return pointer;
+    }
     const std::string& duplicatePointer() const { return mDuplicatePointer; }
     const std::string& duplicateKey() const { return mDuplicateKey; }
 
@@ -158,7 +166,9 @@ Result<json> parseJsonText(const std::string& text, const std::string& where) {
         if (open != std::string::npos && close > open) {
             const std::string token = message.substr(open + 1, close - open - 1);
             const size_t at = text.find(token);
-            message = (at != std::string::npos ? lineAndColumn(text, at) + ": " : std::string()) + "number " + token +
+            const std::string pointer = checker.currentPointer();
+            message = (at != std::string::npos ? lineAndColumn(text, at) + ": " : std::string()) +
+                      (pointer.empty() ? std::string() : pointer + ": ") + "number " + token +
                       " is out of range";
         }
         return makeError(where, printable(message));

@@ -130,7 +130,8 @@ Result<SceneOverride> parseSceneOverride(const std::string& text) {
     const std::string valueText = text.substr(equals + 1);
     Result<json> value = parseJsonText(valueText, "");
     if (!value.ok() && looksLikeOutOfRangeNumber(valueText)) {
-        return makeError(change.where(), valueText + " is a number out of range (finite values up to about 1.8e308)");
+        // As the file's number would be named: the key, then the number (no double holds it).
+        return makeError(change.where(), change.pointer() + ": number " + valueText + " is out of range");
     }
     // An array or object that does not parse (a syntax error, or nested
     // deeper than the limit) was meant as JSON: refuse it rather than read it
