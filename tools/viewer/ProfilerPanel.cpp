@@ -54,11 +54,14 @@ void passTable(const PassHistory& history) {
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     const std::vector<const PassTrack*> passes = history.passes();
     if (ImGui::BeginTable("passes", 5, flags)) {
+        // The numbers' widths up front: fitted to their content, the columns
+        // were one letter wide until the first timings arrived.
+        const float numberWidth = ImGui::CalcTextSize("0000.00").x;
         ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("GPU");
-        ImGui::TableSetupColumn("avg");
+        ImGui::TableSetupColumn("GPU", ImGuiTableColumnFlags_WidthFixed, numberWidth);
+        ImGui::TableSetupColumn("avg", ImGuiTableColumnFlags_WidthFixed, numberWidth);
         ImGui::TableSetupColumn("history", ImGuiTableColumnFlags_WidthFixed, kGraphWidth);
-        ImGui::TableSetupColumn("CPU");
+        ImGui::TableSetupColumn("CPU", ImGuiTableColumnFlags_WidthFixed, numberWidth);
         ImGui::TableHeadersRow();
         const float rowHeight = ImGui::GetTextLineHeight();
         for (const PassTrack* track : passes) passRow(*track, rowHeight);
