@@ -12,7 +12,9 @@
 #       writes OUT.shards/array.sbatch (a Slurm job array: task K runs
 #       shard K/N) and OUT.shards/merge.sbatch (the merge), and prints the
 #       two sbatch commands that submit them, the merge after every task
-#       succeeded.
+#       ended (a stress task with failed cases exits 1; its summary is merged).
+#   In parallel mode every shard runs to its end and the merge follows; the
+#   exit status is 1 when a shard failed (after the merge), else the merge's.
 #
 # The shards' outputs go to OUT.shards/. $DERMIS names the program
 # (default: build/dermis of this checkout).
@@ -56,10 +58,14 @@ parallel)
         cores=$(nproc)
         threads=(--threads $(( cores / count > 0 ? cores / count : 1 )))
     fi
-    parallel --will-cite --quote --halt now,fail=1 -j "$count" \
+    # Every shard runs to its end: a stress shard that exits 1 has failed cases, which are
+    # results and are merged; a shard that wrote nothing makes the merge fail naming it.
+    shards_status=0
+    parallel --will-cite --quote -j "$count" \
         "$dermis" "$command" "$@" "${threads[@]}" --quiet --shard {}/"$count" --out "$dir"/shard-{}"$suffix" \
-        ::: $(seq 1 "$count")
+        ::: $(seq 1 "$count") || shards_status=1
     "$dermis" merge "${merge_options[@]}" --out "$out" "${shards[@]}"
+    exit "$shards_status"
     ;;
 slurm)
     cat > "$dir/array.sbatch" <<SBATCH
@@ -77,6 +83,7 @@ set -euo pipefail
 $(printf '%q ' "$dermis" merge "${merge_options[@]}" --out "$out" "${shards[@]}")
 SBATCH
     echo "array=\$(sbatch --parsable $dir/array.sbatch)"
-    echo "sbatch --dependency=afterok:\$array $dir/merge.sbatch"
+    # afterany: a stress task that found failed cases exits 1, and its summary is still merged.
+    echo "sbatch --dependency=afterany:\$array $dir/merge.sbatch"
     ;;
 esac

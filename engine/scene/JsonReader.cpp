@@ -169,7 +169,7 @@ Result<json> parseJsonText(const std::string& text, const std::string& where) {
             const std::string pointer = checker.currentPointer();
             message = (at != std::string::npos ? lineAndColumn(text, at) + ": " : std::string()) +
                       (pointer.empty() ? std::string() : pointer + ": ") + "number " + token +
-                      " is out of range";
+                      " is out of range" + kBeyondDoubles;
         }
         return makeError(where, printable(message));
     } catch (const json::exception& e) {

@@ -39,6 +39,9 @@ std::string listForMessage(const std::vector<std::string>& items, const char* la
 // ": did you mean "NAME"?" when one of `known` is a likely typo of `given` (core/Suggest.h), else "".
 std::string suggestionForMessage(const std::string& given, const std::vector<std::string>& known);
 
+// What a number that overflowed while parsing is told (the range of finite doubles).
+inline const std::string kBeyondDoubles = " (finite numbers reach about +-1.8e308)";
+
 // The shortest text that reads back as x ("0.05", "1e+39").
 std::string formatNumberForMessage(double x);
 std::string formatNumberForMessage(float x);

@@ -131,7 +131,7 @@ Result<SceneOverride> parseSceneOverride(const std::string& text) {
     Result<json> value = parseJsonText(valueText, "");
     if (!value.ok() && looksLikeOutOfRangeNumber(valueText)) {
         // As the file's number would be named: the key, then the number (no double holds it).
-        return makeError(change.where(), change.pointer() + ": number " + valueText + " is out of range");
+        return makeError(change.where(), change.pointer() + ": number " + valueText + " is out of range" + kBeyondDoubles);
     }
     // An array or object that does not parse (a syntax error, or nested
     // deeper than the limit) was meant as JSON: refuse it rather than read it

@@ -1,8 +1,11 @@
 // A failed command leaves every output path exactly as it was (docs/cli.md,
 // "Outputs"; core/OutputFiles.h): a second output that fails takes the
-// first with it, a sequence that fails at a frame keeps none, and a process
-// killed mid-sequence leaves the destinations untouched.
+// first with it. A sequence writes each frame whole as it goes: one that
+// fails at a frame keeps the frames before it, and a process killed
+// mid-sequence keeps the frames it finished (until 2026-12-07 both kept
+// none, and an interrupted long sequence lost every frame).
 #include "TestSupport.h"
+#include "core/Image.h"
 
 #include <gtest/gtest.h>
 
@@ -34,20 +37,26 @@ TEST(OutputsCli, AFailingTimingsFileKeepsTheImageAsItWas) {
     EXPECT_EQ(namesIn(dir.path()), (std::vector<std::string>{"frame.png", "timings.json"}));
 }
 
-TEST(OutputsCli, ASequenceThatFailsAtAFrameKeepsNone) {
+TEST(OutputsCli, ASequenceThatFailsAtAFrameKeepsTheFramesBefore) {
     TempDir dir;
     fs::create_directories(dir.path() / "seq_0002.png");  // the third frame's path
     const ProcessResult r = runProcess(kDermis + " render " + kScene + " --size 64x36 --sequence 0:1:4 --out " +
                                        dir.file("seq.png"));
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.err.find("seq_0002.png: is a directory"), std::string::npos) << r.err;
-    EXPECT_EQ(namesIn(dir.path()), (std::vector<std::string>{"seq_0002.png"}));  // frames 0 and 1 gone, no temporaries
+    // Frames 0 and 1 whole, no temporaries.
+    EXPECT_EQ(namesIn(dir.path()), (std::vector<std::string>{"seq_0000.png", "seq_0001.png", "seq_0002.png"}));
+    for (const char* frame : {"seq_0000.png", "seq_0001.png"}) {
+        auto image = dermis::loadImage(dir.file(frame), dermis::ColourSpace::Srgb);
+        ASSERT_TRUE(image.ok()) << frame << ": " << image.error().message();
+        EXPECT_EQ(image->width, 64) << frame;
+    }
 }
 
-TEST(OutputsCli, AProcessKilledMidSequenceLeavesTheDestinationsUntouched) {
+TEST(OutputsCli, AProcessKilledMidSequenceKeepsTheFramesItFinished) {
     TempDir dir;
     dermis::test::writeTextFile(dir.file("seq_0000.png"), "an older frame");
-    // Killed (SIGKILL: no handler runs) once it has staged its second frame of 40.
+    // Killed (SIGKILL: no handler runs) once it has written its second frame of 40.
     const std::string command = kDermis + " render " + kScene + " --size 64x36 --sequence 0:3.9:10 --out " +
                                 dir.file("seq.png") + " 2> " + dir.file("log.txt") + " & pid=$!; " +
                                 "for i in $(seq 600); do grep -q 'frame 2/40' " + dir.file("log.txt") +
@@ -56,10 +65,14 @@ TEST(OutputsCli, AProcessKilledMidSequenceLeavesTheDestinationsUntouched) {
     ASSERT_NE(dermis::test::readTextFile(dir.file("log.txt")).find("frame 2/40"), std::string::npos)
         << dermis::test::readTextFile(dir.file("log.txt"));
     EXPECT_EQ(r.out, "137\n");  // killed, not finished
-    EXPECT_EQ(dermis::test::readTextFile(dir.file("seq_0000.png")), "an older frame");
+    for (const char* frame : {"seq_0000.png", "seq_0001.png"}) {  // the older frame replaced
+        auto image = dermis::loadImage(dir.file(frame), dermis::ColourSpace::Srgb);
+        ASSERT_TRUE(image.ok()) << frame << ": " << image.error().message();
+        EXPECT_EQ(image->height, 36) << frame;
+    }
     for (const std::string& name : namesIn(dir.path())) {
-        // Only the older frame, the log and hidden temporaries (".seq_0001.dermis-PID-N.png").
-        const bool expected = name == "seq_0000.png" || name == "log.txt" || name.rfind(".seq_", 0) == 0;
+        // Whole frames, the log and at most hidden temporaries (".seq_0002.dermis-PID-N.png").
+        const bool expected = (name.rfind("seq_", 0) == 0 && name.size() == 12) || name == "log.txt" || name.rfind(".seq_", 0) == 0;
         EXPECT_TRUE(expected) << name;
     }
 }

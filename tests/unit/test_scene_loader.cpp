@@ -896,8 +896,8 @@ TEST(SceneLoader, NumbersMustBeFiniteFloats) {
               "/settings/exposure: number 1e+39 is out of range for a 32-bit float");
     EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 1e39, 0]}})"),
               "/camera/up/1: number 1e+39 is out of range for a 32-bit float");
-    EXPECT_EQ(errorOf("{\n\"settings\": {\"exposure\": 1e999}}"), "line 2, column 26: /settings/exposure: number 1e999 is out of range");
-    EXPECT_EQ(errorOf("{\"lights\": [{}, {\"colour\": [1, -1e999, 1]}]}"), "line 1, column 32: /lights/1/colour/1: number -1e999 is out of range");
+    EXPECT_EQ(errorOf("{\n\"settings\": {\"exposure\": 1e999}}"), "line 2, column 26: /settings/exposure: number 1e999 is out of range (finite numbers reach about +-1.8e308)");
+    EXPECT_EQ(errorOf("{\"lights\": [{}, {\"colour\": [1, -1e999, 1]}]}"), "line 1, column 32: /lights/1/colour/1: number -1e999 is out of range (finite numbers reach about +-1.8e308)");
     EXPECT_NE(errorOf(R"({"settings": {"exposure": NaN}})").find("line 1"), std::string::npos);
 }
 

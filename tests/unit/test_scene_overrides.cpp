@@ -162,9 +162,9 @@ TEST(SceneOverrides, ValuesTheReaderRejectsNameTheOverride) {
                  "/characters/0/material/profile: unknown diffusion profile \"marble2\": did you mean \"marble\"? (known: skin, marble or none)");
     // A number no double holds is out of range, not a string.
     EXPECT_ERROR(errorOf({"exposure=1e999"}), "--set exposure=1e999",
-                 "/settings/exposure: number 1e999 is out of range");
+                 "/settings/exposure: number 1e999 is out of range (finite numbers reach about +-1.8e308)");
     EXPECT_ERROR(errorOf({"exposure=-1e400"}), "--set exposure=-1e400",
-                 "/settings/exposure: number -1e400 is out of range");
+                 "/settings/exposure: number -1e400 is out of range (finite numbers reach about +-1.8e308)");
 }
 
 TEST(SceneOverrides, UnknownKeysNameTheOverride) {

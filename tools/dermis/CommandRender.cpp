@@ -221,7 +221,9 @@ void warnIfNothingShows(const RenderOptions& options, const Image& image, const 
         log::warn(options.outPath + ": every pixel is white, saturated" + why);
 }
 
-// Renders every frame; a sequence's frames are staged as they come, else the last one is.
+// Renders every frame; a sequence's frames are written as they come, each
+// whole (its own commit: an interrupted sequence keeps the frames it
+// finished), else the last one is staged.
 // Returns the wall milliseconds per frame.
 Result<double> renderFrames(const RenderOptions& options, Session& session, OutputFiles& outputs) {
     Renderer& renderer = *session.renderer;
@@ -256,7 +258,9 @@ Result<double> renderFrames(const RenderOptions& options, Session& session, Outp
         auto image = renderer.readOutput();
         if (!image.ok()) return image.error();
         const std::string framePath = sequenceFramePath(options.outPath, static_cast<size_t>(i));
-        if (const Status saved = outputs.stageImage(framePath, *image); !saved.ok()) return saved.error();
+        OutputFiles frameOutput;
+        if (const Status saved = frameOutput.stageImage(framePath, *image); !saved.ok()) return saved.error();
+        if (const Status committed = frameOutput.commit(); !committed.ok()) return committed.error();
         log::info("frame " + std::to_string(i + 1) + "/" + std::to_string(options.frames) + " at " +
                   formatNumberForMessage(request.timeS) + " s: " + framePath);
     }

@@ -170,6 +170,19 @@ std::string StressRun::line(int cases, double seconds, const std::string& outPat
         if (!pass.empty() && failedPasses.find("'" + pass + "'") == std::string::npos)
             failedPasses += (failedPasses.empty() ? " in " : ", ") + ("'" + pass + "'");
     }
+    // The failed seeds, the first few, to rerun (dermis stress --seed S --cases 1).
+    constexpr size_t kSeedsShown = 8;
+    std::string seeds;
+    size_t shown = 0;
+    for (const auto& f : mFailures) {
+        if (shown++ == kSeedsShown) {
+            seeds += ", ...";
+            break;
+        }
+        seeds += (seeds.empty() ? " (seed " : ", ") + std::to_string(f.value("seed", uint64_t(0)));
+    }
+    if (!seeds.empty()) seeds += ")";
+    failedPasses = seeds + failedPasses;
     char text[1024];
     std::snprintf(text, sizeof text,
                   "%d cases in %.1f s: %d failed%s, %d refused as they must be, %llu NaN/Inf/bad values; %s; "
