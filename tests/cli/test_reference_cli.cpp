@@ -110,6 +110,16 @@ TEST(ReferenceCli, CompareRefusesAReferenceOfAnotherScene) {
     for (const ProcessResult* r : {&other, &mix, &png}) EXPECT_EQ(errorLines(r->err), 1u) << r->err;
     EXPECT_EQ(same.err.find("samples per pixel"), std::string::npos) << same.err;
 
+    // An EXR without the record (the engine's own frame here) is taken as it is, with a warning.
+    ASSERT_EQ(runProcess(kDermis + " render " + furnace + " --size 8x6 --frames 1 --quiet --aov diffuse --out " +
+                         dir.file("frame.exr")).exitCode, 0);
+    const ProcessResult unrecorded = runProcess(kDermis + " compare " + furnace + compare + dir.file("frame.exr") +
+                                                " --set ssao.enabled=false --out " + dir.file("unrecorded"));
+    EXPECT_EQ(unrecorded.exitCode, 0) << unrecorded.err;
+    EXPECT_NE(unrecorded.err.find(dir.file("frame.exr") + ": no record of what it is a reference of"), std::string::npos)
+        << unrecorded.err;
+    EXPECT_EQ(same.err.find("no record"), std::string::npos) << same.err;
+
     // An antialiased reference (--spp 4) is used, with a warning: the engine shades pixel centres.
     ASSERT_EQ(runProcess(kDermis + " reference " + furnace + " --size 8x6 --density 2 --spp 4 --quiet --out " +
                          dir.file("ref4.exr")).exitCode, 0);

@@ -103,6 +103,11 @@ TEST_F(ShardsCli, MergeRefusesAMissingRepeatedOrForeignShard) {
         EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
         EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written on failure";
     }
+    // --out naming one of the shards would overwrite it (a probe found it done, exit 0).
+    const ProcessResult onto = runProcess(kDermis + " merge --out " + mDir.file("s1.exr") + " " + mDir.file("s1.exr") + " " +
+                                          mDir.file("s2.exr") + " " + mDir.file("s3.exr"));
+    EXPECT_EQ(onto.exitCode, 2) << onto.err;
+    EXPECT_NE(onto.err.find("is one of the shards"), std::string::npos) << onto.err;
     const ProcessResult all = runProcess(kDermis + " merge --out " + out + " " + mDir.file("s3.exr") + " " + mDir.file("s1.exr") +
                                          " " + mDir.file("s2.exr"));
     ASSERT_EQ(all.exitCode, 0) << all.err;

@@ -95,6 +95,10 @@ int runMerge(const std::vector<std::string>& rawArgs) {
     for (const std::string& shard : args->positional) {
         std::error_code missing;
         if (!std::filesystem::exists(shard, missing)) return failure(makeError(shard, "no such file or directory"));
+        // The merge would replace one of its own shards (and leave that shard's note beside it).
+        std::error_code ignored;
+        if (std::filesystem::equivalent(shard, outPath, ignored))
+            return usageError(makeError("--out " + outPath, "is one of the shards; give the merged output a path of its own"));
     }
     std::error_code error;
     const std::string extension = std::filesystem::path(outPath).extension().string();

@@ -5,6 +5,7 @@
 #include "frame/Renderer.h"
 #include "reference/ReferenceDefinition.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -71,6 +72,11 @@ Result<Image> loadReferenceImage(const std::string& path, int width, int height,
         return makeError(path, "the reference must be a linear float image (dermis reference writes one as .exr), not " +
                                    image->storedType + " values");
     }
+    const bool recorded = std::any_of(image->attributes.begin(), image->attributes.end(),
+                                      [](const auto& attribute) { return attribute.first == reference::kDefinitionAttribute; });
+    if (!recorded)
+        log::warn(path + ": no record of what it is a reference of (not made by dermis reference): taken as it is, "
+                  "unchecked against the scene");
     for (const auto& [name, record] : image->attributes) {
         if (name == reference::kSamplesPerPixelAttribute && record != "1") {
             log::warn(path + ": the reference averages " + record + " samples per pixel (--spp " + record +
