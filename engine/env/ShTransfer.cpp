@@ -276,8 +276,8 @@ std::vector<ShScalar9> visibleShareTransfer(const MeshData& mesh, const ShTransf
         const uint32_t* escaped = transfer.visibility.data() + vertexIndex * words;
         double visible = 0.0;
         double all = 0.0;
-        std::vector<glm::vec3> rays;
-        if (!hot.empty()) rays.reserve(size_t(transfer.raysPerVertex));
+        thread_local std::vector<glm::vec3> rays;  // the vertex's rays, kept for the hot directions; reused, not reallocated
+        rays.clear();
         forEachTransferRay(vertexIndex, normal, strataPerSide, [&](int i, const glm::vec3& direction) {
             const double radiance = luminance.at(mapFromObject * direction);
             all += radiance;

@@ -56,18 +56,12 @@ void choice(JsonObject& object, const char* key, const EnumTable<E, N>& table, E
     }
 }
 
-// A product or ratio of two float values, to 3 significant digits (the float rounding
-// of the factors is noise).
-std::string formatProductForMessage(double x) {
+// A product or ratio of two float values, to `digits` significant digits:
+// 3 where the float rounding of the factors is noise, 7 for a ratio next to
+// a limit (100001, not 1e+05).
+std::string formatSignificantForMessage(double x, int digits) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", x);
-    return text;
-}
-
-// A ratio next to a limit, with enough digits to tell it from the limit (100001, not 1e+05).
-std::string formatRatioForMessage(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.7g", x);
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
     return text;
 }
 
@@ -98,7 +92,7 @@ void readCamera(JsonObject& root, Camera& camera) {
     const double farOverNear = double(camera.farM) / double(camera.nearM);
     context.check(farOverNear <= kMaxFarOverNear * (1.0 + kFloatRatioTolerance), object.pointer("far_m"),
                   "must be at most " + formatNumberForMessage(kMaxFarOverNear) + " x near_m (depth precision), got " +
-                      formatRatioForMessage(farOverNear) + " x");
+                      formatSignificantForMessage(farOverNear, 7) + " x");
     context.check(length(camera.targetM - camera.positionM) >= kMinCameraTargetDistanceM, object.pointer("target_m"),
                   "must be at least " + formatNumberForMessage(kMinCameraTargetDistanceM) +
                       " m from position_m (the camera needs a view direction)");
@@ -135,7 +129,7 @@ void readLight(JsonContext& context, const json& value, const std::string& point
     const double brightest = double(std::max({light.colour.r, light.colour.g, light.colour.b})) * light.intensity;
     context.check(brightest <= double(float(kMaxLightRadiance)), object.pointer("intensity"),
                   "colour x intensity must be at most " + formatNumberForMessage(kMaxLightRadiance) +
-                      " per channel (float range), got " + formatProductForMessage(brightest));
+                      " per channel (float range), got " + formatSignificantForMessage(brightest, 3));
     context.check(light.spotInnerDeg <= light.spotOuterDeg, object.pointer("spot_inner_deg"),
                   "must be <= spot_outer_deg (" + formatNumberForMessage(light.spotOuterDeg) + "), got " +
                       formatNumberForMessage(light.spotInnerDeg));
@@ -417,7 +411,7 @@ void readCharacter(JsonContext& context, const json& value, const std::string& p
                       object.pointer("metres_per_unit"),
                       "transform.scale x metres_per_unit must be in [" + formatNumberForMessage(kMinMetresPerMeshUnit) +
                           ", " + formatNumberForMessage(kMaxMetresPerMeshUnit) + "] metres per mesh unit, got " +
-                          formatProductForMessage(metresPerMeshUnit));
+                          formatSignificantForMessage(metresPerMeshUnit, 3));
     }
     readMaterial(object, sceneFile, profiles, character.material);
     readMaterialOverrides(object, sceneFile, profiles, character);

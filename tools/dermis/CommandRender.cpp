@@ -3,11 +3,11 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
-#include "core/Suggest.h"
 #include "core/Image.h"
 #include "core/Limits.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
+#include "core/Suggest.h"
 #include "plan/Aov.h"
 #include "frame/Renderer.h"
 #include "render/TraceEvents.h"

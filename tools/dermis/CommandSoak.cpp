@@ -9,9 +9,9 @@
 #include "SoakGrowth.h"
 #include "SoakMotion.h"
 
-#include "core/Suggest.h"
 #include "core/DataDirectory.h"
 #include "core/Log.h"
+#include "core/Suggest.h"
 #include "core/TextFile.h"
 #include "frame/Renderer.h"
 #include "render/SceneLoading.h"

@@ -4,9 +4,9 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
-#include "core/Suggest.h"
 #include "core/Log.h"
 #include "core/OutputFiles.h"
+#include "core/Suggest.h"
 #include "core/TextFile.h"
 #include "gl/GlContext.h"
 #include "frame/Renderer.h"

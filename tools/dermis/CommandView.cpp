@@ -3,8 +3,8 @@
 #include "Commands.h"
 #include "measure/Session.h"
 
-#include "core/Suggest.h"
 #include "core/Log.h"
+#include "core/Suggest.h"
 #include "plan/Aov.h"
 #include "frame/Renderer.h"
 #include "scene/SceneLoader.h"
